@@ -1,0 +1,42 @@
+#include "experiments/catalog.h"
+
+#include "energies/symmetric_dirichlet.h"
+#include "preconditioners/akvf_preconditioner.h"
+#include "preconditioners/identity_preconditioner.h"
+#include "solvers/backtracking_line_search.h"
+
+namespace akvf {
+
+const DensityRegistry& energies_2d() {
+  static const DensityRegistry registry = [] {
+    DensityRegistry r("energy");
+    r.add("symmetric-dirichlet", "|J|^2 + |J^-1|^2, Eq. (2); lower bound 4",
+          [] { return std::make_unique<SymmetricDirichlet2>(); });
+    return r;
+  }();
+  return registry;
+}
+
+const PreconditionerRegistry& preconditioners_2d() {
+  static const PreconditionerRegistry registry = [] {
+    PreconditionerRegistry r("preconditioner");
+    r.add("akvf", "Killing operator K(x) of Eq. (5), area-scaled, CHOLMOD (the paper's method)",
+          [](const ParamObjective& objective) { return std::make_unique<AkvfPreconditioner2D>(objective); });
+    r.add("identity", "no preconditioning: plain gradient descent",
+          [](const ParamObjective&) { return std::make_unique<IdentityPreconditioner>(); });
+    return r;
+  }();
+  return registry;
+}
+
+const LineSearchRegistry& line_searches() {
+  static const LineSearchRegistry registry = [] {
+    LineSearchRegistry r("line search");
+    r.add("backtracking", "Armijo backtracking from min(1, 0.8 alpha_max), rho 0.9, c1 1e-5 (Sec. 5.3)",
+          [] { return std::make_unique<BacktrackingLineSearch>(); });
+    return r;
+  }();
+  return registry;
+}
+
+}  // namespace akvf

@@ -1,0 +1,23 @@
+#pragma once
+// The registries of everything a user can pick by name: energies,
+// preconditioners and line searches. This is the one place that knows all
+// implementations (the composition root); the libraries know only interfaces.
+#include <memory>
+
+#include "framework/distortion_density.h"
+#include "framework/line_search.h"
+#include "framework/param_objective.h"
+#include "framework/preconditioner.h"
+#include "framework/registry.h"
+
+namespace akvf {
+
+using DensityRegistry = Registry<DistortionDensity2>;
+using PreconditionerRegistry = Registry<Preconditioner, const ParamObjective&>;
+using LineSearchRegistry = Registry<LineSearch>;
+
+const DensityRegistry& energies_2d();
+const PreconditionerRegistry& preconditioners_2d();
+const LineSearchRegistry& line_searches();
+
+}  // namespace akvf

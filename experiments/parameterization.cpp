@@ -1,0 +1,56 @@
+#include "experiments/parameterization.h"
+
+#include <cmath>
+
+#include "experiments/catalog.h"
+#include "framework/error.h"
+
+namespace akvf {
+
+ParamSetup prepare_parameterization(const TriMesh& input, const std::string& name, const ParamConfig& config) {
+  std::string invalid;
+  if (!config.optimizer.is_valid(&invalid)) throw OptionsError(invalid);
+  // Resolve names first so a typo fails before any work.
+  std::shared_ptr<const DistortionDensity2> density = energies_2d().create(config.energy);
+  preconditioners_2d().require(config.preconditioner);
+  line_searches().require(config.line_search);
+
+  ParamSetup setup;
+  setup.disk = prepare_disk_mesh(input, name);
+  setup.warnings = setup.disk.warnings;
+  TriMesh normalized = setup.disk.mesh;
+  setup.normalization = normalize_to_unit_area(&normalized);
+
+  Eigen::MatrixXd UV = tutte_embedding(normalized, setup.disk.boundary_loop, config.init, &setup.warnings);
+  if (config.optimize_flaps) setup.flaps_moved = optimize_flaps(normalized, &UV);
+  setup.x0 = stack_uv(UV);
+  setup.objective = std::make_shared<ParamObjective>(normalized.F, rest_triangles(normalized), density,
+                                                     normalized.num_vertices());
+  return setup;
+}
+
+ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
+                              const std::vector<IterationCallback>& callbacks) {
+  auto preconditioner = preconditioners_2d().create(config.preconditioner, *setup.objective);
+  auto line_search = line_searches().create(config.line_search);
+  ParamRun run;
+  run.preconditioner_name = preconditioner->name();
+  run.result = minimize(*setup.objective, *preconditioner, *line_search, setup.x0, config.optimizer, callbacks);
+  return run;
+}
+
+Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
+  const Eigen::MatrixXd UV = unstack_uv(x);
+  const Eigen::MatrixXi& F = setup.objective->faces();
+  double uv_area = 0;
+  for (int f = 0; f < F.rows(); ++f) {
+    const Eigen::RowVector2d e1 = UV.row(F(f, 1)) - UV.row(F(f, 0)), e2 = UV.row(F(f, 2)) - UV.row(F(f, 0));
+    uv_area += 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
+  }
+  const double scale = std::sqrt(setup.normalization.input_area / uv_area);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(setup.disk.num_input_vertices, 2);
+  for (int v = 0; v < UV.rows(); ++v) out.row(setup.disk.input_vertex[v]) = scale * UV.row(v);
+  return out;
+}
+
+}  // namespace akvf

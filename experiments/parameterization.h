@@ -1,0 +1,52 @@
+#pragma once
+// The 2D parameterization pipeline, from a mesh to a UV map:
+// validate -> normalize (area 1) -> Tutte (+ flaps) -> optimize -> rescale.
+#include <memory>
+#include <string>
+
+#include "framework/initialization.h"
+#include "framework/mesh.h"
+#include "framework/mesh_validation.h"
+#include "framework/optimizer.h"
+#include "framework/param_objective.h"
+#include "framework/rest_geometry.h"
+
+namespace akvf {
+
+struct ParamConfig {
+  std::string energy = "symmetric-dirichlet";
+  std::string preconditioner = "akvf";
+  std::string line_search = "backtracking";
+  TutteWeights init = TutteWeights::kUniform;
+  // §5.4 flap optimization after the Tutte map (see docs/performance.md for
+  // the measurement behind the default).
+  bool optimize_flaps = true;
+  OptimizerOptions optimizer;
+};
+
+// A validated, normalized problem with its initial map.
+struct ParamSetup {
+  DiskMesh disk;                              // the compacted input mesh (original scale)
+  Normalization normalization;                // to total area 1
+  std::shared_ptr<ParamObjective> objective;  // on the normalized mesh
+  Eigen::VectorXd x0;                         // initial map, interleaved, area-1 units
+  int flaps_moved = 0;
+  Warnings warnings;
+};
+
+// Throws ValidationError / OptionsError with a message naming `name`.
+ParamSetup prepare_parameterization(const TriMesh& input, const std::string& name, const ParamConfig& config);
+
+struct ParamRun {
+  OptimizerResult result;
+  std::string preconditioner_name;
+};
+
+ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
+                              const std::vector<IterationCallback>& callbacks = {});
+
+// The UV map in the input's numbering (#input V by 2), scaled so that the
+// UV area equals the input mesh's 3D area. Unreferenced vertices get (0, 0).
+Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x);
+
+}  // namespace akvf

@@ -1,0 +1,41 @@
+#pragma once
+// The per-element distortion density D(J) of Eq. (1), as a function of the
+// element's Jacobian J (Dim x Dim). A density knows nothing of meshes; the
+// assembler (param_objective.h) sums A_hat_f D(J_f) over elements.
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <string>
+
+namespace akvf {
+
+template <int Dim>
+class DistortionDensity {
+ public:
+  using Matrix = Eigen::Matrix<double, Dim, Dim>;
+  // Second derivative with respect to vec(J) (column-major).
+  using Hessian = Eigen::Matrix<double, Dim * Dim, Dim * Dim>;
+
+  virtual ~DistortionDensity() = default;
+
+  virtual std::string name() const = 0;
+  // inf_J D(J) over rotations-and-all: the value at J = I for isometric
+  // energies. After area normalization it is also the energy's lower bound.
+  virtual double lower_bound() const = 0;
+
+  // D(J); +infinity when det J <= 0 so a line search backs off.
+  virtual double value(const Matrix& J) const = 0;
+  // D(J) and dD/dJ; the gradient is unspecified when the value is +infinity.
+  virtual double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const = 0;
+  // d^2 D / dvec(J)^2 (may be indefinite).
+  virtual Hessian hessian(const Matrix& J) const = 0;
+
+  // The Hessian with negative eigenvalues clamped to zero (projected Newton).
+  virtual Hessian projected_hessian(const Matrix& J) const {
+    const Eigen::SelfAdjointEigenSolver<Hessian> eig(hessian(J));
+    return eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
+  }
+};
+
+using DistortionDensity2 = DistortionDensity<2>;
+
+}  // namespace akvf

@@ -1,0 +1,46 @@
+#pragma once
+// Line searches along a descent direction, always inside the flip-free
+// region. The public search() is non-virtual: it checks the direction,
+// computes the maximal feasible step and times the search, then calls the
+// subclass's do_search().
+#include <Eigen/Core>
+#include <string>
+
+#include "framework/objective.h"
+
+namespace akvf {
+
+struct LineSearchSummary {
+  bool success = false;
+  double step = 0;               // accepted alpha (0 on failure: x is unchanged)
+  double max_feasible_step = 0;  // alpha_max of §5.3
+  double initial_step = 0;
+  double energy = 0;             // E(x + step d), or E(x) on failure
+  int evaluations = 0;           // energy evaluations
+  double seconds = 0;
+  std::string message;           // why it failed
+};
+
+struct LineSearchInput {
+  const Objective& objective;
+  const Eigen::VectorXd& x;
+  double energy;                   // E(x)
+  const Eigen::VectorXd& gradient; // grad E(x)
+  const Eigen::VectorXd& direction;
+  double directional_derivative;   // grad E(x) . d < 0
+  double max_feasible_step;        // sup t with no element inverted
+};
+
+class LineSearch {
+ public:
+  virtual ~LineSearch() = default;
+  virtual std::string name() const = 0;
+
+  LineSearchSummary search(const Objective& objective, const Eigen::VectorXd& x, double energy,
+                           const Eigen::VectorXd& gradient, const Eigen::VectorXd& direction) const;
+
+ private:
+  virtual LineSearchSummary do_search(const LineSearchInput& input) const = 0;
+};
+
+}  // namespace akvf

@@ -1,0 +1,41 @@
+#pragma once
+// Combinatorial queries on triangle meshes: edges, components, boundary loops.
+#include <Eigen/Core>
+#include <vector>
+
+namespace akvf {
+
+// Undirected edges of F with the faces that use them, plus the problems that
+// make a mesh non-manifold. Built once by sorting the 3|F| half-edges.
+struct EdgeTopology {
+  int num_edges = 0;
+  // A directed boundary half-edge (a -> b) per boundary edge, as its face
+  // traverses it, sorted by (min, max) vertex.
+  std::vector<std::pair<int, int>> boundary_half_edges;
+  // First edge used by three or more faces, if any: {a, b, face count}.
+  std::vector<int> overused_edge;
+  // First interior edge traversed in the same direction by both its faces:
+  // {a, b, face1, face2}.
+  std::vector<int> misoriented_edge;
+};
+
+EdgeTopology edge_topology(const Eigen::MatrixXi& F);
+
+// Number of connected components of the faces (vertices joined by edges).
+int count_components(const Eigen::MatrixXi& F, int num_vertices);
+
+// Boundary loops as ordered vertex lists following the faces' orientation
+// (the mesh lies to the left of each loop). Throws ValidationError naming the
+// vertex if a vertex starts two boundary half-edges (a non-manifold vertex).
+std::vector<std::vector<int>> boundary_loops(const EdgeTopology& topology, int num_vertices);
+
+// For each vertex, the faces that use it, as compressed rows:
+// faces of v are entries [offsets[v], offsets[v+1]) of face_corner, each
+// encoded as 3*face + corner. Order is increasing face index (deterministic).
+struct VertexFaces {
+  std::vector<int> offsets;
+  std::vector<int> face_corner;
+};
+VertexFaces vertex_faces(const Eigen::MatrixXi& F, int num_vertices);
+
+}  // namespace akvf

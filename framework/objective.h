@@ -1,0 +1,27 @@
+#pragma once
+// What the optimizer minimizes: a function of the stacked vertex positions x
+// with a feasibility region (no inverted element) that line searches respect.
+#include <Eigen/Core>
+#include <limits>
+
+namespace akvf {
+
+class Objective {
+ public:
+  virtual ~Objective() = default;
+
+  virtual int num_variables() const = 0;
+  // E(x); +infinity when an element is inverted.
+  virtual double value(const Eigen::VectorXd& x) const = 0;
+  // E(x) and its gradient (resized by the callee).
+  virtual double value_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd* gradient) const = 0;
+  // sup { t > 0 : no element of x + s d inverts for s in [0, t) }, +inf if
+  // unbounded.
+  virtual double max_feasible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d) const = 0;
+  // Elements with det J <= 0 at x.
+  virtual int count_inverted(const Eigen::VectorXd& x) const = 0;
+  // The infimum of E, where known (4 for 2D symmetric Dirichlet).
+  virtual double lower_bound() const { return -std::numeric_limits<double>::infinity(); }
+};
+
+}  // namespace akvf

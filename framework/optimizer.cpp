@@ -1,0 +1,131 @@
+#include "framework/optimizer.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "framework/error.h"
+
+namespace akvf {
+
+bool OptimizerOptions::is_valid(std::string* error) const {
+  auto fail = [&](const std::string& message) {
+    if (error) *error = message;
+    return false;
+  };
+  if (!(gradient_tolerance >= 0)) return fail("gradient tolerance must be >= 0");
+  if (max_iterations < 0) return fail("max iterations must be >= 0");
+  if (!(time_limit > 0)) return fail("time limit must be > 0 seconds");
+  if (!(stall_tolerance >= 0)) return fail("stall tolerance must be >= 0");
+  if (stall_iterations < 1) return fail("stall iterations must be >= 1");
+  return true;
+}
+
+std::string to_string(TerminationStatus status) {
+  switch (status) {
+    case TerminationStatus::kConverged: return "converged";
+    case TerminationStatus::kMaxIterations: return "max-iterations";
+    case TerminationStatus::kTimeLimit: return "time-limit";
+    case TerminationStatus::kStalled: return "stalled";
+    case TerminationStatus::kLineSearchFailed: return "line-search-failed";
+    case TerminationStatus::kNumericalFailure: return "numerical-failure";
+    case TerminationStatus::kUserStopped: return "user-stopped";
+  }
+  return "unknown";
+}
+
+bool is_normal_termination(TerminationStatus status) {
+  return status != TerminationStatus::kLineSearchFailed && status != TerminationStatus::kNumericalFailure;
+}
+
+OptimizerResult minimize(const Objective& objective, Preconditioner& preconditioner, const LineSearch& line_search,
+                         Eigen::VectorXd x, const OptimizerOptions& options,
+                         const std::vector<IterationCallback>& callbacks) {
+  std::string invalid;
+  if (!options.is_valid(&invalid)) throw OptionsError(invalid);
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+
+  OptimizerResult result;
+  Eigen::VectorXd gradient, preconditioned;
+  double energy = objective.value_and_gradient(x, &gradient);
+
+  auto finish = [&](TerminationStatus status, std::string message) {
+    result.status = status;
+    result.message = std::move(message);
+    result.x = std::move(x);
+    return result;
+  };
+  auto notify = [&](const IterationSummary& summary) {
+    result.trace.push_back(summary);
+    bool stop = false;
+    for (const auto& callback : callbacks) stop |= callback(summary, x) == CallbackAction::kStop;
+    return stop;
+  };
+
+  IterationSummary row;
+  row.energy = energy;
+  row.grad_norm = gradient.norm();
+  row.flips = objective.count_inverted(x);
+  row.seconds = elapsed();
+  if (!std::isfinite(energy) || !gradient.allFinite()) {
+    result.trace.push_back(row);
+    return finish(TerminationStatus::kNumericalFailure,
+                  row.flips > 0 ? "the initial map has " + std::to_string(row.flips) + " inverted elements"
+                                : "the initial energy or gradient is not finite");
+  }
+  if (notify(row)) return finish(TerminationStatus::kUserStopped, "stopped by a callback");
+
+  int stalled_iterations = 0;
+  for (int k = 1;; ++k) {
+    if (row.grad_norm < options.gradient_tolerance)
+      return finish(TerminationStatus::kConverged, "gradient norm below " + std::to_string(options.gradient_tolerance));
+    if (k > options.max_iterations)
+      return finish(TerminationStatus::kMaxIterations, "reached " + std::to_string(options.max_iterations) + " iterations");
+    if (elapsed() >= options.time_limit)
+      return finish(TerminationStatus::kTimeLimit, "reached the time limit");
+
+    const auto precond_start = Clock::now();
+    preconditioner.update({x, gradient, energy, k});
+    preconditioner.apply(gradient, &preconditioned);
+    const double precond_seconds = std::chrono::duration<double>(Clock::now() - precond_start).count();
+
+    const Eigen::VectorXd direction = -preconditioned;
+    const LineSearchSummary search = line_search.search(objective, x, energy, gradient, direction);
+    if (!search.success)
+      return finish(TerminationStatus::kLineSearchFailed, "line search failed at iteration " + std::to_string(k) + ": " +
+                                                              search.message);
+    x += search.step * direction;
+    const double previous = energy;
+    energy = objective.value_and_gradient(x, &gradient);
+
+    row = IterationSummary{};
+    row.iteration = k;
+    row.energy = energy;
+    row.grad_norm = gradient.norm();
+    row.step = search.step;
+    row.max_step = search.max_feasible_step;
+    row.ls_evals = search.evaluations;
+    row.flips = objective.count_inverted(x);
+    row.precond_seconds = precond_seconds;
+    row.line_search_seconds = search.seconds;
+    row.seconds = elapsed();
+    if (!std::isfinite(energy) || !gradient.allFinite() || row.flips > 0) {
+      result.trace.push_back(row);
+      return finish(TerminationStatus::kNumericalFailure,
+                    "iteration " + std::to_string(k) + " produced a non-finite energy or gradient (" +
+                        std::to_string(row.flips) + " inverted elements)");
+    }
+    if (notify(row)) return finish(TerminationStatus::kUserStopped, "stopped by a callback");
+
+    stalled_iterations = previous - energy <= options.stall_tolerance * std::max(1.0, std::abs(energy))
+                             ? stalled_iterations + 1
+                             : 0;
+    if (stalled_iterations >= options.stall_iterations)
+      return finish(TerminationStatus::kStalled, "energy decreased by less than " +
+                                                     std::to_string(options.stall_tolerance) + " (relative) for " +
+                                                     std::to_string(options.stall_iterations) + " iterations");
+  }
+}
+
+}  // namespace akvf

@@ -1,0 +1,74 @@
+#pragma once
+// The preconditioned descent loop of Algorithm 1, generic in the objective,
+// the preconditioner and the line search:
+//   d_k = -P(x_k)^-1 grad E(x_k),  x_{k+1} = x_k + alpha_k d_k.
+#include <Eigen/Core>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "framework/line_search.h"
+#include "framework/objective.h"
+#include "framework/preconditioner.h"
+
+namespace akvf {
+
+struct OptimizerOptions {
+  // Converged when ||grad E(x_k)||_2 < gradient_tolerance (§5.5; Table 1 uses 1e-3).
+  double gradient_tolerance = 1e-3;
+  // Upper bound on k.
+  int max_iterations = 1000;
+  // Upper bound on cumulative optimizer seconds; checked between iterations.
+  double time_limit = std::numeric_limits<double>::infinity();
+  // Stalled when E_{k-1} - E_k <= stall_tolerance * max(1, |E_k|) for
+  // stall_iterations consecutive iterations (progress below round-off).
+  double stall_tolerance = 1e-13;
+  int stall_iterations = 10;
+
+  // True if every option is in range; otherwise *error says which is not.
+  bool is_valid(std::string* error) const;
+};
+
+enum class TerminationStatus {
+  kConverged,          // gradient norm below tolerance
+  kMaxIterations,
+  kTimeLimit,
+  kStalled,
+  kLineSearchFailed,   // no acceptable step; x is the last accepted iterate
+  kNumericalFailure,   // non-finite energy or gradient
+  kUserStopped,        // a callback asked to stop
+};
+std::string to_string(TerminationStatus status);
+// Converged, iteration or time limits, stall and user stops are normal ends;
+// the others mean the result should not be trusted as a minimum.
+bool is_normal_termination(TerminationStatus status);
+
+struct IterationSummary {
+  int iteration = 0;
+  double seconds = 0;            // cumulative optimizer time at the end of this iteration
+  double energy = 0;
+  double grad_norm = 0;          // ||grad E||_2 at the new iterate
+  double step = 0;               // accepted alpha (0 for row 0)
+  double max_step = 0;           // flip-free bound alpha_max
+  int ls_evals = 0;              // energy evaluations in the line search
+  int flips = 0;                 // inverted elements at the new iterate
+  double precond_seconds = 0;    // update + apply
+  double line_search_seconds = 0;
+};
+
+enum class CallbackAction { kContinue, kStop };
+using IterationCallback = std::function<CallbackAction(const IterationSummary&, const Eigen::VectorXd& x)>;
+
+struct OptimizerResult {
+  Eigen::VectorXd x;
+  std::vector<IterationSummary> trace;  // row 0 is the initial map
+  TerminationStatus status = TerminationStatus::kMaxIterations;
+  std::string message;
+};
+
+OptimizerResult minimize(const Objective& objective, Preconditioner& preconditioner, const LineSearch& line_search,
+                         Eigen::VectorXd x, const OptimizerOptions& options,
+                         const std::vector<IterationCallback>& callbacks = {});
+
+}  // namespace akvf

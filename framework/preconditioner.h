@@ -1,0 +1,26 @@
+#pragma once
+// A preconditioner P(x) for the optimizer's search direction d = -P^-1 grad E.
+// update() builds and factors P at the current iterate; apply() solves.
+#include <Eigen/Core>
+#include <string>
+
+namespace akvf {
+
+struct OptimizationState {
+  const Eigen::VectorXd& x;
+  const Eigen::VectorXd& gradient;
+  double energy;
+  int iteration;
+};
+
+class Preconditioner {
+ public:
+  virtual ~Preconditioner() = default;
+  virtual std::string name() const = 0;
+  // Build and factor P(x). Called once per iteration, before apply().
+  virtual void update(const OptimizationState& state) = 0;
+  // result = P^-1 gradient (the optimizer searches along its negative).
+  virtual void apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) = 0;
+};
+
+}  // namespace akvf

@@ -1,0 +1,48 @@
+#include "framework/rest_geometry.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace akvf {
+
+RestTriangles rest_triangles(const TriMesh& mesh) {
+  RestTriangles rest;
+  const int nf = mesh.num_faces();
+  rest.Dm_inv.resize(nf);
+  rest.area.resize(nf);
+  for (int f = 0; f < nf; ++f) {
+    const Eigen::Vector3d p0 = mesh.V.row(mesh.F(f, 0));
+    const Eigen::Vector3d e1 = Eigen::Vector3d(mesh.V.row(mesh.F(f, 1))) - p0;
+    const Eigen::Vector3d e2 = Eigen::Vector3d(mesh.V.row(mesh.F(f, 2))) - p0;
+    const double length = e1.norm();
+    const double twice_area = e1.cross(e2).norm();
+    Eigen::Matrix2d Dm;
+    Dm << length, e1.dot(e2) / length, 0, twice_area / length;
+    rest.Dm_inv[f] = Dm.inverse();
+    rest.area[f] = 0.5 * twice_area;
+  }
+  rest.total_area = rest.area.sum();
+  return rest;
+}
+
+double surface_area(const TriMesh& mesh) {
+  double area = 0;
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const Eigen::Vector3d p0 = mesh.V.row(mesh.F(f, 0));
+    area += 0.5 * (Eigen::Vector3d(mesh.V.row(mesh.F(f, 1))) - p0)
+                      .cross(Eigen::Vector3d(mesh.V.row(mesh.F(f, 2))) - p0)
+                      .norm();
+  }
+  return area;
+}
+
+Normalization normalize_to_unit_area(TriMesh* mesh) {
+  Normalization n;
+  n.input_area = surface_area(*mesh);
+  n.scale = 1.0 / std::sqrt(n.input_area);
+  n.center = mesh->V.colwise().mean();
+  mesh->V = (mesh->V.rowwise() - n.center) * n.scale;
+  return n;
+}
+
+}  // namespace akvf

@@ -1,0 +1,43 @@
+#pragma once
+// Line-by-line tokenizer shared by the mesh readers: strips '#' comments,
+// splits on white space, and parses numbers with errors that name the file
+// and line.
+#include <istream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace akvf {
+
+class TextReader {
+ public:
+  TextReader(std::istream& in, std::string file_name);
+
+  // Advances to the next line that has at least one token. Returns false at
+  // the end of the input.
+  bool next_line();
+
+  const std::vector<std::string_view>& tokens() const { return tokens_; }
+  long line_number() const { return line_number_; }
+  const std::string& file_name() const { return file_name_; }
+
+  // Parsers for token i of the current line; they throw InputError naming
+  // the line and the offending text.
+  double real(std::size_t i, const char* what) const;
+  long long integer(std::size_t i, const char* what) const;
+
+  [[noreturn]] void fail(const std::string& problem) const;
+
+ private:
+  std::istream& in_;
+  std::string file_name_;
+  std::string line_;
+  std::vector<std::string_view> tokens_;
+  long line_number_ = 0;
+};
+
+// Parses a whole token as a finite double / integer; returns false otherwise.
+bool parse_real(std::string_view token, double* value);
+bool parse_integer(std::string_view token, long long* value);
+
+}  // namespace akvf

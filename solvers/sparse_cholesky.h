@@ -1,0 +1,37 @@
+#pragma once
+// Sparse Cholesky factorization of a symmetric positive definite matrix with
+// CHOLMOD (supernodal where it pays), hidden behind a small class. The
+// symbolic analysis (fill-reducing ordering, elimination tree) is done once
+// for a sparsity pattern; each factorize() is numeric only (§5.2).
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+
+namespace akvf {
+
+class SparseCholesky {
+ public:
+  SparseCholesky();
+  ~SparseCholesky();
+  SparseCholesky(const SparseCholesky&) = delete;
+  SparseCholesky& operator=(const SparseCholesky&) = delete;
+
+  // Symbolic analysis of the pattern of `upper` (the upper triangle, column
+  // major, compressed). Later factorize() calls must use the same pattern.
+  void analyze(const Eigen::SparseMatrix<double>& upper);
+  // Numeric factorization A = L L^T. Throws NumericalError if A is not
+  // positive definite.
+  void factorize(const Eigen::SparseMatrix<double>& upper);
+  // x = A^-1 b (x is resized).
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd* x);
+
+  bool analyzed() const;
+  // Nonzeros of the factor L after the last analyze().
+  double factor_nonzeros() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace akvf
