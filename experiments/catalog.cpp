@@ -32,8 +32,8 @@ const PreconditionerRegistry& preconditioners_2d() {
 const LineSearchRegistry& line_searches() {
   static const LineSearchRegistry registry = [] {
     LineSearchRegistry r("line search");
-    r.add("backtracking", "Armijo backtracking from min(1, 0.8 alpha_max), rho 0.9, c1 1e-5 (Sec. 5.3)",
-          [] { return std::make_unique<BacktrackingLineSearch>(); });
+    r.add("backtracking", "Armijo backtracking from min(1, 0.8 alpha_max), flip-free (Sec. 5.3)",
+          [](const LineSearchSettings& settings) { return std::make_unique<BacktrackingLineSearch>(settings); });
     return r;
   }();
   return registry;

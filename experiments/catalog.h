@@ -14,7 +14,7 @@ namespace akvf {
 
 using DensityRegistry = Registry<DistortionDensity2>;
 using PreconditionerRegistry = Registry<Preconditioner, const ParamObjective&>;
-using LineSearchRegistry = Registry<LineSearch>;
+using LineSearchRegistry = Registry<LineSearch, const LineSearchSettings&>;
 
 const DensityRegistry& energies_2d();
 const PreconditionerRegistry& preconditioners_2d();

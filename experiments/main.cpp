@@ -5,6 +5,7 @@
 
 #include "experiments/catalog.h"
 #include "experiments/exit_codes.h"
+#include "experiments/native_runtime.h"
 #include "experiments/param_command.h"
 #include "framework/error.h"
 
@@ -41,6 +42,7 @@ int list_command(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  akvf::configure_native_runtime(argv);
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
     std::cout << kUsage;

@@ -27,6 +27,7 @@ std::vector<OptionSpec> optimization_options() {
       {"energy", "NAME", "distortion energy (default symmetric-dirichlet; see `akvf list`)"},
       {"precond", "NAME", "preconditioner: akvf (default) or identity"},
       {"line-search", "NAME", "line search (default backtracking)"},
+      {"ls-rho", "X", "backtracking shrink factor (default 0.5; the paper's text says 0.9)"},
       {"init", "NAME", "initial map: tutte (uniform weights, default) or cotan"},
       {"flaps", "on|off", "flap optimization of Sec. 5.4 after the Tutte map (default on)"},
       {"grad-tol", "X", "stop when the gradient norm drops below X (default 1e-3)"},
@@ -40,9 +41,12 @@ std::vector<OptionSpec> optimization_options() {
 
 ParamConfig config_from(const CommandLine& cl) {
   ParamConfig config;
+  std::string invalid;
   config.energy = cl.text("energy", config.energy);
   config.preconditioner = cl.text("precond", config.preconditioner);
   config.line_search = cl.text("line-search", config.line_search);
+  config.line_search_settings.rho = cl.real("ls-rho", config.line_search_settings.rho);
+  if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
   config.init = parse_tutte_weights(cl.text("init", "tutte"));
   const std::string flaps = cl.text("flaps", "on");
   if (flaps != "on" && flaps != "off") throw OptionsError("option --flaps: expected on or off, found '" + flaps + "'");
@@ -50,7 +54,6 @@ ParamConfig config_from(const CommandLine& cl) {
   config.optimizer.gradient_tolerance = cl.real("grad-tol", config.optimizer.gradient_tolerance);
   config.optimizer.max_iterations = cl.integer("max-iters", config.optimizer.max_iterations);
   config.optimizer.time_limit = cl.real("time-limit", config.optimizer.time_limit);
-  std::string invalid;
   if (!config.optimizer.is_valid(&invalid)) throw OptionsError(invalid);
   if (cl.integer("threads", 0) < 0) throw OptionsError("option --threads must be >= 1");
   return config;

@@ -10,6 +10,7 @@ namespace akvf {
 ParamSetup prepare_parameterization(const TriMesh& input, const std::string& name, const ParamConfig& config) {
   std::string invalid;
   if (!config.optimizer.is_valid(&invalid)) throw OptionsError(invalid);
+  if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
   // Resolve names first so a typo fails before any work.
   std::shared_ptr<const DistortionDensity2> density = energies_2d().create(config.energy);
   preconditioners_2d().require(config.preconditioner);
@@ -32,7 +33,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks) {
   auto preconditioner = preconditioners_2d().create(config.preconditioner, *setup.objective);
-  auto line_search = line_searches().create(config.line_search);
+  auto line_search = line_searches().create(config.line_search, config.line_search_settings);
   ParamRun run;
   run.preconditioner_name = preconditioner->name();
   run.result = minimize(*setup.objective, *preconditioner, *line_search, setup.x0, config.optimizer, callbacks);

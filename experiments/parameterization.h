@@ -17,6 +17,7 @@ struct ParamConfig {
   std::string energy = "symmetric-dirichlet";
   std::string preconditioner = "akvf";
   std::string line_search = "backtracking";
+  LineSearchSettings line_search_settings;
   TutteWeights init = TutteWeights::kUniform;
   // §5.4 flap optimization after the Tutte map (see docs/performance.md for
   // the measurement behind the default).

@@ -5,6 +5,20 @@
 
 namespace akvf {
 
+bool LineSearchSettings::is_valid(std::string* error) const {
+  auto fail = [&](const char* message) {
+    if (error) *error = message;
+    return false;
+  };
+  if (!(c1 > 0 && c1 < 1)) return fail("line search c1 must be in (0, 1)");
+  if (!(rho > 0 && rho < 1)) return fail("line search rho must be in (0, 1)");
+  if (!(max_step_fraction > 0 && max_step_fraction < 1)) return fail("line search max step fraction must be in (0, 1)");
+  if (!(max_initial_step > 0)) return fail("line search initial step must be > 0");
+  if (!(min_step_ratio > 0 && min_step_ratio < 1)) return fail("line search min step ratio must be in (0, 1)");
+  if (max_evaluations < 1) return fail("line search needs at least one evaluation");
+  return true;
+}
+
 LineSearchSummary LineSearch::search(const Objective& objective, const Eigen::VectorXd& x, double energy,
                                      const Eigen::VectorXd& gradient, const Eigen::VectorXd& direction) const {
   const auto start = std::chrono::steady_clock::now();

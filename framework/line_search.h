@@ -10,6 +10,24 @@
 
 namespace akvf {
 
+// Parameters shared by the line searches (each uses those that apply).
+struct LineSearchSettings {
+  double c1 = 1e-5;                // sufficient decrease: E(x + a d) <= E(x) + c1 a grad^T d
+  // Backtracking shrink factor. §5.3 of the paper states 0.9; the SLIM
+  // framework the authors' code is built on halves the step, and halving
+  // needs about half the iterations here (docs/performance.md), so 0.5 is
+  // the default and --ls-rho 0.9 gives the paper's text.
+  double rho = 0.5;
+  double max_step_fraction = 0.8;  // alpha_0 <= fraction * alpha_max (flip-free bound)
+  double max_initial_step = 1.0;   // alpha_0 <= this
+  // The search fails when the step falls below min_step_ratio * alpha_0 or
+  // after max_evaluations energy evaluations.
+  double min_step_ratio = 1e-12;
+  int max_evaluations = 400;
+
+  bool is_valid(std::string* error) const;
+};
+
 struct LineSearchSummary {
   bool success = false;
   double step = 0;               // accepted alpha (0 on failure: x is unchanged)

@@ -7,36 +7,33 @@
 
 namespace akvf {
 
-BacktrackingLineSearch::BacktrackingLineSearch(BacktrackingOptions options) : options_(options) {
-  if (!(options_.c1 > 0 && options_.c1 < 1)) throw OptionsError("line search c1 must be in (0, 1)");
-  if (!(options_.rho > 0 && options_.rho < 1)) throw OptionsError("line search rho must be in (0, 1)");
-  if (!(options_.max_step_fraction > 0 && options_.max_step_fraction < 1))
-    throw OptionsError("line search max step fraction must be in (0, 1)");
-  if (!(options_.max_initial_step > 0)) throw OptionsError("line search initial step must be > 0");
-  if (options_.max_evaluations < 1) throw OptionsError("line search needs at least one evaluation");
+BacktrackingLineSearch::BacktrackingLineSearch(LineSearchSettings settings) : settings_(settings) {
+  std::string invalid;
+  if (!settings_.is_valid(&invalid)) throw OptionsError(invalid);
 }
 
 LineSearchSummary BacktrackingLineSearch::do_search(const LineSearchInput& in) const {
   LineSearchSummary summary;
-  double alpha = std::min(options_.max_initial_step, options_.max_step_fraction * in.max_feasible_step);
+  double alpha = std::min(settings_.max_initial_step, settings_.max_step_fraction * in.max_feasible_step);
   summary.initial_step = alpha;
   Eigen::VectorXd trial(in.x.size());
-  for (int k = 0; k < options_.max_evaluations; ++k) {
+  const double smallest = settings_.min_step_ratio * alpha;
+  while (summary.evaluations < settings_.max_evaluations && alpha >= smallest) {
     trial = in.x + alpha * in.direction;
     const double energy = in.objective.value(trial);
     ++summary.evaluations;
     // +infinity (an inverted element) never satisfies the condition.
-    if (energy <= in.energy + options_.c1 * alpha * in.directional_derivative) {
+    if (energy <= in.energy + settings_.c1 * alpha * in.directional_derivative) {
       summary.success = true;
       summary.step = alpha;
       summary.energy = energy;
       return summary;
     }
-    alpha *= options_.rho;
+    alpha *= settings_.rho;
   }
-  summary.message = "no step satisfied the sufficient-decrease condition in " +
-                    std::to_string(options_.max_evaluations) + " evaluations (last alpha " + std::to_string(alpha) +
-                    ", alpha_max " + std::to_string(in.max_feasible_step) + ")";
+  summary.message = "no step satisfied the sufficient-decrease condition after " +
+                    std::to_string(summary.evaluations) + " evaluations (initial alpha " +
+                    std::to_string(summary.initial_step) + ", alpha_max " + std::to_string(in.max_feasible_step) + ")";
   return summary;
 }
 

@@ -55,6 +55,8 @@ bool SparseCholesky::analyzed() const { return impl_->factor != nullptr; }
 
 double SparseCholesky::factor_nonzeros() const { return impl_->common.lnz; }
 
+double SparseCholesky::factor_flops() const { return impl_->common.fl; }
+
 void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper) {
   if (!upper.isCompressed()) throw NumericalError("SparseCholesky: matrix must be compressed");
   cholmod_free_factor(&impl_->factor, &impl_->common);

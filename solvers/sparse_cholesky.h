@@ -28,6 +28,8 @@ class SparseCholesky {
   bool analyzed() const;
   // Nonzeros of the factor L after the last analyze().
   double factor_nonzeros() const;
+  // Floating-point operations of one numeric factorization.
+  double factor_flops() const;
 
  private:
   struct Impl;
