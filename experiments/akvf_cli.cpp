@@ -1,0 +1,77 @@
+#include "experiments/akvf_cli.h"
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "experiments/catalog.h"
+#include "experiments/exit_codes.h"
+#include "experiments/param_command.h"
+#include "framework/error.h"
+
+namespace {
+
+const char* kUsage =
+    "usage: akvf COMMAND [options]\n"
+    "\n"
+    "commands:\n"
+    "  param MESH   parameterize a disk-topology triangle mesh (.obj or .off)\n"
+    "  demo         parameterize a built-in mesh and write its outputs (no input files)\n"
+    "  list         list energies, preconditioners and line searches\n"
+    "  help         show this help\n"
+    "\n"
+    "`akvf COMMAND --help` describes each command's options.\n";
+
+template <class RegistryType>
+void print_entries(std::ostream& out, const char* title, const RegistryType& registry) {
+  out << title << ":\n";
+  for (const auto& [name, description] : registry.entries()) {
+    std::string left = "  " + name;
+    left.resize(std::max<std::size_t>(left.size() + 2, 24), ' ');
+    out << left << description << '\n';
+  }
+}
+
+int list_command(std::ostream& out) {
+  print_entries(out, "energies", akvf::energies_2d());
+  print_entries(out, "preconditioners", akvf::preconditioners_2d());
+  print_entries(out, "line searches", akvf::line_searches());
+  return akvf::kExitOk;
+}
+
+}  // namespace
+
+namespace akvf {
+
+int run_akvf(std::vector<std::string> args, std::ostream& out, std::ostream& err) {
+  if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
+    out << kUsage;
+    return args.empty() ? kExitUsageError : kExitOk;
+  }
+  const std::string command = args[0];
+  args.erase(args.begin());
+  try {
+    if (command == "param") return param_command(args, out, err);
+    if (command == "demo") return demo_command(args, out, err);
+    if (command == "list") return list_command(out);
+    err << "akvf: unknown command '" << command << "'\n\n" << kUsage;
+    return kExitUsageError;
+  } catch (const InputError& e) {
+    err << "error: " << e.what() << '\n';
+    return kExitInputError;
+  } catch (const ValidationError& e) {
+    err << "error: " << e.what() << '\n';
+    return kExitInputError;
+  } catch (const OptionsError& e) {
+    err << "error: " << e.what() << '\n';
+    return kExitUsageError;
+  } catch (const OutputError& e) {
+    err << "error: " << e.what() << '\n';
+    return kExitOutputError;
+  } catch (const std::exception& e) {
+    err << "error: " << e.what() << '\n';
+    return kExitOptimizerFailure;
+  }
+}
+
+}  // namespace akvf

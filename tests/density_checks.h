@@ -1,0 +1,64 @@
+#pragma once
+// The shared finite-difference checker for distortion densities: at random
+// non-inverted J (well conditioned and near-degenerate), the gradient matches
+// central differences of the value and the Hessian matches central
+// differences of the gradient; the projected Hessian is PSD.
+#include <doctest/doctest.h>
+
+#include <Eigen/Eigenvalues>
+#include <random>
+
+#include "framework/distortion_density.h"
+
+namespace akvf::test {
+
+// A random J with det > 0 whose singular values lie in [smallest, largest].
+template <int Dim>
+Eigen::Matrix<double, Dim, Dim> random_jacobian(std::mt19937& rng, double smallest, double largest) {
+  using M = Eigen::Matrix<double, Dim, Dim>;
+  std::uniform_real_distribution<double> u(-1, 1), s(std::log(smallest), std::log(largest));
+  const Eigen::HouseholderQR<M> qr1(M::NullaryExpr([&](Eigen::Index, Eigen::Index) { return u(rng); }));
+  const Eigen::HouseholderQR<M> qr2(M::NullaryExpr([&](Eigen::Index, Eigen::Index) { return u(rng); }));
+  M U = qr1.householderQ(), V = qr2.householderQ();
+  if (U.determinant() < 0) U.col(0) *= -1;
+  if (V.determinant() < 0) V.col(0) *= -1;
+  Eigen::Matrix<double, Dim, 1> sigma;
+  for (int i = 0; i < Dim; ++i) sigma[i] = std::exp(s(rng));
+  return U * sigma.asDiagonal() * V.transpose();
+}
+
+template <int Dim>
+void check_density_derivatives(const DistortionDensity<Dim>& density, double smallest, double largest,
+                               int samples = 50, unsigned seed = 7) {
+  using M = Eigen::Matrix<double, Dim, Dim>;
+  using H = typename DistortionDensity<Dim>::Hessian;
+  constexpr int N = Dim * Dim;
+  std::mt19937 rng(seed);
+  for (int sample = 0; sample < samples; ++sample) {
+    const M J = random_jacobian<Dim>(rng, smallest, largest);
+    M grad;
+    const double value = density.value_and_gradient(J, &grad);
+    REQUIRE(value == doctest::Approx(density.value(J)).epsilon(1e-14));
+    const double h = 1e-6 * std::max(1.0, J.norm()) * std::min(1.0, smallest);
+    H fd_hessian;
+    for (int k = 0; k < N; ++k) {
+      M plus = J, minus = J;
+      plus.data()[k] += h;
+      minus.data()[k] -= h;
+      const double fd = (density.value(plus) - density.value(minus)) / (2 * h);
+      CHECK(grad.data()[k] == doctest::Approx(fd).epsilon(1e-5).scale(std::abs(value)));
+      M grad_plus, grad_minus;
+      density.value_and_gradient(plus, &grad_plus);
+      density.value_and_gradient(minus, &grad_minus);
+      for (int l = 0; l < N; ++l) fd_hessian(l, k) = (grad_plus.data()[l] - grad_minus.data()[l]) / (2 * h);
+    }
+    const H hessian = density.hessian(J);
+    const double scale = std::max(1.0, hessian.norm());
+    CHECK((hessian - fd_hessian).norm() <= 1e-5 * scale);
+    CHECK((hessian - hessian.transpose()).norm() <= 1e-12 * scale);
+    const Eigen::SelfAdjointEigenSolver<H> projected(density.projected_hessian(J));
+    CHECK(projected.eigenvalues().minCoeff() >= -1e-10 * scale);
+  }
+}
+
+}  // namespace akvf::test

@@ -1,0 +1,114 @@
+// The akvf command line in-process: exit codes, messages, output files.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "experiments/akvf_cli.h"
+#include "experiments/exit_codes.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  int code;
+  std::string out, err;
+};
+
+Outcome akvf_run(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int code = akvf::run_akvf(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+fs::path scratch_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("akvf_cli_test_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+TEST_CASE("demo writes the UV OBJ, the trace and the SVG and reaches the lower bound") {
+  const fs::path dir = scratch_dir("demo");
+  const Outcome r = akvf_run({"demo", "--out-dir", dir.string(), "--quiet"});
+  CHECK(r.code == akvf::kExitOk);
+  CHECK(r.out.find("status converged") != std::string::npos);
+  const std::string trace = read_text(dir / "demo_trace.csv");
+  CHECK(trace.rfind("iter,seconds,energy,grad_norm,step,ls_evals,flips,", 0) == 0);
+  CHECK(trace.find("\n0,") != std::string::npos);
+  CHECK(trace.find(",converged\n") != std::string::npos);
+  const std::string obj = read_text(dir / "demo_uv.obj");
+  CHECK(obj.find("\nvt ") != std::string::npos);
+  CHECK(read_text(dir / "demo_layout.svg").find("<svg") == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("param on a malformed mesh exits 1, names file and line, and writes nothing") {
+  const fs::path dir = scratch_dir("bad");
+  write_text(dir / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3 4\n");
+  const fs::path out = dir / "uv.obj", trace = dir / "trace.csv";
+  const Outcome r = akvf_run({"param", (dir / "bad.obj").string(), "--out", out.string(), "--trace", trace.string()});
+  CHECK(r.code == akvf::kExitInputError);
+  CHECK(r.err.find("line 5 of " + (dir / "bad.obj").string() + ": face has 4 corners") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  CHECK_FALSE(fs::exists(trace));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("param on a closed mesh exits 1 with the topology message") {
+  const fs::path dir = scratch_dir("closed");
+  write_text(dir / "tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+  const Outcome r = akvf_run({"param", (dir / "tet.off").string(), "--out", (dir / "uv.obj").string()});
+  CHECK(r.code == akvf::kExitInputError);
+  CHECK(r.err.find("mesh is closed (no boundary loop); it must be cut to a disk first") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "uv.obj"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("bad command lines exit 2 with a message") {
+  CHECK(akvf_run({"param"}).code == akvf::kExitUsageError);
+  const Outcome unknown = akvf_run({"param", "m.obj", "--bogus"});
+  CHECK(unknown.code == akvf::kExitUsageError);
+  CHECK(unknown.err == "error: unknown option --bogus (see --help)\n");
+  const Outcome bad_value = akvf_run({"param", "m.obj", "--grad-tol", "abc"});
+  CHECK(bad_value.err == "error: option --grad-tol: 'abc' is not a finite number\n");
+  const Outcome precond = akvf_run({"demo", "--precond", "slim2", "--quiet", "--out-dir", scratch_dir("x").string()});
+  CHECK(precond.code == akvf::kExitUsageError);
+  CHECK(precond.err == "error: unknown preconditioner 'slim2' (valid: akvf, identity)\n");
+  CHECK(akvf_run({"frobnicate"}).code == akvf::kExitUsageError);
+}
+
+TEST_CASE("a missing output directory is reported before any work") {
+  const fs::path dir = scratch_dir("missing");
+  write_text(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const fs::path out = dir / "no-such-dir" / "uv.obj";
+  const Outcome r = akvf_run({"param", (dir / "tri.obj").string(), "--quiet", "--out", out.string()});
+  CHECK(r.code == akvf::kExitOutputError);
+  CHECK(r.err == "error: cannot write " + out.string() + ": directory " + (dir / "no-such-dir").string() +
+                     " does not exist\n");
+  CHECK(r.out.empty());
+  fs::remove_all(dir);
+}
+
+TEST_CASE("help and list describe the commands") {
+  const Outcome help = akvf_run({"param", "--help"});
+  CHECK(help.code == akvf::kExitOk);
+  for (const char* option : {"--energy", "--precond", "--init", "--grad-tol", "--max-iters", "--time-limit", "--out",
+                             "--trace", "--svg", "--threads", "--quiet"})
+    CHECK(help.out.find(option) != std::string::npos);
+  const Outcome list = akvf_run({"list"});
+  CHECK(list.out.find("symmetric-dirichlet") != std::string::npos);
+  CHECK(list.out.find("akvf") != std::string::npos);
+  CHECK(list.out.find("backtracking") != std::string::npos);
+}

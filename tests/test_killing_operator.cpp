@@ -1,0 +1,147 @@
+// The planar Killing operator K(x) of Eq. (5) and the AKVF preconditioner.
+#include <doctest/doctest.h>
+
+#include <Eigen/Eigenvalues>
+#include <random>
+
+#include "energies/symmetric_dirichlet.h"
+#include "framework/param_objective.h"
+#include "preconditioners/akvf_preconditioner.h"
+#include "preconditioners/killing_operator_2d.h"
+#include "tests/test_support.h"
+
+using akvf::KillingOperator2D;
+
+namespace {
+
+Eigen::MatrixXd dense_killing(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
+                              bool area_scaling) {
+  KillingOperator2D K(F, static_cast<int>(x.size() / 2));
+  K.assemble(x, rest_area, area_scaling);
+  return Eigen::MatrixXd(K.full());
+}
+
+// Eq. (6)-(7): per element A_f [grad phi_j grad phi_i^T + (grad phi_i . grad phi_j) I],
+// assembled independently of killing_operator_2d.cpp.
+Eigen::MatrixXd fem_killing(const Eigen::MatrixXi& F, const Eigen::VectorXd& x) {
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(x.size(), x.size());
+  for (int f = 0; f < F.rows(); ++f) {
+    Eigen::Matrix2d Ds;
+    Ds.col(0) = x.segment<2>(2 * F(f, 1)) - x.segment<2>(2 * F(f, 0));
+    Ds.col(1) = x.segment<2>(2 * F(f, 2)) - x.segment<2>(2 * F(f, 0));
+    const double area = 0.5 * Ds.determinant();
+    // Hat-function gradients: rows of Ds^-1 for corners 1, 2; corner 0 is minus their sum.
+    const Eigen::Matrix2d inv = Ds.inverse();
+    Eigen::Vector2d grad[3] = {-(inv.row(0) + inv.row(1)).transpose(), inv.row(0).transpose(), inv.row(1).transpose()};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        K.block<2, 2>(2 * F(f, i), 2 * F(f, j)) +=
+            area * (grad[j] * grad[i].transpose() + grad[i].dot(grad[j]) * Eigen::Matrix2d::Identity());
+  }
+  return K;
+}
+
+// Eq. (4): 1/2 sum_f w_f |J_d + J_d^T|^2 with w_f = A_f (or A_hat_f when area-scaled).
+double killing_energy(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& d,
+                      const Eigen::VectorXd& weight) {
+  double energy = 0;
+  for (int f = 0; f < F.rows(); ++f) {
+    Eigen::Matrix2d Ds, Dd;
+    Ds << x.segment<2>(2 * F(f, 1)) - x.segment<2>(2 * F(f, 0)), x.segment<2>(2 * F(f, 2)) - x.segment<2>(2 * F(f, 0));
+    Dd << d.segment<2>(2 * F(f, 1)) - d.segment<2>(2 * F(f, 0)), d.segment<2>(2 * F(f, 2)) - d.segment<2>(2 * F(f, 0));
+    const Eigen::Matrix2d Jd = Dd * Ds.inverse();
+    energy += 0.5 * weight[f] * (Jd + Jd.transpose()).squaredNorm();
+  }
+  return energy;
+}
+
+struct PlanarMesh {
+  Eigen::MatrixXi F;
+  Eigen::VectorXd x;
+  Eigen::VectorXd uv_area;
+};
+
+PlanarMesh jittered_grid(int n, unsigned seed) {
+  const akvf::TriMesh mesh = akvf::test::grid_disk(n, n);
+  PlanarMesh p{mesh.F, akvf::stack_uv(akvf::test::jittered_uv(mesh, 0.25, seed)), {}};
+  p.uv_area.resize(p.F.rows());
+  for (int f = 0; f < p.F.rows(); ++f) {
+    Eigen::Matrix2d Ds;
+    Ds << p.x.segment<2>(2 * p.F(f, 1)) - p.x.segment<2>(2 * p.F(f, 0)),
+        p.x.segment<2>(2 * p.F(f, 2)) - p.x.segment<2>(2 * p.F(f, 0));
+    p.uv_area[f] = 0.5 * Ds.determinant();
+  }
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("Eq. (5) equals the FEM form Eq. (6) on random triangles") {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Eigen::MatrixXi F(1, 3);
+  F << 0, 1, 2;
+  for (int trial = 0; trial < 100; ++trial) {
+    Eigen::VectorXd x(6);
+    for (int i = 0; i < 6; ++i) x[i] = u(rng);
+    Eigen::Matrix2d Ds;
+    Ds << x.segment<2>(2) - x.segment<2>(0), x.segment<2>(4) - x.segment<2>(0);
+    if (Ds.determinant() < 0) x.segment<2>(2).swap(x.segment<2>(4));  // counter-clockwise
+    if (std::abs(Ds.determinant()) < 1e-3) continue;
+    const Eigen::MatrixXd eq5 = dense_killing(F, x, Eigen::VectorXd::Ones(1), false);
+    const Eigen::MatrixXd eq6 = fem_killing(F, x);
+    CHECK((eq5 - eq6).norm() <= 1e-10 * eq6.norm());
+  }
+}
+
+TEST_CASE("the quadratic form of K is the Killing energy Eq. (4), with and without area scaling") {
+  const PlanarMesh p = jittered_grid(6, 5);
+  std::mt19937 rng(9);
+  std::normal_distribution<double> n;
+  const Eigen::VectorXd rest_area = Eigen::VectorXd::NullaryExpr(p.F.rows(), [&](Eigen::Index) { return 0.01 + 0.001 * std::abs(n(rng)); });
+  const Eigen::MatrixXd K = dense_killing(p.F, p.x, rest_area, false);
+  const Eigen::MatrixXd K_scaled = dense_killing(p.F, p.x, rest_area, true);
+  for (int trial = 0; trial < 5; ++trial) {
+    const Eigen::VectorXd d = Eigen::VectorXd::NullaryExpr(p.x.size(), [&](Eigen::Index) { return n(rng); });
+    CHECK(d.dot(K * d) == doctest::Approx(killing_energy(p.F, p.x, d, p.uv_area)).epsilon(1e-10));
+    // §4.2.1: scaling by A_hat_f / A_f integrates over the 3D triangles instead.
+    CHECK(d.dot(K_scaled * d) == doctest::Approx(killing_energy(p.F, p.x, d, rest_area)).epsilon(1e-10));
+  }
+}
+
+TEST_CASE("K is symmetric PSD with exactly the rigid motions as null space (rank 2|V| - 3)") {
+  const PlanarMesh p = jittered_grid(7, 2);
+  const Eigen::MatrixXd K = dense_killing(p.F, p.x, p.uv_area * 1.7, true);
+  CHECK((K - K.transpose()).norm() <= 1e-12 * K.norm());
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(K);
+  const Eigen::VectorXd lambda = eig.eigenvalues();
+  const double tol = 1e-10 * lambda.maxCoeff();
+  CHECK(lambda.minCoeff() >= -tol);
+  int null_dim = 0;
+  for (Eigen::Index i = 0; i < lambda.size(); ++i) null_dim += lambda[i] < tol;
+  CHECK(null_dim == 3);
+  CHECK(lambda[3] > 1e3 * tol);  // a clear gap above the null space: rank exactly 2|V| - 3
+  const Eigen::MatrixXd rigid = akvf::rigid_motion_basis_2d(p.x);
+  CHECK((K * rigid).norm() <= 1e-10 * K.norm());
+  CHECK((rigid.transpose() * rigid - Eigen::Matrix3d::Identity()).norm() <= 1e-12);
+}
+
+TEST_CASE("the AKVF direction is K^+ grad E, a descent direction free of rigid motion") {
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(6, 6);
+  akvf::TriMesh normalized = mesh;
+  akvf::normalize_to_unit_area(&normalized);
+  const akvf::ParamObjective objective(normalized.F, akvf::rest_triangles(normalized),
+                                       std::make_shared<akvf::SymmetricDirichlet2>(), normalized.num_vertices());
+  const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 4) * 0.9);
+  Eigen::VectorXd g, d;
+  objective.value_and_gradient(x, &g);
+  akvf::AkvfPreconditioner2D preconditioner(objective);
+  preconditioner.update({x, g, 0.0, 1});
+  preconditioner.apply(g, &d);
+  const Eigen::MatrixXd K = dense_killing(objective.faces(), x, objective.rest().area, true);
+  const Eigen::MatrixXd pseudo_inverse = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(K).pseudoInverse();
+  const Eigen::VectorXd reference = pseudo_inverse * g;
+  CHECK((d - reference).norm() <= 1e-5 * reference.norm());
+  CHECK(g.dot(d) > 0);  // -d is a descent direction
+  CHECK((akvf::rigid_motion_basis_2d(x).transpose() * d).norm() <= 1e-12 * d.norm());
+}

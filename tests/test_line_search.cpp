@@ -1,0 +1,110 @@
+// The flip-free step bound (§5.3) and the backtracking line search.
+#include <doctest/doctest.h>
+
+#include <limits>
+#include <random>
+
+#include "energies/symmetric_dirichlet.h"
+#include "framework/flip_free_step.h"
+#include "framework/param_objective.h"
+#include "solvers/backtracking_line_search.h"
+#include "tests/test_support.h"
+
+using akvf::smallest_positive_root;
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+akvf::ParamObjective make_objective(const akvf::TriMesh& mesh) {
+  return akvf::ParamObjective(mesh.F, akvf::rest_triangles(mesh), std::make_shared<akvf::SymmetricDirichlet2>(),
+                              mesh.num_vertices());
+}
+}  // namespace
+
+TEST_CASE("smallest positive root: quadratic, linear and constant cases are exact") {
+  CHECK(smallest_positive_root(1, -3, 2) == doctest::Approx(1.0));  // (t - 1)(t - 2)
+  CHECK(smallest_positive_root(0, -2, 3) == 1.5);                   // linear: exact -c / b
+  CHECK(smallest_positive_root(0, 2, 3) == kInf);                   // linear, root at t < 0
+  CHECK(smallest_positive_root(0, 0, 3) == kInf);                   // constant det
+  CHECK(smallest_positive_root(1, 0, 1) == kInf);                   // no real root
+  CHECK(smallest_positive_root(-1, 0, 4) == doctest::Approx(2.0));  // roots +-2
+  CHECK(smallest_positive_root(1, 3, 2) == kInf);                   // roots -1, -2
+}
+
+TEST_CASE("smallest positive root stays accurate when the quadratic term is tiny") {
+  // det(t) = 1e-12 t^2 - 2 t + 1: the small root is 0.5 to first order; the
+  // textbook formula loses it to cancellation.
+  const double t = smallest_positive_root(1e-12, -2, 1);
+  CHECK(t == doctest::Approx(0.5).epsilon(1e-12));
+  CHECK(std::abs(1e-12 * t * t - 2 * t + 1) <= 1e-15);
+}
+
+TEST_CASE("no step below the bound inverts a triangle (random directions on random meshes)") {
+  std::mt19937 rng(17);
+  std::normal_distribution<double> n;
+  int tested = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const akvf::TriMesh mesh = akvf::test::grid_disk(8, 8, 0.3, trial + 1);
+    const auto objective = make_objective(mesh);
+    const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(akvf::test::grid_disk(8, 8), 0.2, trial + 100));
+    if (objective.count_inverted(x) > 0) continue;  // the random start must be a valid map
+    ++tested;
+    const Eigen::VectorXd d = Eigen::VectorXd::NullaryExpr(x.size(), [&](Eigen::Index) { return n(rng); });
+    const double t_max = objective.max_feasible_step(x, d);
+    REQUIRE(std::isfinite(t_max));
+    for (double fraction : {0.1, 0.5, 0.8, 0.99, 0.999999})
+      CHECK(objective.count_inverted(x + fraction * t_max * d) == 0);
+    CHECK(objective.count_inverted(x + 1.000001 * t_max * d) > 0);  // the bound is tight
+  }
+  CHECK(tested >= 15);
+}
+
+TEST_CASE("the line search never returns a step that inverts a triangle") {
+  std::mt19937 rng(23);
+  std::normal_distribution<double> n;
+  const akvf::BacktrackingLineSearch search;
+  int tested = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const akvf::TriMesh mesh = akvf::test::grid_disk(8, 8, 0.3, trial + 1);
+    const auto objective = make_objective(mesh);
+    const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(akvf::test::grid_disk(8, 8), 0.2, trial + 7));
+    if (objective.count_inverted(x) > 0) continue;
+    ++tested;
+    Eigen::VectorXd g;
+    const double energy = objective.value_and_gradient(x, &g);
+    // A random descent direction, scaled to reach far beyond the flip bound.
+    Eigen::VectorXd d = Eigen::VectorXd::NullaryExpr(x.size(), [&](Eigen::Index) { return n(rng); });
+    if (d.dot(g) > 0) d = -d;
+    d *= 100 / d.norm();
+    const auto summary = search.search(objective, x, energy, g, d);
+    REQUIRE(summary.success);
+    CHECK(summary.step <= 0.8 * summary.max_feasible_step);
+    CHECK(objective.count_inverted(x + summary.step * d) == 0);
+    CHECK(summary.energy < energy);
+  }
+  CHECK(tested >= 15);
+}
+
+TEST_CASE("the line search reports failure for an ascent direction and keeps x") {
+  const akvf::TriMesh mesh = akvf::test::grid_disk(4, 4);
+  const auto objective = make_objective(mesh);
+  const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(mesh, 0.1, 3));
+  REQUIRE(objective.count_inverted(x) == 0);
+  Eigen::VectorXd g;
+  const double energy = objective.value_and_gradient(x, &g);
+  const auto summary = akvf::BacktrackingLineSearch().search(objective, x, energy, g, g);
+  CHECK_FALSE(summary.success);
+  CHECK(summary.step == 0);
+  CHECK(summary.energy == energy);
+  CHECK(summary.message.find("search direction is not a descent direction") == 0);
+}
+
+TEST_CASE("line search settings are validated") {
+  akvf::LineSearchSettings settings;
+  settings.rho = 1.5;
+  std::string error;
+  CHECK_FALSE(settings.is_valid(&error));
+  CHECK(error == "line search rho must be in (0, 1)");
+  CHECK(akvf::test::error_message([&] { akvf::BacktrackingLineSearch bad(settings); }) ==
+        "line search rho must be in (0, 1)");
+}

@@ -1,0 +1,140 @@
+// OBJ and OFF readers: every corner form, and one test per malformed input
+// that checks the message names the file, the line and the problem.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "framework/mesh_io.h"
+#include "tests/test_support.h"
+
+using akvf::test::error_message;
+using akvf::test::parse_mesh;
+
+namespace {
+std::string obj_error(const std::string& text) {
+  return error_message([&] { parse_mesh(text, "bad.obj"); });
+}
+std::string off_error(const std::string& text) {
+  return error_message([&] { parse_mesh(text, "bad.off"); });
+}
+const std::string kSquareVertices = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+}  // namespace
+
+TEST_CASE("OBJ reads every face corner form and ignores vt and vn") {
+  const auto mesh = parse_mesh(kSquareVertices +
+                                   "vt 0 0\nvn 0 0 1\n# comment\ng group\nusemtl m\n"
+                                   "f 1 2/1 3//1\nf 1/1/1 -2/1 -1\n",
+                               "square.obj");
+  REQUIRE(mesh.num_vertices() == 4);
+  REQUIRE(mesh.num_faces() == 2);
+  CHECK(mesh.F.row(0) == Eigen::RowVector3i(0, 1, 2));
+  CHECK(mesh.F.row(1) == Eigen::RowVector3i(0, 2, 3));  // -2 and -1 relative to 4 vertices
+  CHECK(mesh.V(2, 0) == 1.0);
+}
+
+TEST_CASE("OBJ rejects faces with more than three corners") {
+  CHECK(obj_error(kSquareVertices + "f 1 2 3 4\n") ==
+        "line 5 of bad.obj: face has 4 corners; only triangles are supported (triangulate the mesh first)");
+}
+
+TEST_CASE("OBJ rejects faces with fewer than three corners") {
+  CHECK(obj_error(kSquareVertices + "f 1 2\n") ==
+        "line 5 of bad.obj: face has 2 corners; only triangles are supported (triangulate the mesh first)");
+}
+
+TEST_CASE("OBJ rejects an index out of range, naming its line") {
+  CHECK(obj_error(kSquareVertices + "f 1 2 3\nf 1 3 9\n") ==
+        "line 6 of bad.obj: face index 9 out of range (4 vertices)");
+}
+
+TEST_CASE("OBJ rejects index zero") {
+  CHECK(obj_error(kSquareVertices + "f 0 1 2\n") ==
+        "line 5 of bad.obj: face corner '0': OBJ indices start at 1, not 0");
+}
+
+TEST_CASE("OBJ rejects a relative index before the first vertex") {
+  CHECK(obj_error(kSquareVertices + "f -5 1 2\n") ==
+        "line 5 of bad.obj: relative face index -5 reaches before the first vertex (4 vertices so far)");
+}
+
+TEST_CASE("OBJ rejects a corner that is not a number") {
+  CHECK(obj_error(kSquareVertices + "f a 1 2\n") ==
+        "line 5 of bad.obj: face corner 'a' does not start with a vertex index");
+}
+
+TEST_CASE("OBJ rejects a bad or non-finite coordinate") {
+  CHECK(obj_error("v 0 0 0\nv 1 x 0\n") == "line 2 of bad.obj: vertex coordinate 'x' is not a finite number");
+  CHECK(obj_error("v 0 nan 0\n") == "line 1 of bad.obj: vertex coordinate 'nan' is not a finite number");
+  CHECK(obj_error("v 0 0 inf\n") == "line 1 of bad.obj: vertex coordinate 'inf' is not a finite number");
+  CHECK(obj_error("v 0 1e999 0\n") == "line 1 of bad.obj: vertex coordinate '1e999' is not a finite number");
+}
+
+TEST_CASE("OBJ rejects a vertex with too few coordinates") {
+  CHECK(obj_error("v 0 0\n") == "line 1 of bad.obj: vertex needs three coordinates, found 2");
+}
+
+TEST_CASE("OBJ without faces or vertices is an error") {
+  CHECK(obj_error(kSquareVertices) == "bad.obj: no faces");
+  CHECK(obj_error("# nothing\n") == "bad.obj: no vertices");
+}
+
+TEST_CASE("OFF reads header, counts, comments and faces") {
+  const auto mesh = parse_mesh("OFF\n# comment\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n", "sq.off");
+  CHECK(mesh.num_vertices() == 4);
+  CHECK(mesh.num_faces() == 2);
+  const auto inline_counts = parse_mesh("OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "tri.off");
+  CHECK(inline_counts.num_faces() == 1);
+}
+
+TEST_CASE("OFF rejects a wrong header") {
+  CHECK(off_error("PLY\n3 1 0\n") == "line 1 of bad.off: expected an 'OFF' header, found 'PLY'");
+  CHECK(off_error("") == "bad.off: empty file (expected an 'OFF' header)");
+}
+
+TEST_CASE("OFF rejects bad counts") {
+  CHECK(off_error("OFF\nthree 1 0\n") == "line 2 of bad.off: vertex count 'three' is not an integer");
+  CHECK(off_error("OFF\n-3 1 0\n") == "line 2 of bad.off: vertex count must be positive, found -3");
+  CHECK(off_error("OFF\n3 0 0\n") == "line 2 of bad.off: face count must be positive, found 0");
+}
+
+TEST_CASE("OFF that declares more rows than it has fails fast without allocating them") {
+  CHECK(off_error("OFF\n1000000000000 1 0\n0 0 0\n") ==
+        "line 2 of bad.off: counts 1000000000000 vertices, 1 faces are too large");
+  CHECK(off_error("OFF\n2000000 1 0\n0 0 0\n") == "line 3 of bad.off: file ends after 1 of 2000000 vertices");
+  CHECK(off_error("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
+        "line 6 of bad.off: file ends after 1 of 2 faces");
+}
+
+TEST_CASE("OFF rejects polygons, short faces and bad indices") {
+  const std::string head = "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+  CHECK(off_error(head + "4 0 1 2 3\n") ==
+        "line 7 of bad.off: face has 4 corners; only triangles are supported (triangulate the mesh first)");
+  CHECK(off_error(head + "3 0 1\n") == "line 7 of bad.off: face lists fewer than 3 vertex indices");
+  CHECK(off_error(head + "3 0 1 4\n") == "line 7 of bad.off: face index 4 out of range (4 vertices)");
+  CHECK(off_error(head + "3 0 -1 2\n") == "line 7 of bad.off: face index -1 out of range (4 vertices)");
+}
+
+TEST_CASE("reading a file checks the extension and that it exists") {
+  CHECK(error_message([] { akvf::read_triangle_mesh("mesh.ply"); }) ==
+        "mesh.ply: unsupported mesh format '.ply' (expected .obj or .off)");
+  CHECK(error_message([] { akvf::read_triangle_mesh("/nonexistent/cow.obj"); }) ==
+        "/nonexistent/cow.obj: cannot open: No such file or directory");
+}
+
+TEST_CASE("OBJ writer keeps vertices and faces and adds one vt per vertex") {
+  const auto mesh = parse_mesh(kSquareVertices + "f 1 2 3\nf 1 3 4\n", "square.obj");
+  Eigen::MatrixXd UV(4, 2);
+  UV << 0, 0, 2, 0, 2, 2, 0, 2;
+  const auto path = (std::filesystem::temp_directory_path() / "akvf_writer_test.obj").string();
+  akvf::write_obj_with_uv(path, mesh, UV);
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.find("vt 2 2\n") != std::string::npos);
+  CHECK(text.find("f 1/1 3/3 4/4\n") != std::string::npos);
+  std::istringstream again(text);
+  const auto reread = akvf::read_obj(again, path);
+  CHECK(reread.F == mesh.F);
+  CHECK(reread.V == mesh.V);
+  std::filesystem::remove(path);
+}

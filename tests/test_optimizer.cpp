@@ -1,0 +1,127 @@
+// The optimizer loop end to end on built-in meshes: known optima, statuses,
+// callbacks, determinism.
+#include <doctest/doctest.h>
+
+#include <tbb/global_control.h>
+
+#include "experiments/demo_mesh.h"
+#include "experiments/parameterization.h"
+#include "framework/error.h"
+#include "solvers/backtracking_line_search.h"
+#include "tests/test_support.h"
+
+using akvf::ParamConfig;
+using akvf::TerminationStatus;
+
+namespace {
+
+akvf::ParamRun run(const akvf::TriMesh& mesh, const ParamConfig& config,
+                   const std::vector<akvf::IterationCallback>& callbacks = {}) {
+  const auto setup = akvf::prepare_parameterization(mesh, "test", config);
+  return akvf::run_parameterization(setup, config, callbacks);
+}
+
+// Checks the invariant of every iterate: no inverted triangle.
+akvf::IterationCallback no_flips_allowed() {
+  return [](const akvf::IterationSummary& s, const Eigen::VectorXd&) {
+    CHECK(s.flips == 0);
+    return akvf::CallbackAction::kContinue;
+  };
+}
+
+class AscentPreconditioner final : public akvf::Preconditioner {
+ public:
+  std::string name() const override { return "ascent"; }
+  void update(const akvf::OptimizationState&) override {}
+  void apply(const Eigen::VectorXd& g, Eigen::VectorXd* r) override { *r = -g; }
+};
+
+}  // namespace
+
+TEST_CASE("symmetric Dirichlet reaches exactly 4 on a developable mesh") {
+  ParamConfig config;
+  config.optimizer.gradient_tolerance = 1e-7;
+  config.optimizer.max_iterations = 500;
+  const auto result = run(akvf::bent_bar(31, 6), config, {no_flips_allowed()}).result;
+  CHECK(result.status == TerminationStatus::kConverged);
+  CHECK(result.trace.back().energy - 4.0 <= 1e-8);
+  CHECK(result.trace.back().energy >= 4.0 - 1e-12);
+}
+
+TEST_CASE("the energy never increases and row 0 is the initial map") {
+  ParamConfig config;
+  config.optimizer.max_iterations = 30;
+  const auto result = run(akvf::test::bumpy_disk(12, 12), config, {no_flips_allowed()}).result;
+  REQUIRE(result.trace.size() >= 2);
+  CHECK(result.trace[0].iteration == 0);
+  CHECK(result.trace[0].step == 0);
+  for (std::size_t i = 1; i < result.trace.size(); ++i) {
+    CHECK(result.trace[i].energy <= result.trace[i - 1].energy);
+    CHECK(result.trace[i].seconds >= result.trace[i - 1].seconds);
+  }
+}
+
+TEST_CASE("identity preconditioning runs end to end and is far slower than AKVF") {
+  ParamConfig config;
+  config.optimizer.max_iterations = 40;
+  config.optimizer.gradient_tolerance = 0;
+  const auto akvf_run = run(akvf::bent_bar(31, 6), config).result;
+  config.preconditioner = "identity";
+  const auto identity_run = run(akvf::bent_bar(31, 6), config, {no_flips_allowed()}).result;
+  CHECK(identity_run.trace.back().energy < identity_run.trace.front().energy);
+  CHECK(identity_run.trace.back().energy - 4 > 100 * (akvf_run.trace.back().energy - 4));
+}
+
+TEST_CASE("a failed line search ends the run with a status and the last valid iterate") {
+  ParamConfig config;
+  const auto setup = akvf::prepare_parameterization(akvf::test::bumpy_disk(6, 6), "test", config);
+  AscentPreconditioner ascent;
+  const akvf::BacktrackingLineSearch search;
+  const auto result = akvf::minimize(*setup.objective, ascent, search, setup.x0, config.optimizer);
+  CHECK(result.status == TerminationStatus::kLineSearchFailed);
+  CHECK(result.message.find("line search failed at iteration 1: search direction is not a descent direction") == 0);
+  CHECK(result.x == setup.x0);
+  CHECK_FALSE(akvf::is_normal_termination(result.status));
+}
+
+TEST_CASE("callbacks can stop the run; iteration and time limits are statuses") {
+  ParamConfig config;
+  config.optimizer.gradient_tolerance = 0;
+  auto stop_at_3 = [](const akvf::IterationSummary& s, const Eigen::VectorXd&) {
+    return s.iteration == 3 ? akvf::CallbackAction::kStop : akvf::CallbackAction::kContinue;
+  };
+  const auto stopped = run(akvf::bent_bar(21, 5), config, {stop_at_3}).result;
+  CHECK(stopped.status == TerminationStatus::kUserStopped);
+  CHECK(stopped.trace.back().iteration == 3);
+
+  config.optimizer.max_iterations = 5;
+  CHECK(run(akvf::bent_bar(21, 5), config).result.status == TerminationStatus::kMaxIterations);
+  config.optimizer.max_iterations = 100000;
+  config.optimizer.time_limit = 1e-9;
+  CHECK(run(akvf::bent_bar(21, 5), config).result.status == TerminationStatus::kTimeLimit);
+}
+
+TEST_CASE("invalid options and unknown names are reported") {
+  ParamConfig config;
+  config.optimizer.max_iterations = -1;
+  CHECK(akvf::test::error_message([&] { run(akvf::bent_bar(), config); }) == "max iterations must be >= 0");
+  config = {};
+  config.preconditioner = "magic";
+  CHECK(akvf::test::error_message([&] { run(akvf::bent_bar(), config); }) ==
+        "unknown preconditioner 'magic' (valid: akvf, identity)");
+  config = {};
+  config.energy = "arap2";
+  CHECK(akvf::test::error_message([&] { run(akvf::bent_bar(), config); }).find("unknown energy 'arap2' (valid: ") == 0);
+}
+
+TEST_CASE("runs are bitwise deterministic for 1 and 2 threads") {
+  ParamConfig config;
+  config.optimizer.max_iterations = 15;
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(20, 20);
+  std::vector<Eigen::VectorXd> results;
+  for (int threads : {1, 1, 2, 2}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    results.push_back(run(mesh, config).result.x);
+  }
+  for (const auto& x : results) CHECK(x == results.front());
+}

@@ -1,0 +1,36 @@
+#pragma once
+// Small meshes and helpers shared by the tests.
+#include <Eigen/Core>
+#include <functional>
+#include <random>
+#include <string>
+
+#include "framework/mesh.h"
+
+namespace akvf::test {
+
+// An nx by ny grid of the unit square (a disk), z = 0, optionally with the
+// interior vertices jittered by up to `jitter` of the spacing.
+TriMesh grid_disk(int nx, int ny, double jitter = 0, unsigned seed = 1);
+
+// The grid lifted onto a bumpy height field (not developable).
+TriMesh bumpy_disk(int nx, int ny);
+
+// A planar UV map of grid_disk's connectivity: the grid with random interior
+// jitter, never inverted for jitter < 0.3.
+Eigen::MatrixXd jittered_uv(const TriMesh& mesh, double jitter, unsigned seed);
+
+// Parse a mesh from text as if it were a file of the given name.
+TriMesh parse_mesh(const std::string& text, const std::string& name);
+
+// The folder of real meshes ($AKVF_DATA_DIR or ../shared/meshes beside the
+// source tree), or "" when it is absent.
+std::string data_dir();
+
+// The what() of the akvf::Error that f throws, or "" if it throws nothing.
+std::string error_message(const std::function<void()>& f);
+
+// Prints "SKIPPED: reason" (ctest marks the test skipped on that text).
+void skip(const std::string& reason);
+
+}  // namespace akvf::test

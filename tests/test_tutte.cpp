@@ -1,0 +1,62 @@
+// Initial maps: Tutte embedding and the flap optimization of §5.4.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "framework/initialization.h"
+#include "framework/mesh_validation.h"
+#include "framework/param_objective.h"
+#include "tests/test_support.h"
+
+TEST_CASE("Tutte maps a disk without inverted triangles onto a circle of the mesh's area") {
+  for (auto weights : {akvf::TutteWeights::kUniform, akvf::TutteWeights::kCotangent}) {
+    const akvf::TriMesh mesh = akvf::test::bumpy_disk(9, 7);
+    const auto disk = akvf::prepare_disk_mesh(mesh, "bumpy");
+    akvf::Warnings warnings;
+    const Eigen::MatrixXd UV = akvf::tutte_embedding(mesh, disk.boundary_loop, weights, &warnings);
+    CHECK(akvf::count_inverted_triangles(mesh.F, UV) == 0);
+    double area = 0;
+    for (int f = 0; f < mesh.num_faces(); ++f)
+      area += 0.5 * (Eigen::Vector3d(mesh.V.row(mesh.F(f, 1)) - mesh.V.row(mesh.F(f, 0))))
+                        .cross(Eigen::Vector3d(mesh.V.row(mesh.F(f, 2)) - mesh.V.row(mesh.F(f, 0))))
+                        .norm();
+    const double radius = std::sqrt(area / std::numbers::pi);
+    for (int v : disk.boundary_loop) CHECK(UV.row(v).norm() == doctest::Approx(radius).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("cotangent Tutte falls back to uniform weights when it would fold") {
+  // Obtuse triangles give negative cotangent weights; a needle fan folds.
+  akvf::TriMesh mesh = akvf::test::grid_disk(6, 6, 0.45, 3);
+  mesh.V.col(0) *= 40;  // very anisotropic cells: many obtuse angles
+  const auto disk = akvf::prepare_disk_mesh(mesh, "stretched");
+  akvf::Warnings warnings;
+  const Eigen::MatrixXd UV = akvf::tutte_embedding(mesh, disk.boundary_loop, akvf::TutteWeights::kCotangent, &warnings);
+  CHECK(akvf::count_inverted_triangles(mesh.F, UV) == 0);
+  if (!warnings.empty()) CHECK(warnings[0].find("using uniform weights instead") != std::string::npos);
+}
+
+TEST_CASE("flap optimization makes a flap triangle isometric to its 3D shape") {
+  // A strip of two triangles where vertex 3 lies in one triangle only.
+  akvf::TriMesh mesh;
+  mesh.V.resize(4, 3);
+  mesh.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 1.2, 0.9, 0.4;
+  mesh.F.resize(2, 3);
+  mesh.F << 0, 1, 2, 1, 3, 2;
+  Eigen::MatrixXd UV(4, 2);
+  UV << 0, 0, 1, 0, 0, 1, 0.3, 0.3;  // vertex 3 badly placed (even inverted)
+  CHECK(akvf::optimize_flaps(mesh, &UV) == 2);  // vertices 0 and 3 are flaps
+  const auto rest = akvf::rest_triangles(mesh);
+  // Face 1 = (1, 3, 2): its Jacobian is a rotation after the move.
+  Eigen::Matrix2d Ds;
+  Ds << (UV.row(3) - UV.row(1)).transpose(), (UV.row(2) - UV.row(1)).transpose();
+  const Eigen::Matrix2d J = Ds * rest.Dm_inv[1];
+  CHECK((J.transpose() * J - Eigen::Matrix2d::Identity()).norm() <= 1e-12);
+  CHECK(J.determinant() > 0);
+}
+
+TEST_CASE("unknown initial map names list the valid ones") {
+  CHECK(akvf::test::error_message([] { akvf::parse_tutte_weights("harmonic"); }) ==
+        "unknown initialization 'harmonic' (valid: tutte, cotan)");
+}

@@ -1,0 +1,151 @@
+// Disk-mesh validation: one test per way a mesh can be unfit, each checking
+// its message.
+#include <doctest/doctest.h>
+
+#include <limits>
+
+#include "framework/mesh_validation.h"
+#include "tests/test_support.h"
+
+using akvf::TriMesh;
+using akvf::test::error_message;
+
+namespace {
+
+std::string validation_error(const TriMesh& mesh) {
+  return error_message([&] { akvf::prepare_disk_mesh(mesh, "m.obj"); });
+}
+
+// A closed tetrahedron surface.
+TriMesh tetrahedron() {
+  TriMesh m;
+  m.V.resize(4, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  m.F.resize(4, 3);
+  m.F << 0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2;
+  return m;
+}
+
+// A square annulus: a 4x4 grid without its centre cell (two boundary loops).
+TriMesh annulus() {
+  TriMesh grid = akvf::test::grid_disk(4, 4);
+  TriMesh m;
+  m.V = grid.V;
+  m.F.resize(grid.num_faces() - 2, 3);
+  for (int f = 0, g = 0; f < grid.num_faces(); ++f)
+    if (f / 2 != 4) m.F.row(g++) = grid.F.row(f);  // cell (1, 1) of 3x3 cells
+  return m;
+}
+
+// A torus grid with one face removed: one boundary loop but a handle.
+TriMesh punctured_torus(int n = 6) {
+  TriMesh m;
+  m.V.resize(n * n, 3);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / n;
+      m.V.row(j * n + i) << (2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v);
+    }
+  m.F.resize(2 * n * n - 1, 3);
+  int f = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * n + i, b = j * n + (i + 1) % n, c = ((j + 1) % n) * n + i, d = ((j + 1) % n) * n + (i + 1) % n;
+      m.F.row(f++) << a, b, d;
+      if (f < m.F.rows()) m.F.row(f++) << a, d, c;
+    }
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("a grid is a valid disk with its boundary loop") {
+  const auto disk = akvf::prepare_disk_mesh(akvf::test::grid_disk(5, 4), "grid.obj");
+  CHECK(disk.boundary_loop.size() == 14);
+  CHECK(disk.warnings.empty());
+}
+
+TEST_CASE("a closed mesh must be cut first") {
+  CHECK(validation_error(tetrahedron()) == "m.obj: mesh is closed (no boundary loop); it must be cut to a disk first");
+}
+
+TEST_CASE("several boundary loops must be cut first") {
+  CHECK(validation_error(annulus()) ==
+        "m.obj: mesh has 2 boundary loops (a disk has exactly one); it must be cut to a disk first");
+}
+
+TEST_CASE("a handle is reported by the Euler characteristic") {
+  CHECK(validation_error(punctured_torus()) ==
+        "m.obj: Euler characteristic is -1 (a disk has 1): the mesh has handles; it must be cut to a disk first");
+}
+
+TEST_CASE("two components are rejected") {
+  TriMesh a = akvf::test::grid_disk(3, 3), two;
+  two.V.resize(2 * a.num_vertices(), 3);
+  two.V << a.V, a.V.rowwise() + Eigen::RowVector3d(5, 0, 0);
+  two.F.resize(2 * a.num_faces(), 3);
+  two.F << a.F, a.F.array() + a.num_vertices();
+  CHECK(validation_error(two) ==
+        "m.obj: mesh has 2 connected components; parameterize one disk-shaped component at a time");
+}
+
+TEST_CASE("an edge shared by three faces is non-manifold") {
+  TriMesh m = akvf::test::grid_disk(3, 3);
+  m.V.conservativeResize(m.num_vertices() + 1, 3);
+  m.V.row(m.num_vertices() - 1) << 0.5, 0.5, 1;
+  m.F.conservativeResize(m.num_faces() + 1, 3);
+  m.F.row(m.num_faces() - 1) << 0, 4, m.num_vertices() - 1;  // edge (0, 4) is a diagonal of two faces
+  CHECK(validation_error(m) == "m.obj: edge (0, 4) is shared by 3 faces; the mesh must be edge-manifold");
+}
+
+TEST_CASE("inconsistent orientation is rejected") {
+  TriMesh m = akvf::test::grid_disk(3, 3);
+  m.F.row(1) = Eigen::RowVector3i(m.F(1, 0), m.F(1, 2), m.F(1, 1));
+  CHECK(validation_error(m) ==
+        "m.obj: faces 0 and 1 traverse edge (0, 4) in the same direction; faces must be consistently oriented");
+}
+
+TEST_CASE("two fans meeting at a vertex are non-manifold") {
+  // Two triangles touching at vertex 0 only.
+  TriMesh m;
+  m.V.resize(5, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, -1, -1, 0;
+  m.F.resize(2, 3);
+  m.F << 0, 1, 2, 0, 3, 4;
+  // They form one component only through vertex 0.
+  CHECK(validation_error(m) == "m.obj: vertex 0 is non-manifold: two separate boundary fans meet there");
+}
+
+TEST_CASE("a zero-area face is rejected with its vertices") {
+  TriMesh m = akvf::test::grid_disk(3, 3);
+  m.V.row(4) = 0.5 * (m.V.row(0) + m.V.row(8));  // face 0 = (0, 1, 4)? make a collinear triple
+  m.F.row(0) << 0, 4, 8;
+  CHECK(validation_error(m).find("m.obj: face 0 (vertices 0, 4, 8) has zero area") == 0);
+}
+
+TEST_CASE("non-finite coordinates are rejected") {
+  TriMesh m = akvf::test::grid_disk(3, 3);
+  m.V(3, 1) = std::numeric_limits<double>::quiet_NaN();
+  CHECK(validation_error(m) == "m.obj: vertex 3 has a non-finite coordinate");
+}
+
+TEST_CASE("a face that repeats a vertex is rejected") {
+  TriMesh m = akvf::test::grid_disk(3, 3);
+  m.F.row(2) << 1, 1, 5;
+  CHECK(validation_error(m) == "m.obj: face 2 uses the same vertex twice (1, 1, 5)");
+}
+
+TEST_CASE("unreferenced vertices are dropped with a warning and mapped back") {
+  TriMesh m = akvf::test::grid_disk(3, 3);
+  TriMesh padded;
+  padded.V.resize(m.num_vertices() + 2, 3);
+  padded.V << Eigen::RowVector3d(9, 9, 9), m.V, Eigen::RowVector3d(7, 7, 7);
+  padded.F = m.F.array() + 1;
+  const auto disk = akvf::prepare_disk_mesh(padded, "p.obj");
+  CHECK(disk.mesh.num_vertices() == 9);
+  CHECK(disk.num_input_vertices == 11);
+  CHECK(disk.input_vertex.front() == 1);
+  CHECK(disk.input_vertex.back() == 9);
+  REQUIRE(disk.warnings.size() == 1);
+  CHECK(disk.warnings[0] == "p.obj: dropped 2 unreferenced vertices (first: 0); they get UV (0, 0) in the output");
+}
