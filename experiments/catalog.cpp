@@ -1,7 +1,6 @@
 #include "experiments/catalog.h"
 
 #include "energies/symmetric_dirichlet.h"
-#include "preconditioners/akvf_preconditioner.h"
 #include "preconditioners/identity_preconditioner.h"
 #include "solvers/backtracking_line_search.h"
 
@@ -21,9 +20,11 @@ const PreconditionerRegistry& preconditioners_2d() {
   static const PreconditionerRegistry registry = [] {
     PreconditionerRegistry r("preconditioner");
     r.add("akvf", "Killing operator K(x) of Eq. (5), area-scaled, CHOLMOD (the paper's method)",
-          [](const ParamObjective& objective) { return std::make_unique<AkvfPreconditioner2D>(objective); });
+          [](const ParamObjective& objective, const PreconditionerSettings& settings) {
+            return std::make_unique<AkvfPreconditioner2D>(objective, settings.akvf);
+          });
     r.add("identity", "no preconditioning: plain gradient descent",
-          [](const ParamObjective&) { return std::make_unique<IdentityPreconditioner>(); });
+          [](const ParamObjective&, const PreconditionerSettings&) { return std::make_unique<IdentityPreconditioner>(); });
     return r;
   }();
   return registry;

@@ -9,11 +9,17 @@
 #include "framework/param_objective.h"
 #include "framework/preconditioner.h"
 #include "framework/registry.h"
+#include "preconditioners/akvf_preconditioner.h"
 
 namespace akvf {
 
 using DensityRegistry = Registry<DistortionDensity2>;
-using PreconditionerRegistry = Registry<Preconditioner, const ParamObjective&>;
+// Options of the preconditioners that have them, set from the command line.
+struct PreconditionerSettings {
+  AkvfOptions akvf;
+};
+
+using PreconditionerRegistry = Registry<Preconditioner, const ParamObjective&, const PreconditionerSettings&>;
 using LineSearchRegistry = Registry<LineSearch, const LineSearchSettings&>;
 
 const DensityRegistry& energies_2d();

@@ -27,13 +27,15 @@ std::vector<OptionSpec> optimization_options() {
       {"energy", "NAME", "distortion energy (default symmetric-dirichlet; see `akvf list`)"},
       {"precond", "NAME", "preconditioner: akvf (default) or identity"},
       {"line-search", "NAME", "line search (default backtracking)"},
+      {"akvf-reuse", "TAU", "AKVF: reuse the last factorization through CG to relative residual TAU\n"
+       "                          (default 0.03; 0 = factor K every iteration, as in Algorithm 1)"},
       {"ls-rho", "X", "backtracking shrink factor (default 0.5; the paper's text says 0.9)"},
       {"init", "NAME", "initial map: tutte (uniform weights, default) or cotan"},
       {"flaps", "on|off", "flap optimization of Sec. 5.4 after the Tutte map (default on)"},
       {"grad-tol", "X", "stop when the gradient norm drops below X (default 1e-3)"},
       {"max-iters", "N", "stop after N iterations (default 1000)"},
       {"time-limit", "SECONDS", "stop after this much optimizer time (default none)"},
-      {"threads", "N", "worker threads for assembly and factorization (default: all cores)"},
+      {"threads", "N", "worker threads for the parallel assembly (default: all cores)"},
       {"quiet", "", "no per-iteration progress on stderr"},
       {"help", "", "show this help"},
   };
@@ -45,6 +47,10 @@ ParamConfig config_from(const CommandLine& cl) {
   config.energy = cl.text("energy", config.energy);
   config.preconditioner = cl.text("precond", config.preconditioner);
   config.line_search = cl.text("line-search", config.line_search);
+  config.preconditioner_settings.akvf.reuse_tolerance =
+      cl.real("akvf-reuse", config.preconditioner_settings.akvf.reuse_tolerance);
+  const double tau = config.preconditioner_settings.akvf.reuse_tolerance;
+  if (!(tau >= 0 && tau < 1)) throw OptionsError("option --akvf-reuse must be in [0, 1)");
   config.line_search_settings.rho = cl.real("ls-rho", config.line_search_settings.rho);
   if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
   config.init = parse_tutte_weights(cl.text("init", "tutte"));
@@ -97,6 +103,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const ParamConf
                 to_string(result.status).c_str(), last.iteration, last.seconds, last.energy, last.grad_norm,
                 last.flips);
   out << summary;
+  if (!run.preconditioner_report.empty()) out << run.preconditioner_name << ": " << run.preconditioner_report << '\n';
   if (!is_normal_termination(result.status)) err << "error: " << result.message << '\n';
 
   const Eigen::MatrixXd UV = output_uv(setup, result.x);

@@ -32,11 +32,13 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
 
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks) {
-  auto preconditioner = preconditioners_2d().create(config.preconditioner, *setup.objective);
+  auto preconditioner =
+      preconditioners_2d().create(config.preconditioner, *setup.objective, config.preconditioner_settings);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
   ParamRun run;
   run.preconditioner_name = preconditioner->name();
   run.result = minimize(*setup.objective, *preconditioner, *line_search, setup.x0, config.optimizer, callbacks);
+  run.preconditioner_report = preconditioner->report();
   return run;
 }
 

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "experiments/catalog.h"
 #include "framework/initialization.h"
 #include "framework/mesh.h"
 #include "framework/mesh_validation.h"
@@ -18,6 +19,7 @@ struct ParamConfig {
   std::string preconditioner = "akvf";
   std::string line_search = "backtracking";
   LineSearchSettings line_search_settings;
+  PreconditionerSettings preconditioner_settings;
   TutteWeights init = TutteWeights::kUniform;
   // §5.4 flap optimization after the Tutte map (see docs/performance.md for
   // the measurement behind the default).
@@ -41,6 +43,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
 struct ParamRun {
   OptimizerResult result;
   std::string preconditioner_name;
+  std::string preconditioner_report;
 };
 
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,

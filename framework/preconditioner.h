@@ -21,6 +21,8 @@ class Preconditioner {
   virtual void update(const OptimizationState& state) = 0;
   // result = P^-1 gradient (the optimizer searches along its negative).
   virtual void apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) = 0;
+  // A line for reports on the work done so far ("12 factorizations"), or "".
+  virtual std::string report() const { return ""; }
 };
 
 }  // namespace akvf

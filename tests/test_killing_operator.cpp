@@ -145,3 +145,28 @@ TEST_CASE("the AKVF direction is K^+ grad E, a descent direction free of rigid m
   CHECK(g.dot(d) > 0);  // -d is a descent direction
   CHECK((akvf::rigid_motion_basis_2d(x).transpose() * d).norm() <= 1e-12 * d.norm());
 }
+
+TEST_CASE("with factorization reuse the direction solves K(x) d = g to the tolerance") {
+  akvf::TriMesh normalized = akvf::test::bumpy_disk(8, 8);
+  akvf::normalize_to_unit_area(&normalized);
+  const akvf::ParamObjective objective(normalized.F, akvf::rest_triangles(normalized),
+                                       std::make_shared<akvf::SymmetricDirichlet2>(), normalized.num_vertices());
+  const Eigen::VectorXd x1 = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 4) * 0.9);
+  const Eigen::VectorXd x2 = x1 + 1e-3 * akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 5));
+  akvf::AkvfOptions options;
+  options.reuse_tolerance = 0.01;
+  akvf::AkvfPreconditioner2D preconditioner(objective, options);
+  Eigen::VectorXd g, d;
+  objective.value_and_gradient(x1, &g);
+  preconditioner.update({x1, g, 0.0, 1});
+  preconditioner.apply(g, &d);
+  objective.value_and_gradient(x2, &g);
+  preconditioner.update({x2, g, 0.0, 2});
+  preconditioner.apply(g, &d);
+  CHECK(preconditioner.statistics().factorizations == 1);
+  CHECK(preconditioner.statistics().reused_solves == 1);
+  const Eigen::MatrixXd K = dense_killing(objective.faces(), x2, objective.rest().area, true);
+  CHECK((K * d - g).norm() <= 0.011 * g.norm());
+  CHECK(g.dot(d) > 0);
+  CHECK((akvf::rigid_motion_basis_2d(x2).transpose() * d).norm() <= 1e-10 * d.norm());
+}
