@@ -1,7 +1,8 @@
 // Google Benchmark micro-benchmarks of one AKVF iteration's parts on the
 // paper's meshes (read from $AKVF_DATA_DIR or ../shared/meshes):
-//   K assembly (Eq. 5), energy + gradient, numeric factorization, one whole
-//   iteration (update, solve, flip-free line search, gradient).
+//   K assembly (Eq. 5), energy + gradient, numeric factorization, solve, one
+//   whole iteration with a factorization (update, solve, flip-free line
+//   search, gradient).
 // Run: ./build/akvf_benchmarks [--benchmark_filter=horse]
 #include <benchmark/benchmark.h>
 
@@ -107,7 +108,9 @@ void BM_Solve(benchmark::State& state, const std::string& mesh) {
 void BM_WholeIteration(benchmark::State& state, const std::string& mesh) {
   REQUIRE_FIXTURE(state, mesh);
   const akvf::ParamObjective& objective = *f->setup.objective;
-  akvf::AkvfPreconditioner2D preconditioner(objective);
+  akvf::AkvfOptions options;
+  options.reuse_tolerance = 0;  // Algorithm 1: a numeric factorization every iteration
+  akvf::AkvfPreconditioner2D preconditioner(objective, options);
   const akvf::BacktrackingLineSearch line_search;  // default settings
   Eigen::VectorXd g, d;
   for (auto _ : state) {

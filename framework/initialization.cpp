@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "framework/error.h"
+#include "framework/rest_geometry.h"
 
 namespace akvf {
 
@@ -37,12 +38,7 @@ Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, T
   std::vector<double> arc(loop.size() + 1, 0.0);
   for (std::size_t i = 0; i < loop.size(); ++i)
     arc[i + 1] = arc[i] + (mesh.V.row(loop[(i + 1) % loop.size()]) - mesh.V.row(loop[i])).norm();
-  double area = 0;
-  for (int f = 0; f < mesh.num_faces(); ++f)
-    area += 0.5 * (Eigen::Vector3d(mesh.V.row(mesh.F(f, 1)) - mesh.V.row(mesh.F(f, 0))))
-                      .cross(Eigen::Vector3d(mesh.V.row(mesh.F(f, 2)) - mesh.V.row(mesh.F(f, 0))))
-                      .norm();
-  const double radius = std::sqrt(area / std::numbers::pi);
+  const double radius = std::sqrt(surface_area(mesh) / std::numbers::pi);
   std::vector<int> interior_index(n, 0);
   for (std::size_t i = 0; i < loop.size(); ++i) {
     const double angle = 2 * std::numbers::pi * arc[i] / arc.back();

@@ -25,16 +25,7 @@ RestTriangles rest_triangles(const TriMesh& mesh) {
   return rest;
 }
 
-double surface_area(const TriMesh& mesh) {
-  double area = 0;
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    const Eigen::Vector3d p0 = mesh.V.row(mesh.F(f, 0));
-    area += 0.5 * (Eigen::Vector3d(mesh.V.row(mesh.F(f, 1))) - p0)
-                      .cross(Eigen::Vector3d(mesh.V.row(mesh.F(f, 2))) - p0)
-                      .norm();
-  }
-  return area;
-}
+double surface_area(const TriMesh& mesh) { return rest_triangles(mesh).total_area; }
 
 Normalization normalize_to_unit_area(TriMesh* mesh) {
   Normalization n;
