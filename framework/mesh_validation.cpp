@@ -92,12 +92,13 @@ DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name) {
     throw ValidationError(name + ": mesh has " + std::to_string(components) +
                           " connected components; parameterize one disk-shaped component at a time");
 
-  std::vector<std::vector<int>> loops;
-  try {
-    loops = boundary_loops(topology, m.num_vertices());
-  } catch (const ValidationError& e) {
-    throw ValidationError(name + ": " + e.what());
-  }
+  // A vertex where two boundary fans meet starts two boundary half-edges.
+  std::vector<char> starts_boundary(m.num_vertices(), 0);
+  for (const auto& [a, b] : topology.boundary_half_edges)
+    if (starts_boundary[a]++)
+      throw ValidationError(name + ": vertex " + at_input(a) +
+                            " is non-manifold: two separate boundary fans meet there");
+  const std::vector<std::vector<int>> loops = boundary_loops(topology, m.num_vertices());
   if (loops.empty())
     throw ValidationError(name + ": mesh is closed (no boundary loop); it must be cut to a disk first");
   if (loops.size() > 1)

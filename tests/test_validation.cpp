@@ -114,6 +114,13 @@ TEST_CASE("two fans meeting at a vertex are non-manifold") {
   m.F << 0, 1, 2, 0, 3, 4;
   // They form one component only through vertex 0.
   CHECK(validation_error(m) == "m.obj: vertex 0 is non-manifold: two separate boundary fans meet there");
+  // Messages use the input's numbering even when unreferenced vertices are dropped.
+  TriMesh padded = m;
+  padded.V.conservativeResize(6, 3);
+  padded.V.bottomRows(5) = m.V;
+  padded.V.row(0) << 9, 9, 9;
+  padded.F = m.F.array() + 1;
+  CHECK(validation_error(padded) == "m.obj: vertex 1 is non-manifold: two separate boundary fans meet there");
 }
 
 TEST_CASE("a zero-area face is rejected with its vertices") {
