@@ -1,5 +1,6 @@
 #include "experiments/catalog.h"
 
+#include "energies/distortion_energies.h"
 #include "energies/symmetric_dirichlet.h"
 #include "preconditioners/identity_preconditioner.h"
 #include "solvers/backtracking_line_search.h"
@@ -10,7 +11,15 @@ const DensityRegistry& energies_2d() {
   static const DensityRegistry registry = [] {
     DensityRegistry r("energy");
     r.add("symmetric-dirichlet", "|J|^2 + |J^-1|^2, Eq. (2); lower bound 4",
-          [] { return std::make_unique<SymmetricDirichlet2>(); });
+          [](const EnergySettings&) { return std::make_unique<SymmetricDirichlet2>(); });
+    r.add("arap", "|J - R(J)|^2, R the closest rotation; lower bound 0",
+          [](const EnergySettings&) { return std::make_unique<Arap2>(); });
+    r.add("mips", "conformal |J|^2 / det J; lower bound 2",
+          [](const EnergySettings&) { return std::make_unique<Mips2>(); });
+    r.add("exp-symmetric-dirichlet", "exp(k (|J|^2 + |J^-1|^2)), k = --exponent; lower bound exp(4k)",
+          [](const EnergySettings& e) { return std::make_unique<ExpSymmetricDirichlet2>(e.exponent); });
+    r.add("amips", "exp(k (|J|^2 / (4 det J) + (det J + 1/det J) / 4)), k = --exponent; lower bound exp(k)",
+          [](const EnergySettings& e) { return std::make_unique<Amips2>(e.exponent); });
     return r;
   }();
   return registry;

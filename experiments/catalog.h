@@ -13,7 +13,12 @@
 
 namespace akvf {
 
-using DensityRegistry = Registry<DistortionDensity2>;
+// Options of the energies that have them.
+struct EnergySettings {
+  double exponent = 1.0;  // k of the exponential energies
+};
+
+using DensityRegistry = Registry<DistortionDensity2, const EnergySettings&>;
 // Options of the preconditioners that have them, set from the command line.
 struct PreconditionerSettings {
   AkvfOptions akvf;

@@ -25,6 +25,7 @@ struct Outputs {
 std::vector<OptionSpec> optimization_options() {
   return {
       {"energy", "NAME", "distortion energy (default symmetric-dirichlet; see `akvf list`)"},
+      {"exponent", "K", "exponent of exp-symmetric-dirichlet and amips (default 1)"},
       {"precond", "NAME", "preconditioner: akvf (default) or identity"},
       {"line-search", "NAME", "line search (default backtracking)"},
       {"akvf-reuse", "TAU", "AKVF: reuse the last factorization through CG to relative residual TAU\n"
@@ -45,6 +46,8 @@ ParamConfig config_from(const CommandLine& cl) {
   ParamConfig config;
   std::string invalid;
   config.energy = cl.text("energy", config.energy);
+  config.energy_settings.exponent = cl.real("exponent", config.energy_settings.exponent);
+  if (!(config.energy_settings.exponent > 0)) throw OptionsError("option --exponent must be > 0");
   config.preconditioner = cl.text("precond", config.preconditioner);
   config.line_search = cl.text("line-search", config.line_search);
   config.preconditioner_settings.akvf.reuse_tolerance =

@@ -12,7 +12,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   if (!config.optimizer.is_valid(&invalid)) throw OptionsError(invalid);
   if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
   // Resolve names first so a typo fails before any work.
-  std::shared_ptr<const DistortionDensity2> density = energies_2d().create(config.energy);
+  std::shared_ptr<const DistortionDensity2> density = energies_2d().create(config.energy, config.energy_settings);
   preconditioners_2d().require(config.preconditioner);
   line_searches().require(config.line_search);
 

@@ -3,8 +3,10 @@
 #include <doctest/doctest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <limits>
 
+#include "energies/distortion_energies.h"
 #include "energies/symmetric_dirichlet.h"
 #include "tests/density_checks.h"
 
@@ -38,4 +40,55 @@ TEST_CASE("symmetric Dirichlet is infinite for inverted or degenerate J") {
   CHECK(density.value(Eigen::Matrix2d::Zero()) == std::numeric_limits<double>::infinity());
   Eigen::Matrix2d grad;
   CHECK(density.value_and_gradient(reflection, &grad) == std::numeric_limits<double>::infinity());
+}
+
+TEST_CASE("every energy's derivatives match finite differences, including near-degenerate J") {
+  const akvf::Arap2 arap;
+  const akvf::Mips2 mips;
+  const akvf::ExpSymmetricDirichlet2 exp_sd(0.5);
+  const akvf::Amips2 amips(2.0);
+  for (const akvf::DistortionDensity2* density :
+       std::initializer_list<const akvf::DistortionDensity2*>{&arap, &mips, &exp_sd, &amips}) {
+    CAPTURE(density->name());
+    akvf::test::check_density_derivatives<2>(*density, 0.5, 2.0);
+    if (density != &exp_sd) akvf::test::check_density_derivatives<2>(*density, 0.1, 10.0, 30, 5);
+  }
+}
+
+TEST_CASE("every energy attains its lower bound at rotations and is infinite when inverted") {
+  const akvf::Arap2 arap;
+  const akvf::Mips2 mips;
+  const akvf::ExpSymmetricDirichlet2 exp_sd(0.5);
+  const akvf::Amips2 amips(2.0);
+  const Eigen::Matrix2d R = Eigen::Rotation2Dd(0.7).toRotationMatrix();
+  Eigen::Matrix2d reflection;
+  reflection << 1, 0, 0, -1;
+  for (const akvf::DistortionDensity2* density :
+       std::initializer_list<const akvf::DistortionDensity2*>{&arap, &mips, &exp_sd, &amips}) {
+    CAPTURE(density->name());
+    CHECK(density->value(R) == doctest::Approx(density->lower_bound()).epsilon(1e-14));
+    CHECK(density->value(R * Eigen::Vector2d(1.3, 0.9).asDiagonal()) > density->lower_bound());
+    CHECK(density->value(reflection) == std::numeric_limits<double>::infinity());
+  }
+  CHECK(exp_sd.lower_bound() == doctest::Approx(std::exp(2.0)));
+  CHECK(amips.lower_bound() == doctest::Approx(std::exp(2.0)));
+}
+
+TEST_CASE("the singular-value gradient is the derivative of D along the singular values") {
+  const akvf::Arap2 arap;
+  const akvf::SymmetricDirichlet2 sd;
+  for (const akvf::InvariantDensity2* density : std::initializer_list<const akvf::InvariantDensity2*>{&arap, &sd}) {
+    const Eigen::Vector2d sigma(1.7, 0.6);
+    const Eigen::Vector2d grad = density->singular_value_gradient(sigma);
+    const double h = 1e-6;
+    for (int i = 0; i < 2; ++i) {
+      Eigen::Vector2d plus = sigma, minus = sigma;
+      plus[i] += h;
+      minus[i] -= h;
+      const double fd =
+          (density->value(plus.asDiagonal().toDenseMatrix()) - density->value(minus.asDiagonal().toDenseMatrix())) /
+          (2 * h);
+      CHECK(grad[i] == doctest::Approx(fd).epsilon(1e-6));
+    }
+  }
 }

@@ -1,0 +1,35 @@
+#pragma once
+// Rotation-invariant 2D densities written as functions of the two invariants
+//   s = |J|_F^2 = sigma_1^2 + sigma_2^2   and   g = det J = sigma_1 sigma_2,
+// D(J) = f(s, g). One chain rule serves them all:
+//   dD/dvec(J)   = f_s 2 j + f_g c
+//   d2D/dvec(J)2 = 2 f_s I + f_g H_det + [2j c] [[f_ss f_sg] [f_sg f_gg]] [2j c]^T
+// with j = vec(J), c = d det / dvec(J) (the cofactor) and H_det the constant
+// Hessian of det. +infinity when g <= 0 (inverted or degenerate elements).
+#include "framework/distortion_density.h"
+
+namespace akvf {
+
+// f and its first and second partial derivatives at (s, g).
+struct InvariantDerivatives {
+  double f = 0, f_s = 0, f_g = 0, f_ss = 0, f_sg = 0, f_gg = 0;
+};
+
+class InvariantDensity2 : public DistortionDensity2 {
+ public:
+  double value(const Matrix& J) const final;
+  double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const final;
+  Hessian hessian(const Matrix& J) const final;
+
+  // dD/dsigma_i at singular values (sigma_1, sigma_2) with sigma_1 sigma_2 > 0
+  // (what the SLIM proxy reweights with).
+  Eigen::Vector2d singular_value_gradient(const Eigen::Vector2d& sigma) const;
+
+ protected:
+  // f(s, g) alone (g > 0).
+  virtual double f(double s, double g) const = 0;
+  // f and its partials (g > 0).
+  virtual InvariantDerivatives derivatives(double s, double g) const = 0;
+};
+
+}  // namespace akvf
