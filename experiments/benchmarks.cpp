@@ -60,9 +60,10 @@ Fixture* fixture(const std::string& mesh) {
 
 void BM_KillingAssembly(benchmark::State& state, const std::string& mesh) {
   REQUIRE_FIXTURE(state, mesh);
-  akvf::KillingOperator2D K(f->setup.objective->faces(), f->setup.objective->num_vertices());
+  const akvf::ParamObjective& objective = *f->setup.objective;
+  akvf::ElementMatrix2D K(objective.faces(), objective.num_vertices());
   for (auto _ : state) {
-    K.assemble(f->x, f->setup.objective->rest().area, true);
+    akvf::assemble_killing_operator(objective.faces(), f->x, objective.rest().area, true, &K);
     benchmark::DoNotOptimize(K.upper().valuePtr());
   }
 }
@@ -80,8 +81,9 @@ void BM_Energy(benchmark::State& state, const std::string& mesh) {
 
 void BM_NumericFactorization(benchmark::State& state, const std::string& mesh) {
   REQUIRE_FIXTURE(state, mesh);
-  akvf::KillingOperator2D K(f->setup.objective->faces(), f->setup.objective->num_vertices());
-  K.assemble(f->x, f->setup.objective->rest().area, true);
+  const akvf::ParamObjective& objective = *f->setup.objective;
+  akvf::ElementMatrix2D K(objective.faces(), objective.num_vertices());
+  akvf::assemble_killing_operator(objective.faces(), f->x, objective.rest().area, true, &K);
   K.add_to_diagonal(1e-8 * K.mean_diagonal());
   akvf::SparseCholesky cholesky;
   cholesky.analyze(K.upper());
@@ -92,8 +94,9 @@ void BM_NumericFactorization(benchmark::State& state, const std::string& mesh) {
 
 void BM_Solve(benchmark::State& state, const std::string& mesh) {
   REQUIRE_FIXTURE(state, mesh);
-  akvf::KillingOperator2D K(f->setup.objective->faces(), f->setup.objective->num_vertices());
-  K.assemble(f->x, f->setup.objective->rest().area, true);
+  const akvf::ParamObjective& objective = *f->setup.objective;
+  akvf::ElementMatrix2D K(objective.faces(), objective.num_vertices());
+  akvf::assemble_killing_operator(objective.faces(), f->x, objective.rest().area, true, &K);
   K.add_to_diagonal(1e-8 * K.mean_diagonal());
   akvf::SparseCholesky cholesky;
   cholesky.factorize(K.upper());
@@ -109,7 +112,7 @@ void BM_WholeIteration(benchmark::State& state, const std::string& mesh) {
   REQUIRE_FIXTURE(state, mesh);
   const akvf::ParamObjective& objective = *f->setup.objective;
   akvf::AkvfOptions options;
-  options.reuse_tolerance = 0;  // Algorithm 1: a numeric factorization every iteration
+  options.factor.reuse_tolerance = 0;  // Algorithm 1: a numeric factorization every iteration
   akvf::AkvfPreconditioner2D preconditioner(objective, options);
   const akvf::BacktrackingLineSearch line_search;  // default settings
   Eigen::VectorXd g, d;

@@ -3,6 +3,8 @@
 #include "energies/distortion_energies.h"
 #include "energies/symmetric_dirichlet.h"
 #include "preconditioners/identity_preconditioner.h"
+#include "preconditioners/laplacian_preconditioner.h"
+#include "preconditioners/newton_preconditioner.h"
 #include "solvers/backtracking_line_search.h"
 
 namespace akvf {
@@ -31,6 +33,14 @@ const PreconditionerRegistry& preconditioners_2d() {
     r.add("akvf", "Killing operator K(x) of Eq. (5), area-scaled, CHOLMOD (the paper's method)",
           [](const ParamObjective& objective, const PreconditionerSettings& settings) {
             return std::make_unique<AkvfPreconditioner2D>(objective, settings.akvf);
+          });
+    r.add("newton", "projected Newton: element Hessians clamped to PSD, CHOLMOD",
+          [](const ParamObjective& objective, const PreconditionerSettings& settings) {
+            return std::make_unique<NewtonPreconditioner2D>(objective, settings.newton);
+          });
+    r.add("laplacian", "AQP proxy: cotangent Laplacian of the 3D mesh per coordinate, factored once (no acceleration)",
+          [](const ParamObjective& objective, const PreconditionerSettings& settings) {
+            return std::make_unique<LaplacianPreconditioner2D>(objective, settings.laplacian);
           });
     r.add("identity", "no preconditioning: plain gradient descent",
           [](const ParamObjective&, const PreconditionerSettings&) { return std::make_unique<IdentityPreconditioner>(); });

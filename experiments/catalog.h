@@ -22,6 +22,8 @@ using DensityRegistry = Registry<DistortionDensity2, const EnergySettings&>;
 // Options of the preconditioners that have them, set from the command line.
 struct PreconditionerSettings {
   AkvfOptions akvf;
+  FactorOptions newton;     // factored every iteration unless reuse is set
+  FactorOptions laplacian;  // constant: factored once
 };
 
 using PreconditionerRegistry = Registry<Preconditioner, const ParamObjective&, const PreconditionerSettings&>;

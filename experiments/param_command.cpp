@@ -26,7 +26,7 @@ std::vector<OptionSpec> optimization_options() {
   return {
       {"energy", "NAME", "distortion energy (default symmetric-dirichlet; see `akvf list`)"},
       {"exponent", "K", "exponent of exp-symmetric-dirichlet and amips (default 1)"},
-      {"precond", "NAME", "preconditioner: akvf (default) or identity"},
+      {"precond", "NAME", "preconditioner: akvf (default), newton, laplacian, identity"},
       {"line-search", "NAME", "line search (default backtracking)"},
       {"akvf-reuse", "TAU", "AKVF: reuse the last factorization through CG to relative residual TAU\n"
        "                          (default 0.03; 0 = factor K every iteration, as in Algorithm 1)"},
@@ -50,9 +50,9 @@ ParamConfig config_from(const CommandLine& cl) {
   if (!(config.energy_settings.exponent > 0)) throw OptionsError("option --exponent must be > 0");
   config.preconditioner = cl.text("precond", config.preconditioner);
   config.line_search = cl.text("line-search", config.line_search);
-  config.preconditioner_settings.akvf.reuse_tolerance =
-      cl.real("akvf-reuse", config.preconditioner_settings.akvf.reuse_tolerance);
-  const double tau = config.preconditioner_settings.akvf.reuse_tolerance;
+  config.preconditioner_settings.akvf.factor.reuse_tolerance =
+      cl.real("akvf-reuse", config.preconditioner_settings.akvf.factor.reuse_tolerance);
+  const double tau = config.preconditioner_settings.akvf.factor.reuse_tolerance;
   if (!(tau >= 0 && tau < 1)) throw OptionsError("option --akvf-reuse must be in [0, 1)");
   config.line_search_settings.rho = cl.real("ls-rho", config.line_search_settings.rho);
   if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);

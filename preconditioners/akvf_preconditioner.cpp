@@ -1,128 +1,14 @@
 #include "preconditioners/akvf_preconditioner.h"
 
-#include "framework/error.h"
-
 namespace akvf {
 
-Eigen::MatrixXd rigid_motion_basis_2d(const Eigen::VectorXd& x) {
-  const Eigen::Index n = x.size() / 2;
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(x.size(), 3);
-  double cx = 0, cy = 0;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    cx += x[2 * i];
-    cy += x[2 * i + 1];
-  }
-  cx /= static_cast<double>(n);
-  cy /= static_cast<double>(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    B(2 * i, 0) = 1;
-    B(2 * i + 1, 1) = 1;
-    // Velocity of a rotation about the centroid: (-(y - cy), x - cx).
-    B(2 * i, 2) = -(x[2 * i + 1] - cy);
-    B(2 * i + 1, 2) = x[2 * i] - cx;
-  }
-  // The three columns are mutually orthogonal by construction (centred rotation).
-  for (int c = 0; c < 3; ++c) B.col(c).normalize();
-  return B;
-}
-
 AkvfPreconditioner2D::AkvfPreconditioner2D(const ParamObjective& objective, AkvfOptions options)
-    : objective_(objective), options_(options), operator_(objective.faces(), objective.num_vertices()) {
-  if (!(options_.tikhonov > 0)) throw OptionsError("AKVF Tikhonov shift must be > 0");
-  if (options_.reuse_tolerance < 0 || options_.reuse_tolerance >= 1)
-    throw OptionsError("AKVF reuse tolerance must be in [0, 1)");
-  if (options_.reuse_max_cg < 1) throw OptionsError("AKVF reuse needs at least one CG iteration");
-}
+    : FactoredPreconditioner2D(objective.faces(), objective.num_vertices(), options.factor),
+      objective_(objective),
+      options_(options) {}
 
-void AkvfPreconditioner2D::update(const OptimizationState& state) {
-  operator_.assemble(state.x, objective_.rest().area, options_.area_scaling);
-  operator_.add_to_diagonal(options_.tikhonov * operator_.mean_diagonal());
-  rigid_basis_ = rigid_motion_basis_2d(state.x);
-  factor_is_current_ = false;
-  // Without reuse, or before the first factorization, factor now (§5.2);
-  // otherwise apply() decides whether the previous factor still serves.
-  if (options_.reuse_tolerance <= 0 || !cholesky_.analyzed()) {
-    factorize_current();
-  } else if (skip_reuse_ > 0) {
-    --skip_reuse_;
-    factorize_current();
-  }
-}
-
-std::string AkvfPreconditioner2D::report() const {
-  return std::to_string(statistics_.factorizations) + " factorizations, " +
-         std::to_string(statistics_.reused_solves) + " solves with an earlier factor (" +
-         std::to_string(statistics_.cg_iterations) + " CG iterations)";
-}
-
-void AkvfPreconditioner2D::factorize_current() {
-  if (!cholesky_.analyzed()) cholesky_.analyze(operator_.upper());
-  cholesky_.factorize(operator_.upper());
-  factored_rigid_basis_ = rigid_basis_;
-  factor_is_current_ = true;
-  ++statistics_.factorizations;
-}
-
-void AkvfPreconditioner2D::apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) {
-  if (!factor_is_current_) {
-    if (solve_with_previous_factor(gradient, result)) {
-      ++statistics_.reused_solves;
-      failure_backoff_ = 1;
-      return;
-    }
-    skip_reuse_ = failure_backoff_;
-    failure_backoff_ *= 2;
-    factorize_current();
-  }
-  cholesky_.solve(gradient, result);
-  *result -= rigid_basis_ * (rigid_basis_.transpose() * *result);
-}
-
-bool AkvfPreconditioner2D::solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d) {
-  // CG on A = K(x) + eps I restricted to the complement of the current rigid
-  // motions N, with the symmetric PSD preconditioner
-  //   M^-1 = P_N P_N' (K' + eps I)^-1 P_N' P_N,
-  // where K' is the factored (older) operator, N' its rigid motions and P
-  // the orthogonal projectors onto their complements. Projecting out N'
-  // keeps the old factor's 1/eps response to its own null space out of the
-  // iteration; projecting out N keeps every iterate free of rigid motion.
-  const auto project = [](const Eigen::MatrixXd& basis, Eigen::VectorXd& v) {
-    v -= basis * (basis.transpose() * v);
-  };
-  const auto A = operator_.upper().selfadjointView<Eigen::Upper>();
-  const auto precondition = [&](Eigen::VectorXd r, Eigen::VectorXd* z) {
-    project(rigid_basis_, r);
-    project(factored_rigid_basis_, r);
-    cholesky_.solve(r, z);
-    project(factored_rigid_basis_, *z);
-    project(rigid_basis_, *z);
-  };
-  Eigen::VectorXd r = g;
-  project(rigid_basis_, r);
-  const double target = options_.reuse_tolerance * g.norm();
-  d->setZero(g.size());
-  Eigen::VectorXd z, p, q;
-  precondition(r, &z);
-  p = z;
-  double rz = r.dot(z);
-  for (int k = 1; k <= options_.reuse_max_cg; ++k) {
-    ++statistics_.cg_iterations;
-    q = A * p;
-    const double curvature = p.dot(q);
-    if (!(curvature > 0)) return false;
-    const double alpha = rz / curvature;
-    *d += alpha * p;
-    r -= alpha * q;
-    if (r.norm() <= target) {
-      project(rigid_basis_, *d);
-      return true;
-    }
-    precondition(r, &z);
-    const double rz_next = r.dot(z);
-    p = z + (rz_next / rz) * p;
-    rz = rz_next;
-  }
-  return false;
+void AkvfPreconditioner2D::assemble(const OptimizationState& state, ElementMatrix2D* matrix) {
+  assemble_killing_operator(objective_.faces(), state.x, objective_.rest().area, options_.area_scaling, matrix);
 }
 
 }  // namespace akvf

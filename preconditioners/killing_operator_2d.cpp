@@ -1,91 +1,11 @@
 #include "preconditioners/killing_operator_2d.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
-#include <algorithm>
-
 namespace akvf {
 
-namespace {
-
-// Local slot layout of one face with corners (c0, c1, c2):
-//   slots 0..11: the off-diagonal block of edge k (k = 0: c0-c1, 1: c1-c2,
-//                2: c2-c0) as 4 entries (a, b) -> 4k + 2a + b, stored for the
-//                ordered pair (min, max) vertex so it lies in the upper triangle;
-//   slots 12..20: the diagonal block of corner k, entries (0,0), (0,1), (1,1).
-struct SlotTarget {
-  int row, col;
-};
-
-void slot_targets(const Eigen::MatrixXi& F, int f, SlotTarget out[21]) {
-  for (int k = 0; k < 3; ++k) {
-    const int p = F(f, k), q = F(f, (k + 1) % 3);
-    const int lo = std::min(p, q), hi = std::max(p, q);
-    for (int a = 0; a < 2; ++a)
-      for (int b = 0; b < 2; ++b) out[4 * k + 2 * a + b] = {2 * lo + a, 2 * hi + b};
-    const int v = F(f, k);
-    out[12 + 3 * k + 0] = {2 * v, 2 * v};
-    out[12 + 3 * k + 1] = {2 * v, 2 * v + 1};
-    out[12 + 3 * k + 2] = {2 * v + 1, 2 * v + 1};
-  }
-}
-
-template <class Body>
-void parallel_for_index(int n, int grain, const Body& body) {
-  tbb::parallel_for(tbb::blocked_range<int>(0, n, grain), [&](const tbb::blocked_range<int>& r) {
-    for (int i = r.begin(); i != r.end(); ++i) body(i);
-  });
-}
-
-}  // namespace
-
-KillingOperator2D::KillingOperator2D(const Eigen::MatrixXi& F, int num_vertices) : F_(F) {
-  const int n = 2 * num_vertices;
-  const int nf = static_cast<int>(F.rows());
-  std::vector<Eigen::Triplet<double>> pattern;
-  pattern.reserve(static_cast<std::size_t>(kSlotsPerFace) * nf);
-  SlotTarget targets[kSlotsPerFace];
-  for (int f = 0; f < nf; ++f) {
-    slot_targets(F, f, targets);
-    for (const auto& t : targets) pattern.emplace_back(t.row, t.col, 0.0);
-  }
-  upper_.resize(n, n);
-  upper_.setFromTriplets(pattern.begin(), pattern.end());
-  upper_.makeCompressed();
-
-  // Where each face slot lands among the nonzeros.
-  std::vector<int> slot_entry(static_cast<std::size_t>(kSlotsPerFace) * nf);
-  for (int f = 0; f < nf; ++f) {
-    slot_targets(F, f, targets);
-    for (int s = 0; s < kSlotsPerFace; ++s) {
-      const int* rows = upper_.innerIndexPtr();
-      const int begin = upper_.outerIndexPtr()[targets[s].col], end = upper_.outerIndexPtr()[targets[s].col + 1];
-      slot_entry[kSlotsPerFace * f + s] = static_cast<int>(std::lower_bound(rows + begin, rows + end, targets[s].row) - rows);
-    }
-  }
-  // Invert it: for each nonzero, its contributing slots in increasing order,
-  // so the gather sums in a fixed order whatever the thread count.
-  const int nnz = static_cast<int>(upper_.nonZeros());
-  gather_offsets_.assign(nnz + 1, 0);
-  for (int e : slot_entry) ++gather_offsets_[e + 1];
-  for (int i = 0; i < nnz; ++i) gather_offsets_[i + 1] += gather_offsets_[i];
-  gather_sources_.resize(slot_entry.size());
-  std::vector<int> fill(gather_offsets_.begin(), gather_offsets_.end() - 1);
-  for (int s = 0; s < static_cast<int>(slot_entry.size()); ++s) gather_sources_[fill[slot_entry[s]]++] = s;
-
-  diagonal_entries_.resize(n);
-  // Rows are sorted within a column, so the diagonal is the last upper entry.
-  for (int i = 0; i < n; ++i) diagonal_entries_[i] = upper_.outerIndexPtr()[i + 1] - 1;
-  face_buffer_.resize(slot_entry.size());
-}
-
-void KillingOperator2D::face_values(const Eigen::VectorXd& x, int f, double scale, double* out) const {
-  Eigen::Vector2d p[3];
-  for (int k = 0; k < 3; ++k) p[k] = x.segment<2>(2 * F_(f, k));
+void killing_local_matrix(const Eigen::Vector2d p[3], double scale, ElementMatrix2D::Local* local) {
   const Eigen::Vector2d e1 = p[1] - p[0], e2 = p[2] - p[0];
   const double area = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
-  Eigen::Matrix2d diagonal[3] = {Eigen::Matrix2d::Zero(), Eigen::Matrix2d::Zero(), Eigen::Matrix2d::Zero()};
+  local->setZero();
   for (int k = 0; k < 3; ++k) {
     const int a = k, b = (k + 1) % 3, r = (k + 2) % 3;
     const Eigen::Vector2d e = p[a] - p[r], e_prime = p[b] - p[r];
@@ -93,52 +13,25 @@ void KillingOperator2D::face_values(const Eigen::VectorXd& x, int f, double scal
     // Eq. (5): the block K_pq for p = corner a, q = corner b.
     const Eigen::Matrix2d block =
         scale * (e_prime * e.transpose() / (4 * area) - cot_theta * Eigen::Matrix2d::Identity());
-    diagonal[a] -= block;              // K_pp = -sum_r K_pr
-    diagonal[b] -= block.transpose();  // K_qq gets K_qp = K_pq^T
-    // Stored for (min, max): K_pq if p < q, else K_qp = K_pq^T.
-    const Eigen::Matrix2d stored = F_(f, a) < F_(f, b) ? block : Eigen::Matrix2d(block.transpose());
-    out[4 * k + 0] = stored(0, 0);
-    out[4 * k + 1] = stored(0, 1);
-    out[4 * k + 2] = stored(1, 0);
-    out[4 * k + 3] = stored(1, 1);
-  }
-  for (int k = 0; k < 3; ++k) {
-    out[12 + 3 * k + 0] = diagonal[k](0, 0);
-    out[12 + 3 * k + 1] = diagonal[k](0, 1);
-    out[12 + 3 * k + 2] = diagonal[k](1, 1);
+    local->block<2, 2>(2 * a, 2 * b) = block;
+    local->block<2, 2>(2 * b, 2 * a) = block.transpose();
+    local->block<2, 2>(2 * a, 2 * a) -= block;              // K_pp = -sum_r K_pr
+    local->block<2, 2>(2 * b, 2 * b) -= block.transpose();  // K_qq gets K_qp = K_pq^T
   }
 }
 
-void KillingOperator2D::assemble(const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area, bool area_scaling) {
-  const int nf = static_cast<int>(F_.rows());
-  parallel_for_index(nf, 512, [&](int f) {
+void assemble_killing_operator(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
+                               bool area_scaling, ElementMatrix2D* matrix) {
+  matrix->assemble([&](int f, ElementMatrix2D::Local* local) {
+    Eigen::Vector2d p[3];
+    for (int k = 0; k < 3; ++k) p[k] = x.segment<2>(2 * F(f, k));
     double scale = 1;
     if (area_scaling) {
-      const Eigen::Vector2d e1 = x.segment<2>(2 * F_(f, 1)) - x.segment<2>(2 * F_(f, 0));
-      const Eigen::Vector2d e2 = x.segment<2>(2 * F_(f, 2)) - x.segment<2>(2 * F_(f, 0));
+      const Eigen::Vector2d e1 = p[1] - p[0], e2 = p[2] - p[0];
       scale = rest_area[f] / (0.5 * (e1.x() * e2.y() - e1.y() * e2.x()));
     }
-    face_values(x, f, scale, face_buffer_.data() + kSlotsPerFace * f);
+    killing_local_matrix(p, scale, local);
   });
-  double* values = upper_.valuePtr();
-  parallel_for_index(static_cast<int>(upper_.nonZeros()), 4096, [&](int e) {
-    double sum = 0;
-    for (int i = gather_offsets_[e]; i < gather_offsets_[e + 1]; ++i) sum += face_buffer_[gather_sources_[i]];
-    values[e] = sum;
-  });
-  double trace = 0;
-  for (int e : diagonal_entries_) trace += values[e];
-  mean_diagonal_ = trace / static_cast<double>(diagonal_entries_.size());
-}
-
-void KillingOperator2D::add_to_diagonal(double shift) {
-  for (int e : diagonal_entries_) upper_.valuePtr()[e] += shift;
-}
-
-Eigen::SparseMatrix<double> KillingOperator2D::full() const {
-  Eigen::SparseMatrix<double> strict_lower = upper_.transpose();
-  strict_lower.prune([](int row, int col, double) { return row > col; });
-  return upper_ + strict_lower;
 }
 
 }  // namespace akvf

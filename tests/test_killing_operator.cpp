@@ -7,17 +7,18 @@
 #include "energies/symmetric_dirichlet.h"
 #include "framework/param_objective.h"
 #include "preconditioners/akvf_preconditioner.h"
+#include "preconditioners/laplacian_preconditioner.h"
+#include "preconditioners/newton_preconditioner.h"
 #include "preconditioners/killing_operator_2d.h"
 #include "tests/test_support.h"
 
-using akvf::KillingOperator2D;
 
 namespace {
 
 Eigen::MatrixXd dense_killing(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
                               bool area_scaling) {
-  KillingOperator2D K(F, static_cast<int>(x.size() / 2));
-  K.assemble(x, rest_area, area_scaling);
+  akvf::ElementMatrix2D K(F, static_cast<int>(x.size() / 2));
+  akvf::assemble_killing_operator(F, x, rest_area, area_scaling, &K);
   return Eigen::MatrixXd(K.full());
 }
 
@@ -154,7 +155,7 @@ TEST_CASE("with factorization reuse the direction solves K(x) d = g to the toler
   const Eigen::VectorXd x1 = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 4) * 0.9);
   const Eigen::VectorXd x2 = x1 + 1e-3 * akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 5));
   akvf::AkvfOptions options;
-  options.reuse_tolerance = 0.01;
+  options.factor.reuse_tolerance = 0.01;
   akvf::AkvfPreconditioner2D preconditioner(objective, options);
   Eigen::VectorXd g, d;
   objective.value_and_gradient(x1, &g);
@@ -169,4 +170,31 @@ TEST_CASE("with factorization reuse the direction solves K(x) d = g to the toler
   CHECK((K * d - g).norm() <= 0.011 * g.norm());
   CHECK(g.dot(d) > 0);
   CHECK((akvf::rigid_motion_basis_2d(x2).transpose() * d).norm() <= 1e-10 * d.norm());
+}
+
+TEST_CASE("Newton and Laplacian matrices are symmetric PSD with the expected null spaces; directions descend") {
+  akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
+  akvf::normalize_to_unit_area(&normalized);
+  const akvf::ParamObjective objective(normalized.F, akvf::rest_triangles(normalized),
+                                       std::make_shared<akvf::SymmetricDirichlet2>(), normalized.num_vertices());
+  const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.8);
+  Eigen::VectorXd g, d;
+  objective.value_and_gradient(x, &g);
+  akvf::NewtonPreconditioner2D newton(objective);
+  akvf::LaplacianPreconditioner2D laplacian(objective);
+  for (akvf::FactoredPreconditioner2D* p : std::initializer_list<akvf::FactoredPreconditioner2D*>{&newton, &laplacian}) {
+    CAPTURE(p->name());
+    p->update({x, g, 0.0, 1});
+    p->apply(g, &d);
+    CHECK(g.dot(d) > 0);
+    CHECK(d.allFinite());
+    // The factored matrix is P + eps I with eps = 1e-8 mean(diag P): remove the shift to test P.
+    Eigen::MatrixXd P(p->matrix().full());
+    P.diagonal().array() -= 1e-8 * P.diagonal().mean() / (1 + 1e-8);
+    CHECK((P - P.transpose()).norm() <= 1e-12 * P.norm());
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(P);
+    CHECK(eig.eigenvalues().minCoeff() >= -1e-9 * eig.eigenvalues().maxCoeff());
+    const Eigen::MatrixXd T = akvf::translation_basis_2d(objective.num_vertices());
+    CHECK((P * T).norm() <= 1e-8 * P.norm());
+  }
 }

@@ -1,0 +1,82 @@
+#pragma once
+// Shared machinery of the preconditioners that solve with a sparse SPD
+// matrix P(x) assembled per triangle (AKVF, projected Newton, Laplacian):
+// P + eps I factored by CHOLMOD (symbolic analysis once), the known null
+// space projected out of every direction, and optional factorization reuse
+// through conjugate gradients.
+//
+// Null space. P(x) may be singular along motions that do not change the
+// energy (rigid motions for the Killing operator, translations for the
+// Laplacian). We factor P + eps I with eps = tikhonov * mean(diag P) and
+// project those motions out of the solution (§5.1). For a gradient
+// orthogonal to them (the gradient of every rigid-invariant energy is) this
+// is P^+ g up to a relative eps / lambda_min; the shift keeps a plain
+// supernodal Cholesky (no pivoting, reusable analysis) well defined, and the
+// projection removes what the shifted solve lets through.
+//
+// Reuse (tau > 0). Before factoring P(x), try CG on P(x) d = g preconditioned
+// by the last factor, projected so that neither the old factor's response to
+// its own null space nor the current null space enters the iterates; accept
+// when ||P d - g|| <= tau ||g|| within max_cg iterations (a CG iterate is
+// always a descent direction: g^T d = d^T P d > 0), else factor and skip
+// further attempts for 1, 2, 4, ... iterations after consecutive failures.
+#include <string>
+
+#include "framework/element_matrix_2d.h"
+#include "framework/preconditioner.h"
+#include "solvers/sparse_cholesky.h"
+
+namespace akvf {
+
+struct FactorOptions {
+  double tikhonov = 1e-8;      // shift relative to mean(diag P)
+  double reuse_tolerance = 0;  // tau; 0 factors at every update
+  int reuse_max_cg = 8;
+};
+
+struct FactorStatistics {
+  int factorizations = 0;
+  int reused_solves = 0;  // directions from CG with an older factorization
+  int cg_iterations = 0;
+};
+
+class FactoredPreconditioner2D : public Preconditioner {
+ public:
+  void update(const OptimizationState& state) final;
+  void apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) final;
+  std::string report() const override;
+
+  const ElementMatrix2D& matrix() const { return matrix_; }
+  const FactorStatistics& statistics() const { return statistics_; }
+
+ protected:
+  FactoredPreconditioner2D(const Eigen::MatrixXi& F, int num_vertices, FactorOptions options);
+
+  // Fills matrix with P(x) (without the shift).
+  virtual void assemble(const OptimizationState& state, ElementMatrix2D* matrix) = 0;
+  // Orthonormal basis (2|V| by k) of the motions to project out at x.
+  virtual Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const = 0;
+  // True if P does not depend on x: assembled and factored once.
+  virtual bool is_constant() const { return false; }
+
+ private:
+  void factorize_current();
+  bool solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d);
+
+  FactorOptions options_;
+  ElementMatrix2D matrix_;
+  SparseCholesky cholesky_;
+  Eigen::MatrixXd null_basis_;           // at the current x
+  Eigen::MatrixXd factored_null_basis_;  // at the last factorization
+  bool factor_is_current_ = false;
+  int skip_reuse_ = 0;
+  int failure_backoff_ = 1;
+  FactorStatistics statistics_;
+};
+
+// Orthonormal bases of the planar rigid motions (translations and the
+// rotation about the centroid; 2|V| by 3) and of the translations alone.
+Eigen::MatrixXd rigid_motion_basis_2d(const Eigen::VectorXd& x);
+Eigen::MatrixXd translation_basis_2d(int num_vertices);
+
+}  // namespace akvf
