@@ -31,7 +31,11 @@ LineSearchSummary LineSearch::search(const Objective& objective, const Eigen::Ve
     summary.message = "search direction is not a descent direction (grad . d = " + std::to_string(slope) + ")";
   } else {
     const double max_step = objective.max_feasible_step(x, direction);
-    summary = do_search({objective, x, energy, gradient, direction, slope, max_step});
+    if (!(max_step > 0)) {
+      summary.message = "no step along the direction is flip-free (alpha_max = " + std::to_string(max_step) + ")";
+    } else {
+      summary = do_search({objective, x, energy, gradient, direction, slope, max_step});
+    }
     summary.max_feasible_step = max_step;
     if (!summary.success) {
       summary.step = 0;
