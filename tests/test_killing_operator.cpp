@@ -56,6 +56,14 @@ double killing_energy(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const 
   return energy;
 }
 
+// Symmetric Dirichlet on the mesh scaled to area 1 (the mesh is returned too,
+// for building UV maps of matching size).
+akvf::ParamObjective unit_area_objective(akvf::TriMesh* mesh) {
+  akvf::normalize_to_unit_area(mesh);
+  return akvf::ParamObjective(mesh->F, akvf::rest_triangles(*mesh), std::make_shared<akvf::SymmetricDirichlet2>(),
+                              mesh->num_vertices());
+}
+
 struct PlanarMesh {
   Eigen::MatrixXi F;
   Eigen::VectorXd x;
@@ -128,11 +136,8 @@ TEST_CASE("K is symmetric PSD with exactly the rigid motions as null space (rank
 }
 
 TEST_CASE("the AKVF direction is K^+ grad E, a descent direction free of rigid motion") {
-  const akvf::TriMesh mesh = akvf::test::bumpy_disk(6, 6);
-  akvf::TriMesh normalized = mesh;
-  akvf::normalize_to_unit_area(&normalized);
-  const akvf::ParamObjective objective(normalized.F, akvf::rest_triangles(normalized),
-                                       std::make_shared<akvf::SymmetricDirichlet2>(), normalized.num_vertices());
+  akvf::TriMesh normalized = akvf::test::bumpy_disk(6, 6);
+  const akvf::ParamObjective objective = unit_area_objective(&normalized);
   const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 4) * 0.9);
   Eigen::VectorXd g, d;
   objective.value_and_gradient(x, &g);
@@ -149,9 +154,7 @@ TEST_CASE("the AKVF direction is K^+ grad E, a descent direction free of rigid m
 
 TEST_CASE("with factorization reuse the direction solves K(x) d = g to the tolerance") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(8, 8);
-  akvf::normalize_to_unit_area(&normalized);
-  const akvf::ParamObjective objective(normalized.F, akvf::rest_triangles(normalized),
-                                       std::make_shared<akvf::SymmetricDirichlet2>(), normalized.num_vertices());
+  const akvf::ParamObjective objective = unit_area_objective(&normalized);
   const Eigen::VectorXd x1 = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 4) * 0.9);
   const Eigen::VectorXd x2 = x1 + 1e-3 * akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 5));
   akvf::AkvfOptions options;
@@ -174,9 +177,7 @@ TEST_CASE("with factorization reuse the direction solves K(x) d = g to the toler
 
 TEST_CASE("Newton and Laplacian matrices are symmetric PSD with the expected null spaces; directions descend") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
-  akvf::normalize_to_unit_area(&normalized);
-  const akvf::ParamObjective objective(normalized.F, akvf::rest_triangles(normalized),
-                                       std::make_shared<akvf::SymmetricDirichlet2>(), normalized.num_vertices());
+  const akvf::ParamObjective objective = unit_area_objective(&normalized);
   const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.8);
   Eigen::VectorXd g, d;
   objective.value_and_gradient(x, &g);
