@@ -5,6 +5,7 @@
 #include "preconditioners/identity_preconditioner.h"
 #include "preconditioners/laplacian_preconditioner.h"
 #include "preconditioners/newton_preconditioner.h"
+#include "preconditioners/slim_preconditioner.h"
 #include "solvers/backtracking_line_search.h"
 
 namespace akvf {
@@ -41,6 +42,10 @@ const PreconditionerRegistry& preconditioners_2d() {
     r.add("laplacian", "AQP proxy: cotangent Laplacian of the 3D mesh per coordinate, factored once (no acceleration)",
           [](const ParamObjective& objective, const PreconditionerSettings& settings) {
             return std::make_unique<LaplacianPreconditioner2D>(objective, settings.laplacian);
+          });
+    r.add("slim", "SLIM: reweighted ARAP proxy whose gradient is the energy's (Rabinovich et al. 2017)",
+          [](const ParamObjective& objective, const PreconditionerSettings& settings) {
+            return std::make_unique<SlimPreconditioner2D>(objective, settings.slim);
           });
     r.add("identity", "no preconditioning: plain gradient descent",
           [](const ParamObjective&, const PreconditionerSettings&) { return std::make_unique<IdentityPreconditioner>(); });

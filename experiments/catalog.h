@@ -24,6 +24,7 @@ struct PreconditionerSettings {
   AkvfOptions akvf;
   FactorOptions newton;     // factored every iteration unless reuse is set
   FactorOptions laplacian;  // constant: factored once
+  FactorOptions slim;       // factored every iteration unless reuse is set
 };
 
 using PreconditionerRegistry = Registry<Preconditioner, const ParamObjective&, const PreconditionerSettings&>;

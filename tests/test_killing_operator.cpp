@@ -4,11 +4,14 @@
 #include <Eigen/Eigenvalues>
 #include <random>
 
+#include "energies/distortion_energies.h"
 #include "energies/symmetric_dirichlet.h"
+#include "tests/density_checks.h"
 #include "framework/param_objective.h"
 #include "preconditioners/akvf_preconditioner.h"
 #include "preconditioners/laplacian_preconditioner.h"
 #include "preconditioners/newton_preconditioner.h"
+#include "preconditioners/slim_preconditioner.h"
 #include "preconditioners/killing_operator_2d.h"
 #include "tests/test_support.h"
 
@@ -175,7 +178,7 @@ TEST_CASE("with factorization reuse the direction solves K(x) d = g to the toler
   CHECK((akvf::rigid_motion_basis_2d(x2).transpose() * d).norm() <= 1e-10 * d.norm());
 }
 
-TEST_CASE("Newton and Laplacian matrices are symmetric PSD with the expected null spaces; directions descend") {
+TEST_CASE("Newton, Laplacian and SLIM matrices are symmetric PSD with the expected null spaces; directions descend") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
   const akvf::ParamObjective objective = unit_area_objective(&normalized);
   const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.8);
@@ -183,7 +186,9 @@ TEST_CASE("Newton and Laplacian matrices are symmetric PSD with the expected nul
   objective.value_and_gradient(x, &g);
   akvf::NewtonPreconditioner2D newton(objective);
   akvf::LaplacianPreconditioner2D laplacian(objective);
-  for (akvf::FactoredPreconditioner2D* p : std::initializer_list<akvf::FactoredPreconditioner2D*>{&newton, &laplacian}) {
+  akvf::SlimPreconditioner2D slim(objective);
+  for (akvf::FactoredPreconditioner2D* p :
+       std::initializer_list<akvf::FactoredPreconditioner2D*>{&newton, &laplacian, &slim}) {
     CAPTURE(p->name());
     p->update({x, g, 0.0, 1});
     p->apply(g, &d);
@@ -198,4 +203,42 @@ TEST_CASE("Newton and Laplacian matrices are symmetric PSD with the expected nul
     const Eigen::MatrixXd T = akvf::translation_basis_2d(objective.num_vertices());
     CHECK((P * T).norm() <= 1e-8 * P.norm());
   }
+}
+
+TEST_CASE("the SLIM proxy's gradient equals the energy's gradient at the current iterate") {
+  // Per face: d/dJ |W (J - R)|^2 = 2 W^T W (J - R) must be dD/dJ.
+  const akvf::SymmetricDirichlet2 sd;
+  const akvf::Arap2 arap;
+  const akvf::ExpSymmetricDirichlet2 exp_sd(0.3);
+  std::mt19937 rng(31);
+  for (const akvf::InvariantDensity2* density :
+       std::initializer_list<const akvf::InvariantDensity2*>{&sd, &arap, &exp_sd}) {
+    CAPTURE(density->name());
+    for (int trial = 0; trial < 20; ++trial) {
+      const Eigen::Matrix2d J = akvf::test::random_jacobian<2>(rng, 0.3, 3.0);
+      Eigen::Matrix2d WtW, R, dD;
+      akvf::SlimPreconditioner2D::proxy_weights(*density, J, &WtW, &R);
+      density->value_and_gradient(J, &dD);
+      CHECK((2 * WtW * (J - R) - dD).norm() <= 1e-9 * std::max(1.0, dD.norm()));
+      CHECK(R.determinant() == doctest::Approx(1.0));
+    }
+  }
+}
+
+TEST_CASE("SLIM refuses an energy without a singular-value derivative") {
+  struct Plain final : akvf::DistortionDensity2 {
+    std::string name() const override { return "plain"; }
+    double lower_bound() const override { return 0; }
+    double value(const Matrix& J) const override { return J.squaredNorm(); }
+    double value_and_gradient(const Matrix& J, Matrix* g) const override {
+      *g = 2 * J;
+      return J.squaredNorm();
+    }
+    Hessian hessian(const Matrix&) const override { return 2 * Hessian::Identity(); }
+  };
+  akvf::TriMesh mesh = akvf::test::grid_disk(3, 3);
+  const akvf::ParamObjective objective(mesh.F, akvf::rest_triangles(mesh), std::make_shared<Plain>(),
+                                       mesh.num_vertices());
+  CHECK(akvf::test::error_message([&] { akvf::SlimPreconditioner2D slim(objective); }) ==
+        "the slim preconditioner needs an energy with a singular-value derivative; 'plain' has none");
 }
