@@ -54,6 +54,12 @@ const PreconditionerRegistry& preconditioners_2d() {
   return registry;
 }
 
+void require_method(const std::string& name) {
+  if (name == kLbfgsMethod || preconditioners_2d().contains(name)) return;
+  throw OptionsError("unknown preconditioner '" + name + "' (valid: " + preconditioners_2d().names() + ", " +
+                     kLbfgsMethod + ")");
+}
+
 const LineSearchRegistry& line_searches() {
   static const LineSearchRegistry registry = [] {
     LineSearchRegistry r("line search");

@@ -26,7 +26,7 @@ std::vector<OptionSpec> optimization_options() {
   return {
       {"energy", "NAME", "distortion energy (default symmetric-dirichlet; see `akvf list`)"},
       {"exponent", "K", "exponent of exp-symmetric-dirichlet and amips (default 1)"},
-      {"precond", "NAME", "preconditioner: akvf (default), newton, laplacian, identity"},
+      {"precond", "NAME", "akvf (default), newton, laplacian, slim, identity, or the solver lbfgs"},
       {"line-search", "NAME", "line search (default backtracking)"},
       {"akvf-reuse", "TAU", "AKVF: reuse the last factorization through CG to relative residual TAU\n"
        "                          (default 0.03; 0 = factor K every iteration, as in Algorithm 1)"},

@@ -4,6 +4,7 @@
 
 #include "experiments/catalog.h"
 #include "framework/error.h"
+#include "solvers/lbfgs_solver.h"
 
 namespace akvf {
 
@@ -13,7 +14,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
   // Resolve names first so a typo fails before any work.
   std::shared_ptr<const DistortionDensity2> density = energies_2d().create(config.energy, config.energy_settings);
-  preconditioners_2d().require(config.preconditioner);
+  require_method(config.preconditioner);
   line_searches().require(config.line_search);
 
   ParamSetup setup;
@@ -32,10 +33,15 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
 
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks) {
+  ParamRun run;
+  if (config.preconditioner == kLbfgsMethod) {
+    run.preconditioner_name = kLbfgsMethod;
+    run.result = minimize_lbfgs(*setup.objective, setup.x0, config.optimizer, {}, callbacks);
+    return run;
+  }
   auto preconditioner =
       preconditioners_2d().create(config.preconditioner, *setup.objective, config.preconditioner_settings);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
-  ParamRun run;
   run.preconditioner_name = preconditioner->name();
   run.result = minimize(*setup.objective, *preconditioner, *line_search, setup.x0, config.optimizer, callbacks);
   run.preconditioner_report = preconditioner->report();

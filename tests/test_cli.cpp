@@ -85,7 +85,7 @@ TEST_CASE("bad command lines exit 2 with a message") {
   CHECK(bad_value.err == "error: option --grad-tol: 'abc' is not a finite number\n");
   const Outcome precond = akvf_run({"demo", "--precond", "slim2", "--quiet", "--out-dir", scratch_dir("x").string()});
   CHECK(precond.code == akvf::kExitUsageError);
-  CHECK(precond.err == "error: unknown preconditioner 'slim2' (valid: akvf, newton, laplacian, slim, identity)\n");
+  CHECK(precond.err == "error: unknown preconditioner 'slim2' (valid: akvf, newton, laplacian, slim, identity, lbfgs)\n");
   CHECK(akvf_run({"frobnicate"}).code == akvf::kExitUsageError);
 }
 

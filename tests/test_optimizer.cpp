@@ -127,7 +127,7 @@ TEST_CASE("invalid options and unknown names are reported") {
   config = {};
   config.preconditioner = "magic";
   CHECK(akvf::test::error_message([&] { run(akvf::bent_bar(), config); }) ==
-        "unknown preconditioner 'magic' (valid: akvf, newton, laplacian, slim, identity)");
+        "unknown preconditioner 'magic' (valid: akvf, newton, laplacian, slim, identity, lbfgs)");
   config = {};
   config.energy = "arap2";
   CHECK(akvf::test::error_message([&] { run(akvf::bent_bar(), config); }).find("unknown energy 'arap2' (valid: ") == 0);
@@ -143,4 +143,25 @@ TEST_CASE("runs are bitwise deterministic for 1 and 2 threads") {
     results.push_back(run(mesh, config).result.x);
   }
   for (const auto& x : results) CHECK(x == results.front());
+}
+
+TEST_CASE("L-BFGS through Ceres decreases the energy without inverting, with our trace and statuses") {
+  ParamConfig config;
+  config.preconditioner = "lbfgs";
+  config.optimizer.max_iterations = 40;
+  config.optimizer.gradient_tolerance = 0;
+  const auto setup = akvf::prepare_parameterization(akvf::test::bumpy_disk(10, 10), "test", config);
+  const auto run = akvf::run_parameterization(setup, config, {no_flips_allowed()});
+  const auto& result = run.result;
+  CHECK(run.preconditioner_name == "lbfgs");
+  CHECK(result.status == TerminationStatus::kMaxIterations);
+  REQUIRE(result.trace.size() >= 2);
+  CHECK(result.trace.front().iteration == 0);
+  CHECK(result.trace.back().energy < result.trace.front().energy);
+  for (std::size_t i = 1; i < result.trace.size(); ++i) CHECK(result.trace[i].energy <= result.trace[i - 1].energy);
+  // Ceres' gradient norm is the Euclidean norm we report for every method.
+  Eigen::VectorXd g;
+  CHECK(setup.objective->value_and_gradient(result.x, &g) == doctest::Approx(result.trace.back().energy));
+  CHECK(g.norm() == doctest::Approx(result.trace.back().grad_norm).epsilon(1e-9));
+  CHECK(setup.objective->count_inverted(result.x) == 0);
 }

@@ -1,0 +1,133 @@
+#include "solvers/lbfgs_solver.h"
+
+#include <ceres/ceres.h>
+
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "framework/error.h"
+
+namespace akvf {
+
+namespace {
+
+class ObjectiveFunction final : public ceres::FirstOrderFunction {
+ public:
+  explicit ObjectiveFunction(const Objective& objective)
+      : objective_(objective), x_(objective.num_variables()), gradient_(objective.num_variables()) {}
+
+  bool Evaluate(const double* parameters, double* cost, double* gradient) const override {
+    x_ = Eigen::Map<const Eigen::VectorXd>(parameters, x_.size());
+    if (gradient) {
+      *cost = objective_.value_and_gradient(x_, &gradient_);
+      Eigen::Map<Eigen::VectorXd>(gradient, x_.size()) = gradient_;
+    } else {
+      *cost = objective_.value(x_);
+    }
+    return std::isfinite(*cost);  // an inverted element: a failed evaluation
+  }
+  int NumParameters() const override { return objective_.num_variables(); }
+
+ private:
+  const Objective& objective_;
+  mutable Eigen::VectorXd x_, gradient_;
+};
+
+// Turns Ceres iterations into IterationSummary rows and applies our stopping
+// rules and callbacks.
+class TraceCallback final : public ceres::IterationCallback {
+ public:
+  TraceCallback(const Objective& objective, const Eigen::VectorXd& x, const OptimizerOptions& options,
+                const std::vector<akvf::IterationCallback>& callbacks, OptimizerResult* result)
+      : objective_(objective), x_(x), options_(options), callbacks_(callbacks), result_(result) {}
+
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    IterationSummary row;
+    row.iteration = s.iteration;
+    row.seconds = s.cumulative_time_in_seconds;
+    row.energy = s.cost;
+    row.grad_norm = s.gradient_norm;
+    row.step = s.iteration == 0 ? 0 : s.step_size;
+    row.ls_evals = s.line_search_function_evaluations;
+    row.flips = objective_.count_inverted(x_);
+    if (!s.step_is_successful && s.iteration > 0) return ceres::SOLVER_CONTINUE;  // not an iterate
+    result_->trace.push_back(row);
+    bool stop = false;
+    for (const auto& callback : callbacks_) stop |= callback(row, x_) == CallbackAction::kStop;
+    if (stop) {
+      status_ = TerminationStatus::kUserStopped;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    if (row.grad_norm < options_.gradient_tolerance) {
+      status_ = TerminationStatus::kConverged;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    if (row.seconds >= options_.time_limit) {
+      status_ = TerminationStatus::kTimeLimit;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    return ceres::SOLVER_CONTINUE;
+  }
+
+  std::optional<TerminationStatus> status() const { return status_; }
+
+ private:
+  const Objective& objective_;
+  const Eigen::VectorXd& x_;
+  const OptimizerOptions& options_;
+  const std::vector<akvf::IterationCallback>& callbacks_;
+  OptimizerResult* result_;
+  std::optional<TerminationStatus> status_;
+};
+
+}  // namespace
+
+OptimizerResult minimize_lbfgs(const Objective& objective, Eigen::VectorXd x, const OptimizerOptions& options,
+                               const LbfgsOptions& lbfgs, const std::vector<IterationCallback>& callbacks) {
+  std::string invalid;
+  if (!options.is_valid(&invalid)) throw OptionsError(invalid);
+  if (lbfgs.memory < 1) throw OptionsError("L-BFGS memory must be >= 1");
+  OptimizerResult result;
+  if (!std::isfinite(objective.value(x))) {
+    result.x = std::move(x);
+    result.status = TerminationStatus::kNumericalFailure;
+    result.message = "the initial energy is not finite";
+    return result;
+  }
+  ceres::GradientProblem problem(new ObjectiveFunction(objective));
+  ceres::GradientProblemSolver::Options ceres_options;
+  ceres_options.line_search_direction_type = ceres::LBFGS;
+  ceres_options.max_lbfgs_rank = lbfgs.memory;
+  ceres_options.max_num_iterations = options.max_iterations;
+  // Our rules decide convergence; Ceres' relative tests are switched off.
+  ceres_options.function_tolerance = 0;
+  ceres_options.gradient_tolerance = 0;
+  ceres_options.parameter_tolerance = 0;
+  ceres_options.logging_type = ceres::SILENT;
+  ceres_options.update_state_every_iteration = true;
+  TraceCallback trace(objective, x, options, callbacks, &result);
+  ceres_options.callbacks.push_back(&trace);
+  ceres::GradientProblemSolver::Summary summary;
+  ceres::Solve(ceres_options, problem, x.data(), &summary);
+
+  result.x = std::move(x);
+  if (trace.status()) {
+    result.status = *trace.status();
+    result.message = result.status == TerminationStatus::kConverged
+                         ? "gradient norm below " + std::to_string(options.gradient_tolerance)
+                         : to_string(result.status);
+  } else if (summary.termination_type == ceres::NO_CONVERGENCE) {
+    result.status = TerminationStatus::kMaxIterations;
+    result.message = "reached " + std::to_string(options.max_iterations) + " iterations";
+  } else if (summary.termination_type == ceres::CONVERGENCE) {
+    result.status = TerminationStatus::kStalled;
+    result.message = "Ceres: " + summary.message;
+  } else {
+    result.status = TerminationStatus::kLineSearchFailed;
+    result.message = "Ceres: " + summary.message;
+  }
+  return result;
+}
+
+}  // namespace akvf
