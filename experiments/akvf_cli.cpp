@@ -35,8 +35,8 @@ void print_entries(std::ostream& out, const char* title, const RegistryType& reg
 int list_command(std::ostream& out) {
   print_entries(out, "energies (--energy)", akvf::energies_2d());
   print_entries(out, "preconditioners (--precond)", akvf::preconditioners_2d());
-  out << "solvers (--precond):\n  " << akvf::kLbfgsMethod << std::string(22 - std::string(akvf::kLbfgsMethod).size(), ' ')
-      << akvf::kLbfgsDescription << '\n';
+  out << "solvers (--precond):\n  " << akvf::kLbfgsMethod
+      << std::string(22 - std::string(akvf::kLbfgsMethod).size(), ' ') << akvf::kLbfgsDescription << '\n';
   print_entries(out, "line searches (--line-search)", akvf::line_searches());
   return akvf::kExitOk;
 }

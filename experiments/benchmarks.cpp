@@ -51,11 +51,11 @@ Fixture* fixture(const std::string& mesh) {
   return slot.get();
 }
 
-#define REQUIRE_FIXTURE(state, mesh)                                            \
-  Fixture* f = fixture(mesh);                                                   \
-  if (!f) {                                                                     \
-    state.SkipWithError("meshes not found: set AKVF_DATA_DIR");                 \
-    return;                                                                     \
+#define REQUIRE_FIXTURE(state, mesh)                            \
+  Fixture* f = fixture(mesh);                                   \
+  if (!f) {                                                     \
+    state.SkipWithError("meshes not found: set AKVF_DATA_DIR"); \
+    return;                                                     \
   }
 
 void BM_KillingAssembly(benchmark::State& state, const std::string& mesh) {
@@ -130,12 +130,16 @@ void BM_WholeIteration(benchmark::State& state, const std::string& mesh) {
 
 void register_all() {
   for (const std::string mesh : {"camelhead.off", "horse_b.obj"}) {
-    benchmark::RegisterBenchmark(("KillingAssembly/" + mesh).c_str(), BM_KillingAssembly, mesh)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("EnergyGradient/" + mesh).c_str(), BM_EnergyGradient, mesh)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("KillingAssembly/" + mesh).c_str(), BM_KillingAssembly, mesh)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("EnergyGradient/" + mesh).c_str(), BM_EnergyGradient, mesh)
+        ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Energy/" + mesh).c_str(), BM_Energy, mesh)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh)
+        ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("WholeIteration/" + mesh).c_str(), BM_WholeIteration, mesh)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("WholeIteration/" + mesh).c_str(), BM_WholeIteration, mesh)
+        ->Unit(benchmark::kMillisecond);
   }
 }
 

@@ -7,6 +7,7 @@
 #include "preconditioners/newton_preconditioner.h"
 #include "preconditioners/slim_preconditioner.h"
 #include "solvers/backtracking_line_search.h"
+#include "solvers/wolfe_bisection_line_search.h"
 
 namespace akvf {
 
@@ -48,7 +49,9 @@ const PreconditionerRegistry& preconditioners_2d() {
             return std::make_unique<SlimPreconditioner2D>(objective, settings.slim);
           });
     r.add("identity", "no preconditioning: plain gradient descent",
-          [](const ParamObjective&, const PreconditionerSettings&) { return std::make_unique<IdentityPreconditioner>(); });
+          [](const ParamObjective&, const PreconditionerSettings&) {
+            return std::make_unique<IdentityPreconditioner>();
+          });
     return r;
   }();
   return registry;
@@ -65,6 +68,9 @@ const LineSearchRegistry& line_searches() {
     LineSearchRegistry r("line search");
     r.add("backtracking", "Armijo backtracking from min(1, 0.8 alpha_max), flip-free (Sec. 5.3)",
           [](const LineSearchSettings& settings) { return std::make_unique<BacktrackingLineSearch>(settings); });
+    r.add("wolfe-bisection",
+          "bisection on the weak Wolfe conditions (c2 0.9) inside the flip-free bound, as SLIM's code",
+          [](const LineSearchSettings& settings) { return std::make_unique<WolfeBisectionLineSearch>(settings); });
     return r;
   }();
   return registry;

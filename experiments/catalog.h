@@ -33,7 +33,8 @@ using LineSearchRegistry = Registry<LineSearch, const LineSearchSettings&>;
 // `--precond lbfgs` selects L-BFGS through Ceres, a solver of its own rather
 // than a preconditioner of our descent loop.
 inline constexpr const char* kLbfgsMethod = "lbfgs";
-inline constexpr const char* kLbfgsDescription = "L-BFGS through Ceres' GradientProblemSolver (Smith & Schaefer 2015 style)";
+inline constexpr const char* kLbfgsDescription =
+    "L-BFGS through Ceres' GradientProblemSolver (Smith & Schaefer 2015 style)";
 
 // Throws OptionsError listing every valid --precond name when `name` is none.
 void require_method(const std::string& name);

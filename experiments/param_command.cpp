@@ -27,8 +27,9 @@ std::vector<OptionSpec> optimization_options() {
       {"energy", "NAME", "distortion energy (default symmetric-dirichlet; see `akvf list`)"},
       {"exponent", "K", "exponent of exp-symmetric-dirichlet and amips (default 1)"},
       {"precond", "NAME", "akvf (default), newton, laplacian, slim, identity, or the solver lbfgs"},
-      {"line-search", "NAME", "line search (default backtracking)"},
-      {"akvf-reuse", "TAU", "AKVF: reuse the last factorization through CG to relative residual TAU\n"
+      {"line-search", "NAME", "backtracking (default) or wolfe-bisection"},
+      {"akvf-reuse", "TAU",
+       "AKVF: reuse the last factorization through CG to relative residual TAU\n"
        "                          (default 0.03; 0 = factor K every iteration, as in Algorithm 1)"},
       {"ls-rho", "X", "backtracking shrink factor (default 0.5; the paper's text says 0.9)"},
       {"init", "NAME", "initial map: tutte (uniform weights, default) or cotan"},
@@ -91,9 +92,8 @@ int run_and_write(const TriMesh& input, const std::string& name, const ParamConf
   const ParamSetup setup = prepare_parameterization(input, name, config);
   for (const auto& warning : setup.warnings) err << "warning: " << warning << '\n';
   const TriMesh& mesh = setup.disk.mesh;
-  out << name << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces; energy "
-      << config.energy << ", preconditioner " << config.preconditioner << ", " << setup.flaps_moved
-      << " flap vertices moved\n";
+  out << name << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces; energy " << config.energy
+      << ", preconditioner " << config.preconditioner << ", " << setup.flaps_moved << " flap vertices moved\n";
 
   std::vector<IterationCallback> callbacks;
   if (!quiet) callbacks.push_back(progress_printer(err));
@@ -101,10 +101,9 @@ int run_and_write(const TriMesh& input, const std::string& name, const ParamConf
   const OptimizerResult& result = run.result;
   const IterationSummary& last = result.trace.back();
   char summary[256];
-  std::snprintf(summary, sizeof summary,
-                "status %s after %d iterations, %.3f s: energy %.10f, gradient norm %.3e, %d inverted\n",
-                to_string(result.status).c_str(), last.iteration, last.seconds, last.energy, last.grad_norm,
-                last.flips);
+  std::snprintf(
+      summary, sizeof summary, "status %s after %d iterations, %.3f s: energy %.10f, gradient norm %.3e, %d inverted\n",
+      to_string(result.status).c_str(), last.iteration, last.seconds, last.energy, last.grad_norm, last.flips);
   out << summary;
   if (!run.preconditioner_report.empty()) out << run.preconditioner_name << ": " << run.preconditioner_report << '\n';
   if (!is_normal_termination(result.status)) err << "error: " << result.message << '\n';
@@ -118,8 +117,8 @@ int run_and_write(const TriMesh& input, const std::string& name, const ParamConf
     Eigen::MatrixXd compact_uv(mesh.num_vertices(), 2);
     for (int v = 0; v < mesh.num_vertices(); ++v) compact_uv.row(v) = UV.row(setup.disk.input_vertex[v]);
     write_uv_svg(outputs.svg, compact_uv, mesh.F, excess,
-                 name + " - " + run.preconditioner_name + ", " + std::to_string(last.iteration) + " iterations, E = " +
-                     std::to_string(last.energy));
+                 name + " - " + run.preconditioner_name + ", " + std::to_string(last.iteration) +
+                     " iterations, E = " + std::to_string(last.energy));
   }
   return is_normal_termination(result.status) ? kExitOk : kExitOptimizerFailure;
 }
@@ -133,10 +132,11 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
       {"svg", "LAYOUT.svg", "write the UV layout shaded by distortion"},
   };
   for (auto& spec : optimization_options()) specs.push_back(spec);
-  CommandLine cl("akvf param MESH.{obj,off} [options]\n\n"
-                 "Parameterizes a disk-topology triangle mesh by minimizing a distortion energy\n"
-                 "with a preconditioned, flip-free descent (Claici et al. 2017, Algorithm 1).",
-                 specs);
+  CommandLine cl(
+      "akvf param MESH.{obj,off} [options]\n\n"
+      "Parameterizes a disk-topology triangle mesh by minimizing a distortion energy\n"
+      "with a preconditioned, flip-free descent (Claici et al. 2017, Algorithm 1).",
+      specs);
   cl.parse(args);
   if (cl.has("help")) {
     out << cl.help();
@@ -147,18 +147,19 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   const ThreadLimit threads(cl.integer("threads", 0));
   const std::string& path = cl.positional()[0];
   const TriMesh input = read_triangle_mesh(path);
-  return run_and_write(input, path, config,
-                       {cl.text("out", ""), cl.text("trace", ""), cl.text("svg", "")}, cl.has("quiet"), out, err);
+  return run_and_write(input, path, config, {cl.text("out", ""), cl.text("trace", ""), cl.text("svg", "")},
+                       cl.has("quiet"), out, err);
 }
 
 int demo_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::vector<OptionSpec> specs = {{"out-dir", "DIR", "where to write the outputs (default akvf-demo)"}};
   for (auto& spec : optimization_options()) specs.push_back(spec);
-  CommandLine cl("akvf demo [--out-dir DIR] [options]\n\n"
-                 "Builds the bent bar of the paper's Figure 2 in code (a developable strip rolled\n"
-                 "onto a cylinder), parameterizes it, and writes demo_uv.obj, demo_trace.csv and\n"
-                 "demo_layout.svg. The optimum energy is exactly the lower bound 4.",
-                 specs);
+  CommandLine cl(
+      "akvf demo [--out-dir DIR] [options]\n\n"
+      "Builds the bent bar of the paper's Figure 2 in code (a developable strip rolled\n"
+      "onto a cylinder), parameterizes it, and writes demo_uv.obj, demo_trace.csv and\n"
+      "demo_layout.svg. The optimum energy is exactly the lower bound 4.",
+      specs);
   cl.parse(args);
   if (cl.has("help")) {
     out << cl.help();
@@ -169,10 +170,10 @@ int demo_command(const std::vector<std::string>& args, std::ostream& out, std::o
   const ThreadLimit threads(cl.integer("threads", 0));
   const std::filesystem::path dir = cl.text("out-dir", "akvf-demo");
   std::filesystem::create_directories(dir);
-  const int code = run_and_write(bent_bar(), "bent-bar", config,
-                                 {(dir / "demo_uv.obj").string(), (dir / "demo_trace.csv").string(),
-                                  (dir / "demo_layout.svg").string()},
-                                 cl.has("quiet"), out, err);
+  const int code = run_and_write(
+      bent_bar(), "bent-bar", config,
+      {(dir / "demo_uv.obj").string(), (dir / "demo_trace.csv").string(), (dir / "demo_layout.svg").string()},
+      cl.has("quiet"), out, err);
   out << "wrote " << (dir / "demo_uv.obj").string() << ", " << (dir / "demo_trace.csv").string() << ", "
       << (dir / "demo_layout.svg").string() << '\n';
   return code;

@@ -26,8 +26,8 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   Eigen::MatrixXd UV = tutte_embedding(normalized, setup.disk.boundary_loop, config.init, &setup.warnings);
   if (config.optimize_flaps) setup.flaps_moved = optimize_flaps(normalized, &UV);
   setup.x0 = stack_uv(UV);
-  setup.objective = std::make_shared<ParamObjective>(normalized.F, rest_triangles(normalized), density,
-                                                     normalized.num_vertices());
+  setup.objective =
+      std::make_shared<ParamObjective>(normalized.F, rest_triangles(normalized), density, normalized.num_vertices());
   return setup;
 }
 

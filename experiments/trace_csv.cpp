@@ -12,8 +12,8 @@ void write_trace_csv(std::ostream& out, const OptimizerResult& result) {
   for (std::size_t i = 0; i < result.trace.size(); ++i) {
     const IterationSummary& s = result.trace[i];
     out << s.iteration << ',' << s.seconds << ',' << s.energy << ',' << s.grad_norm << ',' << s.step << ','
-        << s.ls_evals << ',' << s.flips << ',' << s.max_step << ',' << s.precond_seconds << ','
-        << s.line_search_seconds << ',' << (i + 1 == result.trace.size() ? to_string(result.status) : "") << '\n';
+        << s.ls_evals << ',' << s.flips << ',' << s.max_step << ',' << s.precond_seconds << ',' << s.line_search_seconds
+        << ',' << (i + 1 == result.trace.size() ? to_string(result.status) : "") << '\n';
   }
 }
 

@@ -12,8 +12,8 @@ namespace {
 
 // White (0) through orange to dark red (>= 10), on log10(1 + d).
 std::string color_for(double excess) {
-  const double t = std::isfinite(excess) ? std::clamp(std::log10(1 + std::max(excess, 0.0)) / std::log10(11.0), 0.0, 1.0)
-                                         : 1.0;
+  const double t =
+      std::isfinite(excess) ? std::clamp(std::log10(1 + std::max(excess, 0.0)) / std::log10(11.0), 0.0, 1.0) : 1.0;
   const int r = static_cast<int>(255 - 115 * t * t);
   const int g = static_cast<int>(255 * (1 - t));
   const int b = static_cast<int>(255 * (1 - t) * (1 - t));
@@ -25,10 +25,14 @@ std::string color_for(double excess) {
 std::string xml_escape(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else out += c;
+    if (c == '&')
+      out += "&amp;";
+    else if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else
+      out += c;
   }
   return out;
 }

@@ -61,7 +61,8 @@ ElementMatrix2D::ElementMatrix2D(const Eigen::MatrixXi& F, int num_vertices) : F
     for (int s = 0; s < kSlotsPerFace; ++s) {
       const int* rows = upper_.innerIndexPtr();
       const int begin = upper_.outerIndexPtr()[targets[s].col], end = upper_.outerIndexPtr()[targets[s].col + 1];
-      slot_entry[kSlotsPerFace * f + s] = static_cast<int>(std::lower_bound(rows + begin, rows + end, targets[s].row) - rows);
+      slot_entry[kSlotsPerFace * f + s] =
+          static_cast<int>(std::lower_bound(rows + begin, rows + end, targets[s].row) - rows);
     }
   }
   // Invert it: for each nonzero, its contributing slots in increasing order,

@@ -12,7 +12,7 @@ namespace akvf {
 
 // Parameters shared by the line searches (each uses those that apply).
 struct LineSearchSettings {
-  double c1 = 1e-5;                // sufficient decrease: E(x + a d) <= E(x) + c1 a grad^T d
+  double c1 = 1e-5;  // sufficient decrease: E(x + a d) <= E(x) + c1 a grad^T d
   // Backtracking shrink factor. §5.3 of the paper states 0.9; the SLIM
   // framework the authors' code is built on halves the step, and halving
   // needs about half the iterations here (docs/performance.md), so 0.5 is
@@ -33,20 +33,20 @@ struct LineSearchSummary {
   double step = 0;               // accepted alpha (0 on failure: x is unchanged)
   double max_feasible_step = 0;  // alpha_max of §5.3
   double initial_step = 0;
-  double energy = 0;             // E(x + step d), or E(x) on failure
-  int evaluations = 0;           // energy evaluations
+  double energy = 0;    // E(x + step d), or E(x) on failure
+  int evaluations = 0;  // energy evaluations
   double seconds = 0;
-  std::string message;           // why it failed
+  std::string message;  // why it failed
 };
 
 struct LineSearchInput {
   const Objective& objective;
   const Eigen::VectorXd& x;
-  double energy;                   // E(x)
-  const Eigen::VectorXd& gradient; // grad E(x)
+  double energy;                    // E(x)
+  const Eigen::VectorXd& gradient;  // grad E(x)
   const Eigen::VectorXd& direction;
-  double directional_derivative;   // grad E(x) . d < 0
-  double max_feasible_step;        // sup t with no element inverted
+  double directional_derivative;  // grad E(x) . d < 0
+  double max_feasible_step;       // sup t with no element inverted
 };
 
 class LineSearch {

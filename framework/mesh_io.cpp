@@ -74,7 +74,8 @@ TriMesh read_obj(std::istream& in, const std::string& file_name) {
       raw.clear();
       for (std::size_t i = 1; i <= 3; ++i) raw.push_back(obj_corner_index(reader, t[i], vertices_so_far));
       for (long long index : raw) {
-        if (index > std::numeric_limits<int>::max()) reader.fail("face index " + std::to_string(index + 1) + " is too large");
+        if (index > std::numeric_limits<int>::max())
+          reader.fail("face index " + std::to_string(index + 1) + " is too large");
         corners.push_back(static_cast<int>(index));
       }
       face_lines.push_back(reader.line_number());
@@ -127,7 +128,8 @@ TriMesh read_off(std::istream& in, const std::string& file_name) {
                        "file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
     const long long n = reader.integer(0, "face corner count");
     if (n != 3)
-      reader.fail("face has " + std::to_string(n) + " corners; only triangles are supported (triangulate the mesh first)");
+      reader.fail("face has " + std::to_string(n) +
+                  " corners; only triangles are supported (triangulate the mesh first)");
     if (reader.tokens().size() < 4) reader.fail("face lists fewer than 3 vertex indices");
     for (std::size_t k = 1; k <= 3; ++k) {
       const long long index = reader.integer(k, "face index");
@@ -150,8 +152,8 @@ TriMesh read_triangle_mesh(const std::string& path) {
 
 void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV) {
   if (UV.rows() != mesh.V.rows() || UV.cols() != 2)
-    throw OutputError("UV matrix is " + std::to_string(UV.rows()) + "x" + std::to_string(UV.cols()) +
-                      ", expected " + std::to_string(mesh.V.rows()) + "x2");
+    throw OutputError("UV matrix is " + std::to_string(UV.rows()) + "x" + std::to_string(UV.cols()) + ", expected " +
+                      std::to_string(mesh.V.rows()) + "x2");
   write_file_atomically(path, [&](std::ostream& out) {
     out << std::setprecision(17);
     out << "# " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces, written by akvf\n";

@@ -65,8 +65,7 @@ std::vector<std::vector<int>> boundary_loops(const EdgeTopology& topology, int n
   std::vector<int> next(num_vertices, -1);
   for (const auto& [a, b] : topology.boundary_half_edges) {
     if (next[a] != -1)
-      throw ValidationError("vertex " + std::to_string(a) +
-                            " is non-manifold: two separate boundary fans meet there");
+      throw ValidationError("vertex " + std::to_string(a) + " is non-manifold: two separate boundary fans meet there");
     next[a] = b;
   }
   std::vector<std::vector<int>> loops;

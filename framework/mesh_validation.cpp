@@ -17,9 +17,8 @@ void check_finite_and_indices(const TriMesh& m, const std::string& name) {
   for (int f = 0; f < m.num_faces(); ++f) {
     for (int k = 0; k < 3; ++k)
       if (m.F(f, k) < 0 || m.F(f, k) >= m.num_vertices())
-        throw ValidationError(name + ": face " + std::to_string(f) + " has vertex index " +
-                              std::to_string(m.F(f, k)) + " out of range (" + std::to_string(m.num_vertices()) +
-                              " vertices)");
+        throw ValidationError(name + ": face " + std::to_string(f) + " has vertex index " + std::to_string(m.F(f, k)) +
+                              " out of range (" + std::to_string(m.num_vertices()) + " vertices)");
     if (m.F(f, 0) == m.F(f, 1) || m.F(f, 1) == m.F(f, 2) || m.F(f, 0) == m.F(f, 2))
       throw ValidationError(name + ": face " + std::to_string(f) + " uses the same vertex twice (" +
                             std::to_string(m.F(f, 0)) + ", " + std::to_string(m.F(f, 1)) + ", " +

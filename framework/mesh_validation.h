@@ -11,10 +11,10 @@ namespace akvf {
 // A mesh ready for parameterization, with the map back to the input's
 // vertex numbering (unreferenced input vertices are dropped).
 struct DiskMesh {
-  TriMesh mesh;                          // compacted: every vertex is used by a face
-  std::vector<int> input_vertex;         // #mesh.V: index in the input mesh
+  TriMesh mesh;                   // compacted: every vertex is used by a face
+  std::vector<int> input_vertex;  // #mesh.V: index in the input mesh
   int num_input_vertices = 0;
-  std::vector<int> boundary_loop;        // ordered, mesh to the left
+  std::vector<int> boundary_loop;  // ordered, mesh to the left
   Warnings warnings;
 };
 

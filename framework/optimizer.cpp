@@ -22,13 +22,20 @@ bool OptimizerOptions::is_valid(std::string* error) const {
 
 std::string to_string(TerminationStatus status) {
   switch (status) {
-    case TerminationStatus::kConverged: return "converged";
-    case TerminationStatus::kMaxIterations: return "max-iterations";
-    case TerminationStatus::kTimeLimit: return "time-limit";
-    case TerminationStatus::kStalled: return "stalled";
-    case TerminationStatus::kLineSearchFailed: return "line-search-failed";
-    case TerminationStatus::kNumericalFailure: return "numerical-failure";
-    case TerminationStatus::kUserStopped: return "user-stopped";
+    case TerminationStatus::kConverged:
+      return "converged";
+    case TerminationStatus::kMaxIterations:
+      return "max-iterations";
+    case TerminationStatus::kTimeLimit:
+      return "time-limit";
+    case TerminationStatus::kStalled:
+      return "stalled";
+    case TerminationStatus::kLineSearchFailed:
+      return "line-search-failed";
+    case TerminationStatus::kNumericalFailure:
+      return "numerical-failure";
+    case TerminationStatus::kUserStopped:
+      return "user-stopped";
   }
   return "unknown";
 }
@@ -81,9 +88,9 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     if (row.grad_norm < options.gradient_tolerance)
       return finish(TerminationStatus::kConverged, "gradient norm below " + std::to_string(options.gradient_tolerance));
     if (k > options.max_iterations)
-      return finish(TerminationStatus::kMaxIterations, "reached " + std::to_string(options.max_iterations) + " iterations");
-    if (elapsed() >= options.time_limit)
-      return finish(TerminationStatus::kTimeLimit, "reached the time limit");
+      return finish(TerminationStatus::kMaxIterations,
+                    "reached " + std::to_string(options.max_iterations) + " iterations");
+    if (elapsed() >= options.time_limit) return finish(TerminationStatus::kTimeLimit, "reached the time limit");
 
     const auto precond_start = Clock::now();
     preconditioner.update({x, gradient, energy, k});
@@ -93,8 +100,8 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     const Eigen::VectorXd direction = -preconditioned;
     const LineSearchSummary search = line_search.search(objective, x, energy, gradient, direction);
     if (!search.success)
-      return finish(TerminationStatus::kLineSearchFailed, "line search failed at iteration " + std::to_string(k) + ": " +
-                                                              search.message);
+      return finish(TerminationStatus::kLineSearchFailed,
+                    "line search failed at iteration " + std::to_string(k) + ": " + search.message);
     x += search.step * direction;
     const double previous = energy;
     energy = objective.value_and_gradient(x, &gradient);
@@ -112,15 +119,14 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     row.seconds = elapsed();
     if (!std::isfinite(energy) || !gradient.allFinite() || row.flips > 0) {
       result.trace.push_back(row);
-      return finish(TerminationStatus::kNumericalFailure,
-                    "iteration " + std::to_string(k) + " produced a non-finite energy or gradient (" +
-                        std::to_string(row.flips) + " inverted elements)");
+      return finish(TerminationStatus::kNumericalFailure, "iteration " + std::to_string(k) +
+                                                              " produced a non-finite energy or gradient (" +
+                                                              std::to_string(row.flips) + " inverted elements)");
     }
     if (notify(row)) return finish(TerminationStatus::kUserStopped, "stopped by a callback");
 
-    stalled_iterations = previous - energy <= options.stall_tolerance * std::max(1.0, std::abs(energy))
-                             ? stalled_iterations + 1
-                             : 0;
+    stalled_iterations =
+        previous - energy <= options.stall_tolerance * std::max(1.0, std::abs(energy)) ? stalled_iterations + 1 : 0;
     if (stalled_iterations >= options.stall_iterations)
       return finish(TerminationStatus::kStalled, "energy decreased by less than " +
                                                      std::to_string(options.stall_tolerance) + " (relative) for " +

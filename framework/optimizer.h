@@ -31,13 +31,13 @@ struct OptimizerOptions {
 };
 
 enum class TerminationStatus {
-  kConverged,          // gradient norm below tolerance
+  kConverged,  // gradient norm below tolerance
   kMaxIterations,
   kTimeLimit,
   kStalled,
-  kLineSearchFailed,   // no acceptable step; x is the last accepted iterate
-  kNumericalFailure,   // non-finite energy or gradient
-  kUserStopped,        // a callback asked to stop
+  kLineSearchFailed,  // no acceptable step; x is the last accepted iterate
+  kNumericalFailure,  // non-finite energy or gradient
+  kUserStopped,       // a callback asked to stop
 };
 std::string to_string(TerminationStatus status);
 // Converged, iteration or time limits, stall and user stops are normal ends;
@@ -46,14 +46,14 @@ bool is_normal_termination(TerminationStatus status);
 
 struct IterationSummary {
   int iteration = 0;
-  double seconds = 0;            // cumulative optimizer time at the end of this iteration
+  double seconds = 0;  // cumulative optimizer time at the end of this iteration
   double energy = 0;
-  double grad_norm = 0;          // ||grad E||_2 at the new iterate
-  double step = 0;               // accepted alpha (0 for row 0)
-  double max_step = 0;           // flip-free bound alpha_max
-  int ls_evals = 0;              // energy evaluations in the line search
-  int flips = 0;                 // inverted elements at the new iterate
-  double precond_seconds = 0;    // update + apply
+  double grad_norm = 0;        // ||grad E||_2 at the new iterate
+  double step = 0;             // accepted alpha (0 for row 0)
+  double max_step = 0;         // flip-free bound alpha_max
+  int ls_evals = 0;            // energy evaluations in the line search
+  int flips = 0;               // inverted elements at the new iterate
+  double precond_seconds = 0;  // update + apply
   double line_search_seconds = 0;
 };
 

@@ -1,10 +1,10 @@
 #include "framework/output_file.h"
 
+#include <unistd.h>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <unistd.h>
 
 #include "framework/error.h"
 

@@ -21,8 +21,8 @@ void for_each_index(int n, const Body& body) {
 }
 }  // namespace
 
-ParamObjective::ParamObjective(Eigen::MatrixXi F, RestTriangles rest,
-                               std::shared_ptr<const DistortionDensity2> density, int num_vertices)
+ParamObjective::ParamObjective(Eigen::MatrixXi F, RestTriangles rest, std::shared_ptr<const DistortionDensity2> density,
+                               int num_vertices)
     : F_(std::move(F)),
       rest_(std::move(rest)),
       density_(std::move(density)),

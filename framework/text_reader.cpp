@@ -7,8 +7,7 @@
 
 namespace akvf {
 
-TextReader::TextReader(std::istream& in, std::string file_name)
-    : in_(in), file_name_(std::move(file_name)) {}
+TextReader::TextReader(std::istream& in, std::string file_name) : in_(in), file_name_(std::move(file_name)) {}
 
 bool TextReader::next_line() {
   while (std::getline(in_, line_)) {
@@ -30,9 +29,7 @@ bool TextReader::next_line() {
   return false;
 }
 
-void TextReader::fail(const std::string& problem) const {
-  throw InputError(file_name_, line_number_, problem);
-}
+void TextReader::fail(const std::string& problem) const { throw InputError(file_name_, line_number_, problem); }
 
 double TextReader::real(std::size_t i, const char* what) const {
   if (i >= tokens_.size()) fail(std::string("missing ") + what);

@@ -41,9 +41,8 @@ FactoredPreconditioner2D::FactoredPreconditioner2D(const Eigen::MatrixXi& F, int
 }
 
 std::string FactoredPreconditioner2D::report() const {
-  return std::to_string(statistics_.factorizations) + " factorizations, " +
-         std::to_string(statistics_.reused_solves) + " solves with an earlier factor (" +
-         std::to_string(statistics_.cg_iterations) + " CG iterations)";
+  return std::to_string(statistics_.factorizations) + " factorizations, " + std::to_string(statistics_.reused_solves) +
+         " solves with an earlier factor (" + std::to_string(statistics_.cg_iterations) + " CG iterations)";
 }
 
 void FactoredPreconditioner2D::update(const OptimizationState& state) {
@@ -99,9 +98,7 @@ bool FactoredPreconditioner2D::solve_with_previous_factor(const Eigen::VectorXd&
   //   M^-1 = P_N P_N' (P' + eps I)^-1 P_N' P_N,
   // where P' is the factored (older) matrix, N' its null space and P_X the
   // orthogonal projector onto the complement of X.
-  const auto project = [](const Eigen::MatrixXd& basis, Eigen::VectorXd& v) {
-    v -= basis * (basis.transpose() * v);
-  };
+  const auto project = [](const Eigen::MatrixXd& basis, Eigen::VectorXd& v) { v -= basis * (basis.transpose() * v); };
   const auto A = matrix_.upper().selfadjointView<Eigen::Upper>();
   const auto precondition = [&](Eigen::VectorXd r, Eigen::VectorXd* z) {
     project(null_basis_, r);

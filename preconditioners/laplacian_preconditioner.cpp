@@ -16,8 +16,7 @@ void LaplacianPreconditioner2D::assemble(const OptimizationState&, ElementMatrix
     local->setZero();
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
-        local->block<2, 2>(2 * i, 2 * j) =
-            objective_.weights()[f] * grad[i].dot(grad[j]) * Eigen::Matrix2d::Identity();
+        local->block<2, 2>(2 * i, 2 * j) = objective_.weights()[f] * grad[i].dot(grad[j]) * Eigen::Matrix2d::Identity();
   });
 }
 

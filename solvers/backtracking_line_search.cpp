@@ -31,9 +31,9 @@ LineSearchSummary BacktrackingLineSearch::do_search(const LineSearchInput& in) c
     }
     alpha *= settings_.rho;
   }
-  summary.message = "no step satisfied the sufficient-decrease condition after " +
-                    std::to_string(summary.evaluations) + " evaluations (initial alpha " +
-                    std::to_string(summary.initial_step) + ", alpha_max " + std::to_string(in.max_feasible_step) + ")";
+  summary.message = "no step satisfied the sufficient-decrease condition after " + std::to_string(summary.evaluations) +
+                    " evaluations (initial alpha " + std::to_string(summary.initial_step) + ", alpha_max " +
+                    std::to_string(in.max_feasible_step) + ")";
   return summary;
 }
 

@@ -61,8 +61,8 @@ struct SparseCholesky::Impl {
   }
 
   cholmod_sparse lower_view() {
-    return view(static_cast<int>(permutation.size()), lower_column_start.data(), lower_row.data(),
-                lower_value.data(), -1);
+    return view(static_cast<int>(permutation.size()), lower_column_start.data(), lower_row.data(), lower_value.data(),
+                -1);
   }
 
   void check(const char* what) {

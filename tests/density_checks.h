@@ -28,8 +28,8 @@ Eigen::Matrix<double, Dim, Dim> random_jacobian(std::mt19937& rng, double smalle
 }
 
 template <int Dim>
-void check_density_derivatives(const DistortionDensity<Dim>& density, double smallest, double largest,
-                               int samples = 50, unsigned seed = 7) {
+void check_density_derivatives(const DistortionDensity<Dim>& density, double smallest, double largest, int samples = 50,
+                               unsigned seed = 7) {
   using M = Eigen::Matrix<double, Dim, Dim>;
   using H = typename DistortionDensity<Dim>::Hessian;
   constexpr int N = Dim * Dim;

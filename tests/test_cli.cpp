@@ -85,7 +85,8 @@ TEST_CASE("bad command lines exit 2 with a message") {
   CHECK(bad_value.err == "error: option --grad-tol: 'abc' is not a finite number\n");
   const Outcome precond = akvf_run({"demo", "--precond", "slim2", "--quiet", "--out-dir", scratch_dir("x").string()});
   CHECK(precond.code == akvf::kExitUsageError);
-  CHECK(precond.err == "error: unknown preconditioner 'slim2' (valid: akvf, newton, laplacian, slim, identity, lbfgs)\n");
+  CHECK(precond.err ==
+        "error: unknown preconditioner 'slim2' (valid: akvf, newton, laplacian, slim, identity, lbfgs)\n");
   CHECK(akvf_run({"frobnicate"}).code == akvf::kExitUsageError);
 }
 
@@ -95,8 +96,8 @@ TEST_CASE("a missing output directory is reported before any work") {
   const fs::path out = dir / "no-such-dir" / "uv.obj";
   const Outcome r = akvf_run({"param", (dir / "tri.obj").string(), "--quiet", "--out", out.string()});
   CHECK(r.code == akvf::kExitOutputError);
-  CHECK(r.err == "error: cannot write " + out.string() + ": directory " + (dir / "no-such-dir").string() +
-                     " does not exist\n");
+  CHECK(r.err ==
+        "error: cannot write " + out.string() + ": directory " + (dir / "no-such-dir").string() + " does not exist\n");
   CHECK(r.out.empty());
   fs::remove_all(dir);
 }

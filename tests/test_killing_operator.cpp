@@ -6,15 +6,14 @@
 
 #include "energies/distortion_energies.h"
 #include "energies/symmetric_dirichlet.h"
-#include "tests/density_checks.h"
 #include "framework/param_objective.h"
 #include "preconditioners/akvf_preconditioner.h"
+#include "preconditioners/killing_operator_2d.h"
 #include "preconditioners/laplacian_preconditioner.h"
 #include "preconditioners/newton_preconditioner.h"
 #include "preconditioners/slim_preconditioner.h"
-#include "preconditioners/killing_operator_2d.h"
+#include "tests/density_checks.h"
 #include "tests/test_support.h"
-
 
 namespace {
 
@@ -110,7 +109,8 @@ TEST_CASE("the quadratic form of K is the Killing energy Eq. (4), with and witho
   const PlanarMesh p = jittered_grid(6, 5);
   std::mt19937 rng(9);
   std::normal_distribution<double> n;
-  const Eigen::VectorXd rest_area = Eigen::VectorXd::NullaryExpr(p.F.rows(), [&](Eigen::Index) { return 0.01 + 0.001 * std::abs(n(rng)); });
+  const Eigen::VectorXd rest_area =
+      Eigen::VectorXd::NullaryExpr(p.F.rows(), [&](Eigen::Index) { return 0.01 + 0.001 * std::abs(n(rng)); });
   const Eigen::MatrixXd K = dense_killing(p.F, p.x, rest_area, false);
   const Eigen::MatrixXd K_scaled = dense_killing(p.F, p.x, rest_area, true);
   for (int trial = 0; trial < 5; ++trial) {

@@ -8,6 +8,7 @@
 #include "framework/flip_free_step.h"
 #include "framework/param_objective.h"
 #include "solvers/backtracking_line_search.h"
+#include "solvers/wolfe_bisection_line_search.h"
 #include "tests/test_support.h"
 
 using akvf::smallest_positive_root;
@@ -59,30 +60,36 @@ TEST_CASE("no step below the bound inverts a triangle (random directions on rand
   CHECK(tested >= 15);
 }
 
-TEST_CASE("the line search never returns a step that inverts a triangle") {
-  std::mt19937 rng(23);
-  std::normal_distribution<double> n;
-  const akvf::BacktrackingLineSearch search;
-  int tested = 0;
-  for (int trial = 0; trial < 20; ++trial) {
-    const akvf::TriMesh mesh = akvf::test::grid_disk(8, 8, 0.3, trial + 1);
-    const auto objective = make_objective(mesh);
-    const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(akvf::test::grid_disk(8, 8), 0.2, trial + 7));
-    if (objective.count_inverted(x) > 0) continue;
-    ++tested;
-    Eigen::VectorXd g;
-    const double energy = objective.value_and_gradient(x, &g);
-    // A random descent direction, scaled to reach far beyond the flip bound.
-    Eigen::VectorXd d = Eigen::VectorXd::NullaryExpr(x.size(), [&](Eigen::Index) { return n(rng); });
-    if (d.dot(g) > 0) d = -d;
-    d *= 100 / d.norm();
-    const auto summary = search.search(objective, x, energy, g, d);
-    REQUIRE(summary.success);
-    CHECK(summary.step <= 0.8 * summary.max_feasible_step);
-    CHECK(objective.count_inverted(x + summary.step * d) == 0);
-    CHECK(summary.energy < energy);
+TEST_CASE("neither line search ever returns a step that inverts a triangle") {
+  const akvf::BacktrackingLineSearch backtracking;
+  const akvf::WolfeBisectionLineSearch wolfe;
+  for (const akvf::LineSearch* line_search : std::initializer_list<const akvf::LineSearch*>{&backtracking, &wolfe}) {
+    CAPTURE(line_search->name());
+    const akvf::LineSearch& search = *line_search;
+    std::mt19937 rng(23);
+    std::normal_distribution<double> n;
+    int tested = 0;
+    for (int trial = 0; trial < 20; ++trial) {
+      const akvf::TriMesh mesh = akvf::test::grid_disk(8, 8, 0.3, trial + 1);
+      const auto objective = make_objective(mesh);
+      const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(akvf::test::grid_disk(8, 8), 0.2, trial + 7));
+      if (objective.count_inverted(x) > 0) continue;
+      ++tested;
+      Eigen::VectorXd g;
+      const double energy = objective.value_and_gradient(x, &g);
+      // A random descent direction, scaled to reach far beyond the flip bound.
+      Eigen::VectorXd d = Eigen::VectorXd::NullaryExpr(x.size(), [&](Eigen::Index) { return n(rng); });
+      if (d.dot(g) > 0) d = -d;
+      d *= 100 / d.norm();
+      const auto summary = search.search(objective, x, energy, g, d);
+      REQUIRE(summary.success);
+      CHECK(summary.step <= 0.8 * summary.max_feasible_step);
+      CHECK(objective.count_inverted(x + summary.step * d) == 0);
+      CHECK(summary.energy < energy);
+      CHECK(summary.energy <= energy + 1e-5 * summary.step * g.dot(d));  // Armijo
+    }
+    CHECK(tested >= 15);
   }
-  CHECK(tested >= 15);
 }
 
 TEST_CASE("the line search reports failure for an ascent direction and keeps x") {
@@ -107,4 +114,19 @@ TEST_CASE("line search settings are validated") {
   CHECK(error == "line search rho must be in (0, 1)");
   CHECK(akvf::test::error_message([&] { akvf::BacktrackingLineSearch bad(settings); }) ==
         "line search rho must be in (0, 1)");
+}
+
+TEST_CASE("Wolfe bisection satisfies the curvature condition on a smooth problem") {
+  const akvf::TriMesh mesh = akvf::test::grid_disk(6, 6);
+  const auto objective = make_objective(mesh);
+  const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(akvf::test::grid_disk(6, 6), 0.15, 2));
+  REQUIRE(objective.count_inverted(x) == 0);
+  Eigen::VectorXd g, g_new;
+  const double energy = objective.value_and_gradient(x, &g);
+  const Eigen::VectorXd d = -1e-3 * g;  // short: the minimum along d lies well inside the flip-free bound
+  const auto summary = akvf::WolfeBisectionLineSearch().search(objective, x, energy, g, d);
+  REQUIRE(summary.success);
+  objective.value_and_gradient(x + summary.step * d, &g_new);
+  CHECK(g_new.dot(d) >= 0.9 * g.dot(d));
+  CHECK(summary.step > 1.0);  // it extended beyond the initial step to satisfy curvature
 }

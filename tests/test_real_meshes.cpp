@@ -10,8 +10,8 @@
 
 namespace {
 
-const char* kDiskMeshes[] = {"camel_b.obj",  "cow_b.obj",       "tricera_b.obj", "horse_b.obj",    "camelhead.off",
-                             "hilbert_b.obj", "lilium.obj",      "snail.obj",     "inspired_mesh.obj", "bump-domain.obj"};
+const char* kDiskMeshes[] = {"camel_b.obj",   "cow_b.obj",  "tricera_b.obj", "horse_b.obj",       "camelhead.off",
+                             "hilbert_b.obj", "lilium.obj", "snail.obj",     "inspired_mesh.obj", "bump-domain.obj"};
 
 struct Run {
   akvf::OptimizerResult result;

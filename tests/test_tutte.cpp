@@ -41,7 +41,7 @@ TEST_CASE("flap optimization makes a flap triangle isometric to its 3D shape") {
   mesh.F.resize(2, 3);
   mesh.F << 0, 1, 2, 1, 3, 2;
   Eigen::MatrixXd UV(4, 2);
-  UV << 0, 0, 1, 0, 0, 1, 0.3, 0.3;  // vertex 3 badly placed (even inverted)
+  UV << 0, 0, 1, 0, 0, 1, 0.3, 0.3;             // vertex 3 badly placed (even inverted)
   CHECK(akvf::optimize_flaps(mesh, &UV) == 2);  // vertices 0 and 3 are flaps
   const auto rest = akvf::rest_triangles(mesh);
   // Face 1 = (1, 3, 2): its Jacobian is a rotation after the move.
