@@ -35,15 +35,11 @@ double checked_exponent(double k) {
 
 }  // namespace
 
-double Arap2::f(double s, double g) const { return s - 2 * std::sqrt(s + 2 * g) + 2; }
-
 InvariantDerivatives Arap2::derivatives(double s, double g) const {
   const double root = std::sqrt(s + 2 * g);
   const double inv3 = 1 / (root * root * root);
   return {s - 2 * root + 2, 1 - 1 / root, -2 / root, 0.5 * inv3, inv3, 2 * inv3};
 }
-
-double Mips2::f(double s, double g) const { return s / g; }
 
 InvariantDerivatives Mips2::derivatives(double s, double g) const {
   const double g2 = g * g;
@@ -54,8 +50,6 @@ ExpSymmetricDirichlet2::ExpSymmetricDirichlet2(double exponent) : exponent_(chec
 
 double ExpSymmetricDirichlet2::lower_bound() const { return std::exp(4 * exponent_); }
 
-double ExpSymmetricDirichlet2::f(double s, double g) const { return std::exp(exponent_ * s * (1 + 1 / (g * g))); }
-
 InvariantDerivatives ExpSymmetricDirichlet2::derivatives(double s, double g) const {
   return exponentiate(SymmetricDirichlet2::formula(s, g), exponent_);
 }
@@ -63,8 +57,6 @@ InvariantDerivatives ExpSymmetricDirichlet2::derivatives(double s, double g) con
 Amips2::Amips2(double exponent) : exponent_(checked_exponent(exponent)) {}
 
 double Amips2::lower_bound() const { return std::exp(exponent_); }
-
-double Amips2::f(double s, double g) const { return std::exp(exponent_ * amips_argument(s, g).f); }
 
 InvariantDerivatives Amips2::derivatives(double s, double g) const {
   return exponentiate(amips_argument(s, g), exponent_);

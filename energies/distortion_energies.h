@@ -14,7 +14,6 @@ class Arap2 final : public InvariantDensity2 {
   double lower_bound() const override { return 0.0; }
 
  protected:
-  double f(double s, double g) const override;
   InvariantDerivatives derivatives(double s, double g) const override;
 };
 
@@ -25,7 +24,6 @@ class Mips2 final : public InvariantDensity2 {
   double lower_bound() const override { return 2.0; }
 
  protected:
-  double f(double s, double g) const override;
   InvariantDerivatives derivatives(double s, double g) const override;
 };
 
@@ -38,7 +36,6 @@ class ExpSymmetricDirichlet2 final : public InvariantDensity2 {
   double lower_bound() const override;
 
  protected:
-  double f(double s, double g) const override;
   InvariantDerivatives derivatives(double s, double g) const override;
 
  private:
@@ -55,7 +52,6 @@ class Amips2 final : public InvariantDensity2 {
   double lower_bound() const override;
 
  protected:
-  double f(double s, double g) const override;
   InvariantDerivatives derivatives(double s, double g) const override;
 
  private:

@@ -16,7 +16,7 @@ Eigen::Vector4d cofactor(const Eigen::Matrix2d& J) { return {J(1, 1), -J(0, 1), 
 
 double InvariantDensity2::value(const Matrix& J) const {
   const double g = J.determinant();
-  return g > 0 ? f(J.squaredNorm(), g) : kInfinity;
+  return g > 0 ? derivatives(J.squaredNorm(), g).f : kInfinity;
 }
 
 double InvariantDensity2::value_and_gradient(const Matrix& J, Matrix* dD_dJ) const {

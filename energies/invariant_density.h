@@ -26,9 +26,8 @@ class InvariantDensity2 : public DistortionDensity2 {
   Eigen::Vector2d singular_value_gradient(const Eigen::Vector2d& sigma) const;
 
  protected:
-  // f(s, g) alone (g > 0).
-  virtual double f(double s, double g) const = 0;
-  // f and its partials (g > 0).
+  // f and its partials (g > 0). value() uses the same f, so the energy the
+  // line search sees and the one reported with the gradient agree bitwise.
   virtual InvariantDerivatives derivatives(double s, double g) const = 0;
 };
 

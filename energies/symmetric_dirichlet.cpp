@@ -2,8 +2,6 @@
 
 namespace akvf {
 
-double SymmetricDirichlet2::f(double s, double g) const { return s * (1 + 1 / (g * g)); }
-
 InvariantDerivatives SymmetricDirichlet2::derivatives(double s, double g) const { return formula(s, g); }
 
 InvariantDerivatives SymmetricDirichlet2::formula(double s, double g) {

@@ -14,7 +14,6 @@ class SymmetricDirichlet2 final : public InvariantDensity2 {
   static InvariantDerivatives formula(double s, double g);
 
  protected:
-  double f(double s, double g) const override;
   InvariantDerivatives derivatives(double s, double g) const override;
 };
 

@@ -28,6 +28,7 @@ std::vector<OptionSpec> optimization_options() {
       {"exponent", "K", "exponent of exp-symmetric-dirichlet and amips (default 1)"},
       {"precond", "NAME", "akvf (default), newton, laplacian, slim, identity, or the solver lbfgs"},
       {"line-search", "NAME", "backtracking (default) or wolfe-bisection"},
+      {"acceleration", "auto|on|off", "AQP momentum (default auto: on for --precond laplacian only)"},
       {"akvf-reuse", "TAU",
        "AKVF: reuse the last factorization through CG to relative residual TAU\n"
        "                          (default 0.03; 0 = factor K every iteration, as in Algorithm 1)"},
@@ -55,6 +56,7 @@ ParamConfig config_from(const CommandLine& cl) {
       cl.real("akvf-reuse", config.preconditioner_settings.akvf.factor.reuse_tolerance);
   const double tau = config.preconditioner_settings.akvf.factor.reuse_tolerance;
   if (!(tau >= 0 && tau < 1)) throw OptionsError("option --akvf-reuse must be in [0, 1)");
+  config.acceleration = cl.text("acceleration", config.acceleration);
   config.line_search_settings.rho = cl.real("ls-rho", config.line_search_settings.rho);
   if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
   config.init = parse_tutte_weights(cl.text("init", "tutte"));

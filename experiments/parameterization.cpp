@@ -8,6 +8,11 @@
 
 namespace akvf {
 
+namespace {
+// AQP's acceleration parameter eta (theta = (1 - 1/sqrt(eta)) / (1 + 1/sqrt(eta)) = 0.82).
+constexpr double kAqpEta = 100;
+}  // namespace
+
 ParamSetup prepare_parameterization(const TriMesh& input, const std::string& name, const ParamConfig& config) {
   std::string invalid;
   if (!config.optimizer.is_valid(&invalid)) throw OptionsError(invalid);
@@ -15,6 +20,8 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   // Resolve names first so a typo fails before any work.
   std::shared_ptr<const DistortionDensity2> density = energies_2d().create(config.energy, config.energy_settings);
   require_method(config.preconditioner);
+  if (config.acceleration != "auto" && config.acceleration != "on" && config.acceleration != "off")
+    throw OptionsError("acceleration must be auto, on or off, found '" + config.acceleration + "'");
   line_searches().require(config.line_search);
 
   ParamSetup setup;
@@ -34,16 +41,20 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks) {
   ParamRun run;
+  OptimizerOptions optimizer = config.optimizer;
+  const bool accelerate = config.acceleration == "on" ||
+                          (config.acceleration == "auto" && config.preconditioner == "laplacian");
+  optimizer.acceleration_eta = accelerate ? kAqpEta : 0;
   if (config.preconditioner == kLbfgsMethod) {
     run.preconditioner_name = kLbfgsMethod;
-    run.result = minimize_lbfgs(*setup.objective, setup.x0, config.optimizer, {}, callbacks);
+    run.result = minimize_lbfgs(*setup.objective, setup.x0, config.optimizer, {}, callbacks);  // no momentum
     return run;
   }
   auto preconditioner =
       preconditioners_2d().create(config.preconditioner, *setup.objective, config.preconditioner_settings);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
   run.preconditioner_name = preconditioner->name();
-  run.result = minimize(*setup.objective, *preconditioner, *line_search, setup.x0, config.optimizer, callbacks);
+  run.result = minimize(*setup.objective, *preconditioner, *line_search, setup.x0, optimizer, callbacks);
   run.preconditioner_report = preconditioner->report();
   return run;
 }

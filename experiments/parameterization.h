@@ -25,6 +25,9 @@ struct ParamConfig {
   // §5.4 flap optimization after the Tutte map (see docs/performance.md for
   // the measurement behind the default).
   bool optimize_flaps = true;
+  // AQP's momentum (OptimizerOptions::acceleration_eta): "auto" turns it on
+  // for the laplacian preconditioner only, as AQP pairs them.
+  std::string acceleration = "auto";
   OptimizerOptions optimizer;
 };
 

@@ -7,6 +7,30 @@
 
 namespace akvf {
 
+namespace {
+
+// AQP's extrapolated point y = x + theta (x - previous), or nothing when it
+// is not allowed (first iteration, no motion, an inverted element, or higher
+// energy than at x).
+struct Extrapolation {
+  Eigen::VectorXd y, gradient;
+  double energy = 0;
+};
+
+bool extrapolate(const Objective& objective, const Eigen::VectorXd& x, const Eigen::VectorXd& previous, double energy,
+                 double eta, Extrapolation* out) {
+  const Eigen::VectorXd motion = x - previous;
+  if (!(motion.squaredNorm() > 0)) return false;
+  const double root = 1 / std::sqrt(eta);
+  const double theta = std::min((1 - root) / (1 + root), 0.8 * objective.max_feasible_step(x, motion));
+  if (!(theta > 0)) return false;
+  out->y = x + theta * motion;
+  out->energy = objective.value_and_gradient(out->y, &out->gradient);
+  return out->energy <= energy && out->gradient.allFinite();
+}
+
+}  // namespace
+
 bool OptimizerOptions::is_valid(std::string* error) const {
   auto fail = [&](const std::string& message) {
     if (error) *error = message;
@@ -17,6 +41,7 @@ bool OptimizerOptions::is_valid(std::string* error) const {
   if (!(time_limit > 0)) return fail("time limit must be > 0 seconds");
   if (!(stall_tolerance >= 0)) return fail("stall tolerance must be >= 0");
   if (stall_iterations < 1) return fail("stall iterations must be >= 1");
+  if (!(acceleration_eta == 0 || acceleration_eta > 1)) return fail("acceleration eta must be 0 (off) or > 1");
   return true;
 }
 
@@ -84,6 +109,8 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
   if (notify(row)) return finish(TerminationStatus::kUserStopped, "stopped by a callback");
 
   int stalled_iterations = 0;
+  Eigen::VectorXd previous = x;
+  Extrapolation extrapolation;
   for (int k = 1;; ++k) {
     if (row.grad_norm < options.gradient_tolerance)
       return finish(TerminationStatus::kConverged, "gradient norm below " + std::to_string(options.gradient_tolerance));
@@ -92,18 +119,27 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
                     "reached " + std::to_string(options.max_iterations) + " iterations");
     if (elapsed() >= options.time_limit) return finish(TerminationStatus::kTimeLimit, "reached the time limit");
 
+    // The point the step starts from: x, or AQP's extrapolation of it.
+    const bool accelerated = options.acceleration_eta > 0 &&
+                             extrapolate(objective, x, previous, energy, options.acceleration_eta, &extrapolation);
+    const Eigen::VectorXd& start_x = accelerated ? extrapolation.y : x;
+    const Eigen::VectorXd& start_gradient = accelerated ? extrapolation.gradient : gradient;
+    const double start_energy = accelerated ? extrapolation.energy : energy;
+
     const auto precond_start = Clock::now();
-    preconditioner.update({x, gradient, energy, k});
-    preconditioner.apply(gradient, &preconditioned);
+    preconditioner.update({start_x, start_gradient, start_energy, k});
+    preconditioner.apply(start_gradient, &preconditioned);
     const double precond_seconds = std::chrono::duration<double>(Clock::now() - precond_start).count();
 
     const Eigen::VectorXd direction = -preconditioned;
-    const LineSearchSummary search = line_search.search(objective, x, energy, gradient, direction);
+    const LineSearchSummary search = line_search.search(objective, start_x, start_energy, start_gradient, direction);
     if (!search.success)
       return finish(TerminationStatus::kLineSearchFailed,
                     "line search failed at iteration " + std::to_string(k) + ": " + search.message);
-    x += search.step * direction;
-    const double previous = energy;
+    Eigen::VectorXd next = start_x + search.step * direction;
+    previous.swap(x);
+    x.swap(next);
+    const double previous_energy = energy;
     energy = objective.value_and_gradient(x, &gradient);
 
     row = IterationSummary{};
@@ -126,7 +162,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     if (notify(row)) return finish(TerminationStatus::kUserStopped, "stopped by a callback");
 
     stalled_iterations =
-        previous - energy <= options.stall_tolerance * std::max(1.0, std::abs(energy)) ? stalled_iterations + 1 : 0;
+        previous_energy - energy <= options.stall_tolerance * std::max(1.0, std::abs(energy)) ? stalled_iterations + 1 : 0;
     if (stalled_iterations >= options.stall_iterations)
       return finish(TerminationStatus::kStalled, "energy decreased by less than " +
                                                      std::to_string(options.stall_tolerance) + " (relative) for " +

@@ -25,6 +25,13 @@ struct OptimizerOptions {
   // stall_iterations consecutive iterations (progress below round-off).
   double stall_tolerance = 1e-13;
   int stall_iterations = 10;
+  // Momentum of AQP (Kovalsky, Galun and Lipman 2016), 0 = off. Before each
+  // step the iterate is extrapolated to y = x_k + theta (x_k - x_{k-1}) with
+  // theta = (1 - 1/sqrt(eta)) / (1 + 1/sqrt(eta)), capped at 0.8 of the
+  // flip-free step along x_k - x_{k-1}; the direction and the line search
+  // start from y. If E(y) > E(x_k) the step starts from x_k instead, so the
+  // energy never increases.
+  double acceleration_eta = 0;
 
   // True if every option is in range; otherwise *error says which is not.
   bool is_valid(std::string* error) const;

@@ -4,6 +4,9 @@
 
 #include <tbb/global_control.h>
 
+#include <cmath>
+
+#include "experiments/catalog.h"
 #include "experiments/demo_mesh.h"
 #include "experiments/parameterization.h"
 #include "framework/error.h"
@@ -164,4 +167,47 @@ TEST_CASE("L-BFGS through Ceres decreases the energy without inverting, with our
   CHECK(setup.objective->value_and_gradient(result.x, &g) == doctest::Approx(result.trace.back().energy));
   CHECK(g.norm() == doctest::Approx(result.trace.back().grad_norm).epsilon(1e-9));
   CHECK(setup.objective->count_inverted(result.x) == 0);
+}
+
+TEST_CASE("every energy with every preconditioner and line search: 30 iterations, no flip, energy never rises") {
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(9, 9);
+  for (const auto& [energy, unused] : akvf::energies_2d().entries()) {
+    std::vector<std::string> methods;
+    for (const auto& [name, description] : akvf::preconditioners_2d().entries()) methods.push_back(name);
+    methods.push_back(akvf::kLbfgsMethod);
+    for (const std::string& method : methods)
+      for (const char* line_search : {"backtracking", "wolfe-bisection"}) {
+        if (method == akvf::kLbfgsMethod && std::string(line_search) != "backtracking") continue;  // Ceres' own
+        const std::string label = energy + " / " + method + " / " + line_search;
+        INFO(label);
+        ParamConfig config;
+        config.energy = energy;
+        config.energy_settings.exponent = 0.1;
+        config.preconditioner = method;
+        config.line_search = line_search;
+        config.optimizer.max_iterations = 30;
+        config.optimizer.gradient_tolerance = 0;
+        const auto result = run(mesh, config, {no_flips_allowed()}).result;
+        INFO(result.message);
+        CHECK(akvf::is_normal_termination(result.status));
+        REQUIRE(result.trace.size() >= 2);
+        CHECK(std::isfinite(result.trace.front().energy));
+        for (std::size_t i = 1; i < result.trace.size(); ++i)
+          CHECK(result.trace[i].energy <= result.trace[i - 1].energy);
+        CHECK(result.trace.back().energy < result.trace.front().energy);
+      }
+  }
+}
+
+TEST_CASE("AQP acceleration keeps the energy non-increasing and never flips") {
+  ParamConfig config;
+  config.preconditioner = "laplacian";
+  config.acceleration = "on";
+  config.optimizer.max_iterations = 50;
+  config.optimizer.gradient_tolerance = 0;
+  const auto result = run(akvf::test::bumpy_disk(12, 12), config, {no_flips_allowed()}).result;
+  for (std::size_t i = 1; i < result.trace.size(); ++i) CHECK(result.trace[i].energy <= result.trace[i - 1].energy);
+  config.acceleration = "sometimes";
+  CHECK(akvf::test::error_message([&] { run(akvf::test::bumpy_disk(4, 4), config); }) ==
+        "acceleration must be auto, on or off, found 'sometimes'");
 }
