@@ -81,7 +81,7 @@ void check_output_path(const std::string& path) {
 IterationCallback progress_printer(std::ostream& err) {
   return [&err](const IterationSummary& s, const Eigen::VectorXd&) {
     char line[200];
-    std::snprintf(line, sizeof line, "iter %4d  t %8.3fs  E %.10f  |g| %.3e  step %.2e  ls %3d  flips %d\n",
+    std::snprintf(line, sizeof line, "iter %4d  t %8.3fs  E %.10g  |g| %.3e  step %.2e  ls %3d  flips %d\n",
                   s.iteration, s.seconds, s.energy, s.grad_norm, s.step, s.ls_evals, s.flips);
     err << line << std::flush;
     return CallbackAction::kContinue;
@@ -104,7 +104,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const ParamConf
   const IterationSummary& last = result.trace.back();
   char summary[256];
   std::snprintf(
-      summary, sizeof summary, "status %s after %d iterations, %.3f s: energy %.10f, gradient norm %.3e, %d inverted\n",
+      summary, sizeof summary, "status %s after %d iterations, %.3f s: energy %.10g, gradient norm %.3e, %d inverted\n",
       to_string(result.status).c_str(), last.iteration, last.seconds, last.energy, last.grad_norm, last.flips);
   out << summary;
   if (!run.preconditioner_report.empty()) out << run.preconditioner_name << ": " << run.preconditioner_report << '\n';

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "framework/error.h"
@@ -89,7 +90,12 @@ OptimizerResult minimize_lbfgs(const Objective& objective, Eigen::VectorXd x, co
   if (!options.is_valid(&invalid)) throw OptionsError(invalid);
   if (lbfgs.memory < 1) throw OptionsError("L-BFGS memory must be >= 1");
   OptimizerResult result;
-  if (!std::isfinite(objective.value(x))) {
+  if (const double energy = objective.value(x); !std::isfinite(energy)) {
+    IterationSummary row;  // row 0 still describes the initial map
+    row.energy = energy;
+    row.grad_norm = std::numeric_limits<double>::quiet_NaN();
+    row.flips = objective.count_inverted(x);
+    result.trace.push_back(row);
     result.x = std::move(x);
     result.status = TerminationStatus::kNumericalFailure;
     result.message = "the initial energy is not finite";

@@ -5,6 +5,7 @@
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <limits>
 
 #include "experiments/catalog.h"
 #include "experiments/demo_mesh.h"
@@ -167,6 +168,19 @@ TEST_CASE("L-BFGS through Ceres decreases the energy without inverting, with our
   CHECK(setup.objective->value_and_gradient(result.x, &g) == doctest::Approx(result.trace.back().energy));
   CHECK(g.norm() == doctest::Approx(result.trace.back().grad_norm).epsilon(1e-9));
   CHECK(setup.objective->count_inverted(result.x) == 0);
+}
+
+TEST_CASE("every method reports a non-finite start with a status and a row 0") {
+  for (const char* method : {"akvf", "lbfgs"}) {
+    ParamConfig config;
+    config.preconditioner = method;
+    config.energy = "exp-symmetric-dirichlet";
+    config.energy_settings.exponent = 1e6;  // exp overflows at the start
+    const auto result = run(akvf::test::bumpy_disk(5, 5), config).result;
+    CHECK(result.status == TerminationStatus::kNumericalFailure);
+    REQUIRE(result.trace.size() == 1);
+    CHECK(result.trace[0].energy == std::numeric_limits<double>::infinity());
+  }
 }
 
 TEST_CASE("every energy with every preconditioner and line search: 30 iterations, no flip, energy never rises") {
