@@ -9,6 +9,11 @@
 namespace akvf {
 
 namespace {
+// The energy whose minimizer starts energies that are infinite at the Tutte map.
+constexpr const char* kWarmStartEnergy = "symmetric-dirichlet";
+
+void warm_start(const ParamConfig& config, ParamSetup* setup);
+
 // AQP's acceleration parameter eta (theta = (1 - 1/sqrt(eta)) / (1 + 1/sqrt(eta)) = 0.82).
 constexpr double kAqpEta = 100;
 }  // namespace
@@ -35,8 +40,11 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   setup.x0 = stack_uv(UV);
   setup.objective =
       std::make_shared<ParamObjective>(normalized.F, rest_triangles(normalized), density, normalized.num_vertices());
+  if (!std::isfinite(setup.objective->value(setup.x0)) && config.energy != kWarmStartEnergy)
+    warm_start(config, &setup);
   return setup;
 }
+
 
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks) {
@@ -72,5 +80,31 @@ Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
   for (int v = 0; v < UV.rows(); ++v) out.row(setup.disk.input_vertex[v]) = scale * UV.row(v);
   return out;
 }
+
+namespace {
+
+void warm_start(const ParamConfig& config, ParamSetup* setup) {
+  // The exponential energies overflow at the Tutte map's slivers. Start them
+  // instead from the symmetric Dirichlet minimizer (AKVF, gradient 1e-3),
+  // which is finite for every energy here.
+  ParamConfig sd_config;
+  sd_config.energy = kWarmStartEnergy;
+  sd_config.optimizer.max_iterations = config.optimizer.max_iterations;
+  ParamSetup sd_setup = *setup;
+  sd_setup.objective = std::make_shared<ParamObjective>(setup->objective->faces(), setup->objective->rest(),
+                                                        energies_2d().create(kWarmStartEnergy, {}),
+                                                        setup->objective->num_vertices());
+  const OptimizerResult warm = run_parameterization(sd_setup, sd_config).result;
+  if (!is_normal_termination(warm.status) || !std::isfinite(setup->objective->value(warm.x))) {
+    setup->warnings.push_back(config.energy + " is infinite at the initial map and at the symmetric Dirichlet "
+                              "minimizer; the run will stop at once");
+    return;
+  }
+  setup->x0 = warm.x;
+  setup->warnings.push_back(config.energy + " is infinite at the Tutte map; starting from the symmetric Dirichlet "
+                            "minimizer instead (" + std::to_string(warm.trace.back().iteration) + " AKVF iterations)");
+}
+
+}  // namespace
 
 }  // namespace akvf

@@ -2,6 +2,7 @@
 // iterate, and the paper's meshes reach their reference energies.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "experiments/parameterization.h"
@@ -63,4 +64,49 @@ TEST_CASE("the paper's meshes reach the reference energies with grad norm < 1e-3
     CHECK(run.result.trace.back().energy <= ref.energy);
     CHECK(run.inverted_iterates == 0);
   }
+}
+
+TEST_CASE("newton and akvf agree on the final symmetric Dirichlet energy to 1e-6") {
+  const std::string dir = akvf::test::data_dir();
+  if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
+  for (const char* name : {"camel_b.obj", "cow_b.obj", "horse_b.obj"}) {
+    CAPTURE(name);
+    double energy[2];
+    int i = 0;
+    for (const char* method : {"akvf", "newton"}) {
+      akvf::ParamConfig config;
+      config.preconditioner = method;
+      config.optimizer.gradient_tolerance = 1e-6;
+      const std::string path = dir + "/tri/" + name;
+      const auto setup = akvf::prepare_parameterization(akvf::read_triangle_mesh(path), path, config);
+      const auto result = akvf::run_parameterization(setup, config).result;
+      CHECK(result.status == akvf::TerminationStatus::kConverged);
+      energy[i++] = result.trace.back().energy;
+    }
+    CHECK(std::abs(energy[0] - energy[1]) <= 1e-6 * energy[0]);
+  }
+}
+
+TEST_CASE("every method with symmetric Dirichlet on every disk mesh: no flip, energy below its start") {
+  const std::string dir = akvf::test::data_dir();
+  if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
+  for (const char* name : kDiskMeshes)
+    for (const char* method : {"slim", "newton", "laplacian", "identity", "lbfgs"}) {
+      const std::string label = std::string(name) + " / " + method;
+      INFO(label);
+      akvf::ParamConfig config;
+      config.preconditioner = method;
+      config.optimizer.max_iterations = 20;
+      const std::string path = dir + "/tri/" + name;
+      const auto setup = akvf::prepare_parameterization(akvf::read_triangle_mesh(path), path, config);
+      int inverted_iterates = 0;
+      auto check = [&](const akvf::IterationSummary& s, const Eigen::VectorXd& x) {
+        inverted_iterates += s.flips > 0 || setup.objective->count_inverted(x) > 0;
+        return akvf::CallbackAction::kContinue;
+      };
+      const auto result = akvf::run_parameterization(setup, config, {check}).result;
+      CHECK(inverted_iterates == 0);
+      CHECK(akvf::is_normal_termination(result.status));
+      CHECK(result.trace.back().energy < result.trace.front().energy);
+    }
 }
