@@ -111,6 +111,17 @@ void BM_Solve(benchmark::State& state, const std::string& mesh) {
   }
 }
 
+void BM_SymmetricProduct(benchmark::State& state, const std::string& mesh) {
+  REQUIRE_FIXTURE(state, mesh);
+  const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
+  const Eigen::VectorXd x = f->x;
+  Eigen::VectorXd y(x.size());
+  for (auto _ : state) {
+    y.noalias() = K.upper().selfadjointView<Eigen::Upper>() * x;
+    benchmark::DoNotOptimize(y.data());
+  }
+}
+
 void BM_WholeIteration(benchmark::State& state, const std::string& mesh) {
   REQUIRE_FIXTURE(state, mesh);
   const akvf::ParamObjective& objective = *f->setup.objective;
@@ -138,6 +149,8 @@ void register_all() {
     benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("SymmetricProduct/" + mesh).c_str(), BM_SymmetricProduct, mesh)
+        ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("WholeIteration/" + mesh).c_str(), BM_WholeIteration, mesh)
         ->Unit(benchmark::kMillisecond);
   }
