@@ -98,6 +98,15 @@ void BM_NumericFactorization(benchmark::State& state, const std::string& mesh) {
   state.counters["flops"] = benchmark::Counter(cholesky.factor_flops(), benchmark::Counter::kIsIterationInvariantRate);
 }
 
+void BM_SymbolicAnalysis(benchmark::State& state, const std::string& mesh) {
+  REQUIRE_FIXTURE(state, mesh);
+  const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
+  for (auto _ : state) {
+    akvf::SparseCholesky cholesky;
+    cholesky.analyze(K.upper());
+  }
+}
+
 void BM_Solve(benchmark::State& state, const std::string& mesh) {
   REQUIRE_FIXTURE(state, mesh);
   const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
@@ -147,6 +156,8 @@ void register_all() {
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Energy/" + mesh).c_str(), BM_Energy, mesh)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("SymbolicAnalysis/" + mesh).c_str(), BM_SymbolicAnalysis, mesh)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("SymmetricProduct/" + mesh).c_str(), BM_SymmetricProduct, mesh)
