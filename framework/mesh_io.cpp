@@ -7,91 +7,16 @@
 #include <iomanip>
 
 #include "framework/error.h"
+#include "framework/mesh_text.h"
 #include "framework/output_file.h"
 #include "framework/text_reader.h"
 
 namespace akvf {
 
-namespace {
-
-// Upper bound on what a header count may make us reserve before the data is
-// seen; larger meshes simply grow their vectors as rows arrive.
-constexpr long long kMaxReserve = 1 << 20;
-
-TriMesh to_mesh(const std::vector<double>& coords, const std::vector<int>& corners) {
-  TriMesh mesh;
-  const auto nv = static_cast<Eigen::Index>(coords.size() / 3);
-  const auto nf = static_cast<Eigen::Index>(corners.size() / 3);
-  mesh.V = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(coords.data(), nv, 3);
-  mesh.F = Eigen::Map<const Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>>(corners.data(), nf, 3);
-  return mesh;
-}
-
-// The vertex index of an OBJ face corner `a`, `a/b`, `a//c` or `a/b/c`.
-long long obj_corner_index(const TextReader& reader, std::string_view token, long long vertices_so_far) {
-  const std::string_view head = token.substr(0, token.find('/'));
-  long long index = 0;
-  if (!parse_integer(head, &index))
-    reader.fail("face corner '" + std::string(token) + "' does not start with a vertex index");
-  if (index == 0) reader.fail("face corner '" + std::string(token) + "': OBJ indices start at 1, not 0");
-  if (index < 0) {
-    const long long resolved = vertices_so_far + index;
-    if (resolved < 0)
-      reader.fail("relative face index " + std::to_string(index) + " reaches before the first vertex (" +
-                  std::to_string(vertices_so_far) + " vertices so far)");
-    return resolved;
-  }
-  return index - 1;
-}
-
-std::string lowercase_extension(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string ext = path.substr(dot);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
-}  // namespace
 
 TriMesh read_obj(std::istream& in, const std::string& file_name) {
-  TextReader reader(in, file_name);
-  std::vector<double> coords;
-  std::vector<int> corners;
-  std::vector<long> face_lines;
-  std::vector<long long> raw;
-  while (reader.next_line()) {
-    const auto& t = reader.tokens();
-    if (t[0] == "v") {
-      if (t.size() < 4) reader.fail("vertex needs three coordinates, found " + std::to_string(t.size() - 1));
-      for (std::size_t i = 1; i <= 3; ++i) coords.push_back(reader.real(i, "vertex coordinate"));
-    } else if (t[0] == "f") {
-      if (t.size() != 4)
-        reader.fail("face has " + std::to_string(t.size() - 1) +
-                    " corners; only triangles are supported (triangulate the mesh first)");
-      const long long vertices_so_far = static_cast<long long>(coords.size() / 3);
-      raw.clear();
-      for (std::size_t i = 1; i <= 3; ++i) raw.push_back(obj_corner_index(reader, t[i], vertices_so_far));
-      for (long long index : raw) {
-        if (index > std::numeric_limits<int>::max())
-          reader.fail("face index " + std::to_string(index + 1) + " is too large");
-        corners.push_back(static_cast<int>(index));
-      }
-      face_lines.push_back(reader.line_number());
-    }
-    // vt, vn, vp, g, o, s, l, usemtl, mtllib and unknown records carry nothing we use.
-  }
-  const long long nv = static_cast<long long>(coords.size() / 3);
-  for (std::size_t f = 0; f < face_lines.size(); ++f)
-    for (int k = 0; k < 3; ++k)
-      if (corners[3 * f + k] >= nv)
-        throw InputError(file_name, face_lines[f],
-                         "face index " + std::to_string(corners[3 * f + k] + 1) + " out of range (" +
-                             std::to_string(nv) + " vertices)");
-  if (nv == 0) throw InputError(file_name, 0, "no vertices");
-  if (face_lines.empty()) throw InputError(file_name, 0, "no faces");
-  return to_mesh(coords, corners);
+  const RawElements raw = read_obj_elements(in, file_name, 3, "face", "only triangles are supported (triangulate the mesh first)");
+  return {rows_to_matrix<double, 3>(raw.coords), rows_to_matrix<int, 3>(raw.corners)};
 }
 
 TriMesh read_off(std::istream& in, const std::string& file_name) {
@@ -138,15 +63,14 @@ TriMesh read_off(std::istream& in, const std::string& file_name) {
       corners.push_back(static_cast<int>(index));
     }
   }
-  return to_mesh(coords, corners);
+  return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 3>(corners)};
 }
 
 TriMesh read_triangle_mesh(const std::string& path) {
   const std::string ext = lowercase_extension(path);
   if (ext != ".obj" && ext != ".off")
     throw InputError(path, 0, "unsupported mesh format '" + ext + "' (expected .obj or .off)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  std::ifstream in = open_mesh_file(path);
   return ext == ".obj" ? read_obj(in, path) : read_off(in, path);
 }
 

@@ -7,7 +7,8 @@
 
 namespace akvf {
 
-TextReader::TextReader(std::istream& in, std::string file_name) : in_(in), file_name_(std::move(file_name)) {}
+TextReader::TextReader(std::istream& in, std::string file_name, long lines_already_read)
+    : in_(in), file_name_(std::move(file_name)), line_number_(lines_already_read) {}
 
 bool TextReader::next_line() {
   while (std::getline(in_, line_)) {

@@ -11,7 +11,8 @@ namespace akvf {
 
 class TextReader {
  public:
-  TextReader(std::istream& in, std::string file_name);
+  // lines_already_read: lines of `in` consumed before, for the line numbers.
+  TextReader(std::istream& in, std::string file_name, long lines_already_read = 0);
 
   // Advances to the next line that has at least one token. Returns false at
   // the end of the input.
