@@ -22,7 +22,7 @@
 // further attempts for 1, 2, 4, ... iterations after consecutive failures.
 #include <string>
 
-#include "framework/element_matrix_2d.h"
+#include "framework/element_matrix.h"
 #include "framework/preconditioner.h"
 #include "solvers/sparse_cholesky.h"
 

@@ -1,0 +1,59 @@
+#pragma once
+// Symmetric sparse matrices on the interleaved vertex dofs (D per vertex:
+// x_0, y_0[, z_0], x_1, ...) of a mesh whose elements have N vertices,
+// assembled from one symmetric (D N) x (D N) local matrix per element (dof
+// order: corner 0's D coordinates, then corner 1's, ...). The Killing
+// operator (triangles, Eq. 5; tets, Eq. 9-10), the projected Newton Hessian,
+// the SLIM proxy and the Laplacian all have this form.
+//
+// The sparsity pattern (the upper triangle of D x D blocks for each vertex
+// and edge) is built once from the elements. Each local matrix's upper
+// triangle, D N (D N + 1) / 2 numbers, goes to the global upper triangle;
+// assemble() computes the local matrices in parallel and gathers every
+// nonzero from its contributions in a fixed order, so the result is bitwise
+// identical for any thread count.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <functional>
+#include <vector>
+
+namespace akvf {
+
+template <int D, int N>
+class ElementMatrix {
+ public:
+  static constexpr int kLocalSize = D * N;
+  using Local = Eigen::Matrix<double, kLocalSize, kLocalSize>;
+  // Fills the local matrix of element e (only its upper triangle is read).
+  using LocalFunction = std::function<void(int e, Local* local)>;
+
+  //   elements  #E by N vertex indices
+  ElementMatrix(const Eigen::MatrixXi& elements, int num_vertices);
+
+  void assemble(const LocalFunction& local);
+  // upper() += shift I (Tikhonov regularization).
+  void add_to_diagonal(double shift);
+
+  // Upper triangle, column-major compressed, D|V| by D|V|.
+  const Eigen::SparseMatrix<double>& upper() const { return upper_; }
+  // Mean of the diagonal of the last assembled matrix (before any shift).
+  double mean_diagonal() const { return mean_diagonal_; }
+  // The full symmetric matrix (for tests and small problems).
+  Eigen::SparseMatrix<double> full() const;
+
+ private:
+  static constexpr int kSlots = kLocalSize * (kLocalSize + 1) / 2;
+
+  Eigen::MatrixXi elements_;
+  Eigen::SparseMatrix<double> upper_;
+  std::vector<double> element_buffer_;  // #E x kSlots local values
+  std::vector<int> gather_offsets_;     // per nonzero: its contributions in gather_sources_
+  std::vector<int> gather_sources_;     // indices into element_buffer_
+  std::vector<int> diagonal_entries_;   // nonzero index of each (i, i)
+  double mean_diagonal_ = 0;
+};
+
+using ElementMatrix2D = ElementMatrix<2, 3>;  // triangles in the plane
+using ElementMatrix3D = ElementMatrix<3, 4>;  // tetrahedra in space
+
+}  // namespace akvf
