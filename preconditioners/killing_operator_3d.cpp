@@ -1,0 +1,51 @@
+#include "preconditioners/killing_operator_3d.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/QR>
+
+namespace akvf {
+
+void killing_local_matrix_3d(const Eigen::Vector3d p[4], ElementMatrix3D::Local* local) {
+  const double volume = (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])) / 6;
+  local->setZero();
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      // The other two corners, in either order (Eq. 9 does not depend on it).
+      int others[2], k = 0;
+      for (int m = 0; m < 4; ++m)
+        if (m != i && m != j) others[k++] = m;
+      const Eigen::Vector3d a = p[j] - p[others[1]], b = p[others[1]] - p[others[0]], c = p[others[0]] - p[i];
+      const Eigen::Vector3d n1 = b.cross(a), n2 = b.cross(c);
+      const Eigen::Matrix3d block = (n2 * n1.transpose() + n1.dot(n2) * Eigen::Matrix3d::Identity()) / (36 * volume);
+      local->block<3, 3>(3 * i, 3 * j) = block;
+      local->block<3, 3>(3 * j, 3 * i) = block.transpose();
+      local->block<3, 3>(3 * i, 3 * i) -= block;              // Eq. (10): K_pp = -sum_q K_pq
+      local->block<3, 3>(3 * j, 3 * j) -= block.transpose();  // K_qq gets K_qp = K_pq^T
+    }
+}
+
+void assemble_killing_operator_3d(const Eigen::MatrixXi& T, const Eigen::VectorXd& x, ElementMatrix3D* matrix) {
+  matrix->assemble([&](int t, ElementMatrix3D::Local* local) {
+    Eigen::Vector3d p[4];
+    for (int k = 0; k < 4; ++k) p[k] = x.segment<3>(3 * T(t, k));
+    killing_local_matrix_3d(p, local);
+  });
+}
+
+Eigen::MatrixXd rigid_motion_basis_3d(const Eigen::VectorXd& x) {
+  const Eigen::Index n = x.size() / 3;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (Eigen::Index i = 0; i < n; ++i) centroid += x.segment<3>(3 * i);
+  centroid /= static_cast<double>(n);
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(x.size(), 6);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Vector3d r = x.segment<3>(3 * i) - centroid;
+    B.block<3, 3>(3 * i, 0).setIdentity();
+    for (int axis = 0; axis < 3; ++axis) B.block<3, 1>(3 * i, 3 + axis) = Eigen::Vector3d::Unit(axis).cross(r);
+  }
+  // Orthonormalize (the rotations about different axes are not orthogonal in general).
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(B);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(x.size(), 6);
+}
+
+}  // namespace akvf

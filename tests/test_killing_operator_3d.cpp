@@ -1,0 +1,111 @@
+// The volumetric Killing operator of Eq. (9)-(10).
+#include <doctest/doctest.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <random>
+
+#include "framework/tet_validation.h"
+#include "preconditioners/killing_operator_3d.h"
+
+namespace {
+
+// The unit cube split into n^3 cells of 6 tets each (Kuhn triangulation),
+// every tet positively oriented.
+akvf::TetMesh tet_grid(int n) {
+  akvf::TetMesh mesh;
+  const int m = n + 1;
+  mesh.V.resize(m * m * m, 3);
+  auto id = [&](int i, int j, int k) { return (k * m + j) * m + i; };
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) mesh.V.row(id(i, j, k)) << double(i) / n, double(j) / n, double(k) / n;
+  std::vector<Eigen::RowVector4i> tets;
+  int order[3] = {0, 1, 2};
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        std::sort(order, order + 3);
+        do {
+          int c[3] = {i, j, k};
+          Eigen::RowVector4i t;
+          t[0] = id(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s) {
+            ++c[order[s]];
+            t[s + 1] = id(c[0], c[1], c[2]);
+          }
+          tets.push_back(t);
+        } while (std::next_permutation(order, order + 3));
+      }
+  mesh.T.resize(static_cast<Eigen::Index>(tets.size()), 4);
+  for (std::size_t t = 0; t < tets.size(); ++t) mesh.T.row(t) = tets[t];
+  for (int t = 0; t < mesh.num_tets(); ++t)
+    if (akvf::signed_tet_volume(mesh, t) < 0) std::swap(mesh.T(t, 2), mesh.T(t, 3));
+  return mesh;
+}
+
+Eigen::VectorXd stack(const Eigen::MatrixXd& V) {
+  const Eigen::MatrixXd Vt = V.transpose();
+  return Eigen::Map<const Eigen::VectorXd>(Vt.data(), Vt.size());
+}
+
+// Eq. (6) with n = 3: Vol [grad phi_j grad phi_i^T + (grad phi_i . grad phi_j) I], from hat gradients.
+Eigen::Matrix<double, 12, 12> fem_local(const Eigen::Vector3d p[4]) {
+  Eigen::Matrix3d Ds;
+  Ds << p[1] - p[0], p[2] - p[0], p[3] - p[0];
+  const double volume = Ds.determinant() / 6;
+  const Eigen::Matrix3d inv = Ds.inverse();  // rows: gradients of phi_1..3
+  Eigen::Vector3d grad[4];
+  for (int k = 1; k < 4; ++k) grad[k] = inv.row(k - 1).transpose();
+  grad[0] = -(grad[1] + grad[2] + grad[3]);
+  Eigen::Matrix<double, 12, 12> K;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      K.block<3, 3>(3 * i, 3 * j) =
+          volume * (grad[j] * grad[i].transpose() + grad[i].dot(grad[j]) * Eigen::Matrix3d::Identity());
+  return K;
+}
+
+}  // namespace
+
+TEST_CASE("Eq. (9)-(10) equal the FEM form Eq. (6) with n = 3 on random tets") {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int tested = 0;
+  for (int trial = 0; trial < 200 && tested < 100; ++trial) {
+    Eigen::Vector3d p[4];
+    for (auto& q : p) q = Eigen::Vector3d(u(rng), u(rng), u(rng));
+    const double volume = (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])) / 6;
+    if (std::abs(volume) < 1e-2) continue;
+    if (volume < 0) std::swap(p[2], p[3]);
+    akvf::ElementMatrix3D::Local closed_form;
+    akvf::killing_local_matrix_3d(p, &closed_form);
+    const Eigen::Matrix<double, 12, 12> fem = fem_local(p);
+    CHECK((closed_form - fem).norm() <= 1e-10 * fem.norm());
+    ++tested;
+  }
+  CHECK(tested == 100);
+}
+
+TEST_CASE("3D K is symmetric PSD with exactly the six rigid motions in its null space") {
+  akvf::TetMesh mesh = tet_grid(2);
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
+  for (int v = 0; v < mesh.num_vertices(); ++v) mesh.V.row(v) += Eigen::RowVector3d(u(rng), u(rng), u(rng));
+  for (int t = 0; t < mesh.num_tets(); ++t) REQUIRE(akvf::signed_tet_volume(mesh, t) > 0);
+  const Eigen::VectorXd x = stack(mesh.V);
+  akvf::ElementMatrix3D matrix(mesh.T, mesh.num_vertices());
+  akvf::assemble_killing_operator_3d(mesh.T, x, &matrix);
+  const Eigen::MatrixXd K(matrix.full());
+  CHECK((K - K.transpose()).norm() <= 1e-12 * K.norm());
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(K);
+  const double tol = 1e-10 * eig.eigenvalues().maxCoeff();
+  CHECK(eig.eigenvalues().minCoeff() >= -tol);
+  int null_dim = 0;
+  for (Eigen::Index i = 0; i < eig.eigenvalues().size(); ++i) null_dim += eig.eigenvalues()[i] < tol;
+  CHECK(null_dim == 6);
+  CHECK(eig.eigenvalues()[6] > 1e3 * tol);
+  const Eigen::MatrixXd rigid = akvf::rigid_motion_basis_3d(x);
+  CHECK((K * rigid).norm() <= 1e-10 * K.norm());
+  CHECK((rigid.transpose() * rigid - Eigen::MatrixXd::Identity(6, 6)).norm() <= 1e-12);
+}
