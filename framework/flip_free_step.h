@@ -1,7 +1,10 @@
 #pragma once
-// Maximal flip-free step of a triangle (§5.3, after Smith & Schaefer 2015):
-// along x + t d, det J(t) = det(Ds + t Dd) = a t^2 + b t + c with
-// c = det Ds > 0, and the element inverts at the smallest positive root.
+// Maximal flip-free step of an element (§5.3, after Smith & Schaefer 2015):
+// along x + t d, det J(t) = det(Ds + t Dd) is a quadratic (triangles) or a
+// cubic (tets) in t, positive at t = 0, and the element inverts at its
+// smallest positive root.
+#include <Eigen/Core>
+
 namespace akvf {
 
 // Smallest t > 0 with a t^2 + b t + c = 0, or +infinity if there is none.
@@ -16,5 +19,17 @@ double smallest_positive_root(double a, double b, double c);
 // and Dd (direction), column-major 2x2 stored as {m00, m10, m01, m11},
 // becomes degenerate.
 double triangle_flip_step(const double Ds[4], const double Dd[4]);
+
+// Smallest t > 0 with a3 t^3 + a2 t^2 + a1 t + a0 = 0, or +infinity.
+// Requires a0 > 0. With a3 = 0 it is the quadratic case above (exact); else
+// the critical points split [0, inf) into monotone pieces and the first
+// piece whose ends change sign is bisected to full precision, which stays
+// reliable when a3 is tiny or roots are close.
+double smallest_positive_root_cubic(double a3, double a2, double a1, double a0);
+
+// The step at which the tet with edge matrices Ds = [e1 e2 e3] (current) and
+// Dd (direction) becomes degenerate: the smallest positive root of
+//   det(Ds + t Dd) = det Ds + t tr(adj(Ds) Dd) + t^2 tr(adj(Dd) Ds) + t^3 det Dd.
+double tet_flip_step(const Eigen::Matrix3d& Ds, const Eigen::Matrix3d& Dd);
 
 }  // namespace akvf

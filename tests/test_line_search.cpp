@@ -130,3 +130,37 @@ TEST_CASE("Wolfe bisection satisfies the curvature condition on a smooth problem
   CHECK(g_new.dot(d) >= 0.9 * g.dot(d));
   CHECK(summary.step > 1.0);  // it extended beyond the initial step to satisfy curvature
 }
+
+TEST_CASE("cubic flip-free step: exact degenerate cases and known roots") {
+  // (1 - t)(2 - t)(3 - t) = -t^3 + 6 t^2 - 11 t + 6: smallest root 1.
+  CHECK(akvf::smallest_positive_root_cubic(-1, 6, -11, 6) == doctest::Approx(1.0).epsilon(1e-15));
+  // (t + 1)(t + 2)(t + 3) > 0 for t > 0: no root.
+  CHECK(akvf::smallest_positive_root_cubic(1, 6, 11, 6) == kInf);
+  // A cubic term of 0 falls back to the quadratic and linear cases exactly.
+  CHECK(akvf::smallest_positive_root_cubic(0, 0, -2, 3) == 1.5);
+  CHECK(akvf::smallest_positive_root_cubic(0, 1, -3, 2) == doctest::Approx(1.0));
+  // A tiny cubic term: the root near 0.5 of -2 t + 1 survives.
+  CHECK(akvf::smallest_positive_root_cubic(1e-14, 0, -2, 1) == doctest::Approx(0.5).epsilon(1e-12));
+  // Double root at 1 touching zero from above, then a root at 4: (t - 1)^2 (4 - t).
+  const double t = akvf::smallest_positive_root_cubic(-1, 6, -9, 4);
+  CHECK(t == doctest::Approx(1.0).epsilon(1e-6));
+}
+
+TEST_CASE("tet step bound: no step below it inverts a tet, a step just above does") {
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int bounded = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    Eigen::Matrix3d Ds = Eigen::Matrix3d::NullaryExpr([&](Eigen::Index, Eigen::Index) { return u(rng); });
+    if (Ds.determinant() < 0) Ds.col(0) *= -1;
+    if (Ds.determinant() < 1e-3) continue;
+    const Eigen::Matrix3d Dd = Eigen::Matrix3d::NullaryExpr([&](Eigen::Index, Eigen::Index) { return u(rng); });
+    const double t = akvf::tet_flip_step(Ds, Dd);
+    for (double s : {0.1, 0.5, 0.9, 0.999999}) CHECK((Ds + s * std::min(t, 1e6) * Dd).determinant() > 0);
+    if (std::isfinite(t)) {
+      ++bounded;
+      CHECK((Ds + 1.000001 * t * Dd).determinant() <= 1e-9);
+    }
+  }
+  CHECK(bounded > 100);
+}
