@@ -153,7 +153,8 @@ void write_vtk(const std::string& path, const TetMesh& mesh) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << std::setprecision(17) << "# vtk DataFile Version 3.0\nakvf tet mesh\nASCII\nDATASET UNSTRUCTURED_GRID\n";
     out << "POINTS " << mesh.num_vertices() << " double\n";
-    for (int v = 0; v < mesh.num_vertices(); ++v) out << mesh.V(v, 0) << ' ' << mesh.V(v, 1) << ' ' << mesh.V(v, 2) << '\n';
+    for (int v = 0; v < mesh.num_vertices(); ++v)
+      out << mesh.V(v, 0) << ' ' << mesh.V(v, 1) << ' ' << mesh.V(v, 2) << '\n';
     out << "CELLS " << mesh.num_tets() << ' ' << 5 * mesh.num_tets() << '\n';
     for (int t = 0; t < mesh.num_tets(); ++t)
       out << "4 " << mesh.T(t, 0) << ' ' << mesh.T(t, 1) << ' ' << mesh.T(t, 2) << ' ' << mesh.T(t, 3) << '\n';

@@ -48,13 +48,13 @@ TetMesh prepare_tet_mesh(const TetMesh& input, const std::string& name, Warnings
     for (int k = 0; k < 4; ++k) {
       if (input.T(t, k) < 0 || input.T(t, k) >= input.num_vertices())
         throw ValidationError(name + ": tet " + std::to_string(t) + " has vertex index " +
-                              std::to_string(input.T(t, k)) + " out of range (" +
-                              std::to_string(input.num_vertices()) + " vertices)");
+                              std::to_string(input.T(t, k)) + " out of range (" + std::to_string(input.num_vertices()) +
+                              " vertices)");
       used[input.T(t, k)] = 1;
       for (int l = 0; l < k; ++l)
         if (input.T(t, k) == input.T(t, l))
-          throw ValidationError(name + ": tet " + std::to_string(t) + " uses vertex " +
-                                std::to_string(input.T(t, k)) + " twice");
+          throw ValidationError(name + ": tet " + std::to_string(t) + " uses vertex " + std::to_string(input.T(t, k)) +
+                                " twice");
     }
   }
   const double diagonal = (input.V.colwise().maxCoeff() - input.V.colwise().minCoeff()).norm();

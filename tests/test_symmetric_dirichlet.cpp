@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "energies/distortion_energies.h"
+#include "energies/invariant_density_3d.h"
 #include "energies/symmetric_dirichlet.h"
 #include "tests/density_checks.h"
 
@@ -91,4 +92,20 @@ TEST_CASE("the singular-value gradient is the derivative of D along the singular
       CHECK(grad[i] == doctest::Approx(fd).epsilon(1e-6));
     }
   }
+}
+
+TEST_CASE("3D symmetric Dirichlet and its exponential: derivatives by finite differences, bounds, inversion") {
+  const akvf::SymmetricDirichlet3 sd;
+  const akvf::ExpSymmetricDirichlet3 exp_sd(0.2);
+  for (const akvf::DistortionDensity<3>* density :
+       std::initializer_list<const akvf::DistortionDensity<3>*>{&sd, &exp_sd}) {
+    CAPTURE(density->name());
+    akvf::test::check_density_derivatives<3>(*density, 0.5, 2.0, 30);
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    CHECK(density->value(R) == doctest::Approx(density->lower_bound()).epsilon(1e-14));
+    CHECK(density->value(R * Eigen::Vector3d(1.2, 1, 0.9).asDiagonal()) > density->lower_bound());
+    CHECK(density->value(-R) == std::numeric_limits<double>::infinity());
+  }
+  akvf::test::check_density_derivatives<3>(sd, 0.1, 10.0, 20, 9);
+  CHECK(sd.lower_bound() == 6.0);
 }

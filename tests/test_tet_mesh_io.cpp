@@ -50,8 +50,7 @@ TEST_CASE("MEDIT: vertices and tetrahedra are read, other sections skipped") {
 
 TEST_CASE("MEDIT: malformed files name the line and the problem") {
   CHECK(error_message([] { medit("Dimension 2\n"); }) == "line 1 of m.mesh: dimension 2: only 3 is supported");
-  CHECK(error_message([] { medit("Vertices\n2\n0 0 0 0\n"); }) ==
-        "line 3 of m.mesh: file ends after 1 of 2 vertices");
+  CHECK(error_message([] { medit("Vertices\n2\n0 0 0 0\n"); }) == "line 3 of m.mesh: file ends after 1 of 2 vertices");
   CHECK(error_message([] { medit("Vertices\n1\n0 x 0 0\n"); }) ==
         "line 3 of m.mesh: vertex coordinate 'x' is not a finite number");
   CHECK(error_message([] { medit("Vertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n1 2 3 9 0\n"); }) ==
@@ -72,7 +71,8 @@ TEST_CASE("OBJ-like tets: `f a b c d`, 1-based; other corner counts are rejected
   CHECK(mesh.T.row(0) == Eigen::RowVector4i(0, 1, 2, 3));
   CHECK(error_message([] { tet_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"); }) ==
         "line 4 of m.obj: tet has 3 corners; expected 4 (one tetrahedron per `f` line)");
-  CHECK(error_message([] { tet_obj("v 0 0 0\nf 1 2 3 7\n"); }) == "line 2 of m.obj: tet index 2 out of range (1 vertices)");
+  CHECK(error_message([] { tet_obj("v 0 0 0\nf 1 2 3 7\n"); }) ==
+        "line 2 of m.obj: tet index 2 out of range (1 vertices)");
 }
 
 TEST_CASE(".tet: header counts, then 0-based rows") {
@@ -83,8 +83,9 @@ TEST_CASE(".tet: header counts, then 0-based rows") {
         "line 1 of m.tet: expected '#num of vertex: N', found '#vertices 4'");
   CHECK(error_message([] { tet_file("#num of vertex: 4\n#num of tetrahedra: 1\n0 0 0\n"); }) ==
         "line 3 of m.tet: file ends after 1 of 4 vertices");
-  CHECK(error_message([] { tet_file("#num of vertex: 4\n#num of tetrahedra: 1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 1 2 4\n"); }) ==
-        "line 7 of m.tet: tet 0 uses vertex 4 (0-based), out of range (4 vertices)");
+  CHECK(error_message([] {
+          tet_file("#num of vertex: 4\n#num of tetrahedra: 1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 1 2 4\n");
+        }) == "line 7 of m.tet: tet 0 uses vertex 4 (0-based), out of range (4 vertices)");
 }
 
 TEST_CASE("unknown tet formats and missing files are reported") {

@@ -1,0 +1,134 @@
+#include "energies/invariant_density_3d.h"
+
+#include <Eigen/LU>
+#include <cmath>
+#include <limits>
+
+#include "framework/error.h"
+
+namespace akvf {
+
+namespace {
+
+using Matrix3 = Eigen::Matrix3d;
+using Vector9 = Eigen::Matrix<double, 9, 1>;
+using Matrix9 = Eigen::Matrix<double, 9, 9>;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+Vector9 vec(const Matrix3& M) { return Eigen::Map<const Vector9>(M.data()); }
+
+Matrix3 cofactor(const Matrix3& J) {
+  Matrix3 C;
+  C.col(0) = J.col(1).cross(J.col(2));
+  C.col(1) = J.col(2).cross(J.col(0));
+  C.col(2) = J.col(0).cross(J.col(1));
+  return C;
+}
+
+double cofactor_norm2(const Matrix3& J) {
+  const double s = J.squaredNorm();
+  return 0.5 * (s * s - (J.transpose() * J).squaredNorm());
+}
+
+// d2 det / dvec(J)^2: entry (i + 3j, k + 3l) = sum_mn eps_ikm eps_jln J_mn.
+Matrix9 determinant_hessian(const Matrix3& J) {
+  const auto eps = [](int a, int b, int c) { return double((a - b) * (b - c) * (c - a)) / 2; };
+  Matrix9 H = Matrix9::Zero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          double sum = 0;
+          for (int m = 0; m < 3; ++m)
+            for (int n = 0; n < 3; ++n) sum += eps(i, k, m) * eps(j, l, n) * J(m, n);
+          H(i + 3 * j, k + 3 * l) = sum;
+        }
+  return H;
+}
+
+// Hessian of c = (s^2 - |J^T J|^2) / 2 in vec(J):
+//   4 j j^T + 2 s I - 2 [ (J^T J (x) I) + (J^T (x) J) K + (I (x) J J^T) ],
+// K the commutation matrix (vec(J^T) = K vec(J)).
+Matrix9 cofactor_norm_hessian(const Matrix3& J) {
+  const Vector9 j = vec(J);
+  const double s = J.squaredNorm();
+  const Matrix3 JtJ = J.transpose() * J, JJt = J * J.transpose();
+  Matrix9 H = 4 * j * j.transpose() + 2 * s * Matrix9::Identity();
+  for (int a = 0; a < 3; ++a)      // row index of dJ entry (a, b)
+    for (int b = 0; b < 3; ++b) {  // column
+      // Directional derivative of J J^T J along the unit dJ = E_ab.
+      Matrix3 E = Matrix3::Zero();
+      E(a, b) = 1;
+      const Matrix3 d = E * JtJ + J * E.transpose() * J + JJt * E;
+      H.col(a + 3 * b) -= 2 * vec(d);
+    }
+  return H;
+}
+
+}  // namespace
+
+double InvariantDensity3::value(const Matrix& J) const {
+  const double g = J.determinant();
+  return g > 0 ? derivatives(J.squaredNorm(), cofactor_norm2(J), g).f : kInfinity;
+}
+
+double InvariantDensity3::value_and_gradient(const Matrix& J, Matrix* dD_dJ) const {
+  const double g = J.determinant();
+  if (!(g > 0)) return kInfinity;
+  const double s = J.squaredNorm();
+  const InvariantDerivatives3 d = derivatives(s, cofactor_norm2(J), g);
+  *dD_dJ = d.f_s * 2 * J + d.f_c * (2 * s * J - 2 * J * J.transpose() * J) + d.f_g * cofactor(J);
+  return d.f;
+}
+
+InvariantDensity3::Hessian InvariantDensity3::hessian(const Matrix& J) const {
+  const double s = J.squaredNorm();
+  const InvariantDerivatives3 d = derivatives(s, cofactor_norm2(J), J.determinant());
+  Eigen::Matrix<double, 9, 3> G;
+  G.col(0) = 2 * vec(J);
+  G.col(1) = vec(2 * s * J - 2 * J * J.transpose() * J);
+  G.col(2) = vec(cofactor(J));
+  Eigen::Matrix3d second;
+  second << d.f_ss, d.f_sc, d.f_sg, d.f_sc, d.f_cc, d.f_cg, d.f_sg, d.f_cg, d.f_gg;
+  return G * second * G.transpose() + 2 * d.f_s * Matrix9::Identity() + d.f_c * cofactor_norm_hessian(J) +
+         d.f_g * determinant_hessian(J);
+}
+
+InvariantDerivatives3 SymmetricDirichlet3::formula(double s, double c, double g) {
+  const double g2 = g * g, g3 = g2 * g;
+  InvariantDerivatives3 d;
+  d.f = s + c / g2;
+  d.f_s = 1;
+  d.f_c = 1 / g2;
+  d.f_g = -2 * c / g3;
+  d.f_cg = -2 / g3;
+  d.f_gg = 6 * c / (g2 * g2);
+  return d;
+}
+
+ExpSymmetricDirichlet3::ExpSymmetricDirichlet3(double exponent) : exponent_(exponent) {
+  if (!(exponent > 0)) throw OptionsError("energy exponent must be > 0");
+}
+
+double ExpSymmetricDirichlet3::lower_bound() const { return std::exp(6 * exponent_); }
+
+InvariantDerivatives3 ExpSymmetricDirichlet3::derivatives(double s, double c, double g) const {
+  const InvariantDerivatives3 u = SymmetricDirichlet3::formula(s, c, g);
+  const double k = exponent_;
+  InvariantDerivatives3 d;
+  d.f = std::exp(k * u.f);
+  const double kf = k * d.f;
+  d.f_s = kf * u.f_s;
+  d.f_c = kf * u.f_c;
+  d.f_g = kf * u.f_g;
+  d.f_ss = kf * (u.f_ss + k * u.f_s * u.f_s);
+  d.f_sc = kf * (u.f_sc + k * u.f_s * u.f_c);
+  d.f_sg = kf * (u.f_sg + k * u.f_s * u.f_g);
+  d.f_cc = kf * (u.f_cc + k * u.f_c * u.f_c);
+  d.f_cg = kf * (u.f_cg + k * u.f_c * u.f_g);
+  d.f_gg = kf * (u.f_gg + k * u.f_g * u.f_g);
+  return d;
+}
+
+}  // namespace akvf

@@ -1,0 +1,54 @@
+#pragma once
+// Rotation-invariant 3D densities as functions of the invariants of J (3x3)
+//   s = |J|_F^2,  c = |cof J|_F^2 = (s^2 - |J^T J|_F^2) / 2,  g = det J,
+// D(J) = f(s, c, g), with one chain rule for gradient and Hessian:
+//   dD/dvec(J) = G f',   d2D/dvec(J)^2 = G f'' G^T + f_s H_s + f_c H_c + f_g H_g,
+// G = [ds dc dg] (9 by 3); ds = 2 vec J, dc = vec(2 s J - 2 J J^T J),
+// dg = vec(cof J); H_s = 2 I, H_c and H_g (linear in J) as derived in the
+// .cpp. +infinity when g <= 0. Used by the tet issue's energies.
+#include "framework/distortion_density.h"
+
+namespace akvf {
+
+struct InvariantDerivatives3 {
+  double f = 0;
+  double f_s = 0, f_c = 0, f_g = 0;
+  double f_ss = 0, f_sc = 0, f_sg = 0, f_cc = 0, f_cg = 0, f_gg = 0;
+};
+
+class InvariantDensity3 : public DistortionDensity<3> {
+ public:
+  double value(const Matrix& J) const final;
+  double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const final;
+  Hessian hessian(const Matrix& J) const final;
+
+ protected:
+  virtual InvariantDerivatives3 derivatives(double s, double c, double g) const = 0;
+};
+
+// 3D symmetric Dirichlet |J|^2 + |J^-1|^2 = s + c / g^2, minimum 6 at rotations.
+class SymmetricDirichlet3 final : public InvariantDensity3 {
+ public:
+  std::string name() const override { return "symmetric-dirichlet"; }
+  double lower_bound() const override { return 6.0; }
+  static InvariantDerivatives3 formula(double s, double c, double g);
+
+ protected:
+  InvariantDerivatives3 derivatives(double s, double c, double g) const override { return formula(s, c, g); }
+};
+
+// 3D exponential symmetric Dirichlet exp(k (|J|^2 + |J^-1|^2)), minimum exp(6k).
+class ExpSymmetricDirichlet3 final : public InvariantDensity3 {
+ public:
+  explicit ExpSymmetricDirichlet3(double exponent);
+  std::string name() const override { return "exp-symmetric-dirichlet"; }
+  double lower_bound() const override;
+
+ protected:
+  InvariantDerivatives3 derivatives(double s, double c, double g) const override;
+
+ private:
+  double exponent_;
+};
+
+}  // namespace akvf
