@@ -11,6 +11,7 @@
 #include "experiments/demo_mesh.h"
 #include "experiments/parameterization.h"
 #include "framework/error.h"
+#include "framework/rest_geometry.h"
 #include "solvers/backtracking_line_search.h"
 #include "tests/test_support.h"
 
@@ -224,4 +225,29 @@ TEST_CASE("AQP acceleration keeps the energy non-increasing and never flips") {
   config.acceleration = "sometimes";
   CHECK(akvf::test::error_message([&] { run(akvf::test::bumpy_disk(4, 4), config); }) ==
         "acceleration must be auto, on or off, found 'sometimes'");
+}
+
+TEST_CASE("the assembled gradient of E matches finite differences of E for every energy") {
+  akvf::TriMesh mesh = akvf::test::bumpy_disk(5, 5);
+  akvf::normalize_to_unit_area(&mesh);
+  const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(mesh, 0.2, 3) * 0.9);
+  akvf::EnergySettings settings;
+  settings.exponent = 0.1;
+  for (const auto& [name, unused] : akvf::energies_2d().entries()) {
+    CAPTURE(name);
+    const akvf::ParamObjective objective(mesh.F, akvf::rest_triangles(mesh), akvf::energies_2d().create(name, settings),
+                                         mesh.num_vertices());
+    Eigen::VectorXd g;
+    const double energy = objective.value_and_gradient(x, &g);
+    REQUIRE(std::isfinite(energy));
+    CHECK(objective.value(x) == energy);  // bitwise: the line search and the trace see the same E
+    const double h = 1e-7;
+    for (int i = 0; i < x.size(); i += 3) {
+      Eigen::VectorXd plus = x, minus = x;
+      plus[i] += h;
+      minus[i] -= h;
+      const double fd = (objective.value(plus) - objective.value(minus)) / (2 * h);
+      CHECK(g[i] == doctest::Approx(fd).epsilon(1e-5).scale(std::max(1.0, g.norm())));
+    }
+  }
 }
