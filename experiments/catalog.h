@@ -6,7 +6,7 @@
 
 #include "framework/distortion_density.h"
 #include "framework/line_search.h"
-#include "framework/param_objective.h"
+#include "framework/distortion_objective.h"
 #include "framework/preconditioner.h"
 #include "framework/registry.h"
 #include "preconditioners/akvf_preconditioner.h"

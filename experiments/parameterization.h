@@ -9,7 +9,7 @@
 #include "framework/mesh.h"
 #include "framework/mesh_validation.h"
 #include "framework/optimizer.h"
-#include "framework/param_objective.h"
+#include "framework/distortion_objective.h"
 #include "framework/rest_geometry.h"
 
 namespace akvf {

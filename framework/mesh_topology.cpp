@@ -87,13 +87,14 @@ std::vector<std::vector<int>> boundary_loops(const EdgeTopology& topology, int n
 VertexFaces vertex_faces(const Eigen::MatrixXi& F, int num_vertices) {
   VertexFaces result;
   result.offsets.assign(num_vertices + 1, 0);
+  const int corners = static_cast<int>(F.cols());
   for (int f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) ++result.offsets[F(f, k) + 1];
+    for (int k = 0; k < corners; ++k) ++result.offsets[F(f, k) + 1];
   std::partial_sum(result.offsets.begin(), result.offsets.end(), result.offsets.begin());
   result.face_corner.resize(result.offsets.back());
   std::vector<int> fill(result.offsets.begin(), result.offsets.end() - 1);
   for (int f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) result.face_corner[fill[F(f, k)]++] = 3 * f + k;
+    for (int k = 0; k < corners; ++k) result.face_corner[fill[F(f, k)]++] = corners * f + k;
   return result;
 }
 

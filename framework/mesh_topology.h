@@ -29,9 +29,10 @@ int count_components(const Eigen::MatrixXi& F, int num_vertices);
 // vertex if a vertex starts two boundary half-edges (a non-manifold vertex).
 std::vector<std::vector<int>> boundary_loops(const EdgeTopology& topology, int num_vertices);
 
-// For each vertex, the faces that use it, as compressed rows:
-// faces of v are entries [offsets[v], offsets[v+1]) of face_corner, each
-// encoded as 3*face + corner. Order is increasing face index (deterministic).
+// For each vertex, the elements (triangles or tets: F has 3 or 4 columns)
+// that use it, as compressed rows: the elements of v are entries
+// [offsets[v], offsets[v+1]) of face_corner, each encoded as
+// F.cols() * element + corner. Order is increasing element index.
 struct VertexFaces {
   std::vector<int> offsets;
   std::vector<int> face_corner;

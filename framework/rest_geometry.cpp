@@ -1,6 +1,7 @@
 #include "framework/rest_geometry.h"
 
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <cmath>
 
 namespace akvf {
@@ -22,6 +23,20 @@ RestTriangles rest_triangles(const TriMesh& mesh) {
     rest.area[f] = 0.5 * twice_area;
   }
   rest.total_area = rest.area.sum();
+  return rest;
+}
+
+RestTets rest_tets(const TetMesh& mesh) {
+  RestTets rest;
+  rest.Dm_inv.resize(mesh.num_tets());
+  rest.volume.resize(mesh.num_tets());
+  for (int t = 0; t < mesh.num_tets(); ++t) {
+    Eigen::Matrix3d Dm;
+    for (int k = 0; k < 3; ++k) Dm.col(k) = (mesh.V.row(mesh.T(t, k + 1)) - mesh.V.row(mesh.T(t, 0))).transpose();
+    rest.Dm_inv[t] = Dm.inverse();
+    rest.volume[t] = Dm.determinant() / 6;
+  }
+  rest.total_volume = rest.volume.sum();
   return rest;
 }
 

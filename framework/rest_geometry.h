@@ -21,6 +21,20 @@ struct RestTriangles {
 
 RestTriangles rest_triangles(const TriMesh& mesh);
 
+// Per-tet rest geometry: J_t = Ds Dm^-1 with Dm = [x1 - x0, x2 - x0, x3 - x0]
+// of the rest tet, and its (positive) volume.
+struct RestTets {
+  std::vector<Eigen::Matrix3d> Dm_inv;
+  Eigen::VectorXd volume;  // #T
+  double total_volume = 0;
+};
+
+RestTets rest_tets(const TetMesh& mesh);
+
+// The measure (area or volume) of each element, for the element-generic code.
+inline const Eigen::VectorXd& rest_measure(const RestTriangles& rest) { return rest.area; }
+inline const Eigen::VectorXd& rest_measure(const RestTets& rest) { return rest.volume; }
+
 // Total 3D surface area.
 double surface_area(const TriMesh& mesh);
 

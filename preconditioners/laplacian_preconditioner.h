@@ -4,7 +4,7 @@
 // grad phi_j (x) I_2, constant, so assembled and factored once. Its null
 // space is the two translations. (AQP's momentum acceleration is not
 // implemented yet.)
-#include "framework/param_objective.h"
+#include "framework/distortion_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {

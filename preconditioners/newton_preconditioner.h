@@ -4,7 +4,7 @@
 // projected_hessian), where G_f maps the face's corner positions to vec(J_f).
 // The baseline of TinyAD-style second-order solvers; shift, projection of
 // the rigid motions and factorization reuse as in factored_preconditioner.h.
-#include "framework/param_objective.h"
+#include "framework/distortion_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {

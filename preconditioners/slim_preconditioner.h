@@ -13,7 +13,7 @@
 // (possible for non-isometric energies such as MIPS); there the gradient
 // property holds only approximately, as in SLIM's own code.
 #include "energies/invariant_density.h"
-#include "framework/param_objective.h"
+#include "framework/distortion_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {

@@ -7,42 +7,9 @@
 
 #include "framework/tet_validation.h"
 #include "preconditioners/killing_operator_3d.h"
+#include "tests/test_support.h"
 
 namespace {
-
-// The unit cube split into n^3 cells of 6 tets each (Kuhn triangulation),
-// every tet positively oriented.
-akvf::TetMesh tet_grid(int n) {
-  akvf::TetMesh mesh;
-  const int m = n + 1;
-  mesh.V.resize(m * m * m, 3);
-  auto id = [&](int i, int j, int k) { return (k * m + j) * m + i; };
-  for (int k = 0; k < m; ++k)
-    for (int j = 0; j < m; ++j)
-      for (int i = 0; i < m; ++i) mesh.V.row(id(i, j, k)) << double(i) / n, double(j) / n, double(k) / n;
-  std::vector<Eigen::RowVector4i> tets;
-  int order[3] = {0, 1, 2};
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        std::sort(order, order + 3);
-        do {
-          int c[3] = {i, j, k};
-          Eigen::RowVector4i t;
-          t[0] = id(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s) {
-            ++c[order[s]];
-            t[s + 1] = id(c[0], c[1], c[2]);
-          }
-          tets.push_back(t);
-        } while (std::next_permutation(order, order + 3));
-      }
-  mesh.T.resize(static_cast<Eigen::Index>(tets.size()), 4);
-  for (std::size_t t = 0; t < tets.size(); ++t) mesh.T.row(t) = tets[t];
-  for (int t = 0; t < mesh.num_tets(); ++t)
-    if (akvf::signed_tet_volume(mesh, t) < 0) std::swap(mesh.T(t, 2), mesh.T(t, 3));
-  return mesh;
-}
 
 Eigen::VectorXd stack(const Eigen::MatrixXd& V) {
   const Eigen::MatrixXd Vt = V.transpose();
@@ -88,7 +55,7 @@ TEST_CASE("Eq. (9)-(10) equal the FEM form Eq. (6) with n = 3 on random tets") {
 }
 
 TEST_CASE("3D K is symmetric PSD with exactly the six rigid motions in its null space") {
-  akvf::TetMesh mesh = tet_grid(2);
+  akvf::TetMesh mesh = akvf::test::tet_grid(2);
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> u(-0.05, 0.05);
   for (int v = 0; v < mesh.num_vertices(); ++v) mesh.V.row(v) += Eigen::RowVector3d(u(rng), u(rng), u(rng));

@@ -6,7 +6,7 @@
 
 #include "energies/symmetric_dirichlet.h"
 #include "framework/flip_free_step.h"
-#include "framework/param_objective.h"
+#include "framework/distortion_objective.h"
 #include "solvers/backtracking_line_search.h"
 #include "solvers/wolfe_bisection_line_search.h"
 #include "tests/test_support.h"

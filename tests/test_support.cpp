@@ -1,5 +1,6 @@
 #include "tests/test_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -8,6 +9,7 @@
 
 #include "framework/error.h"
 #include "framework/mesh_io.h"
+#include "framework/tet_validation.h"
 
 namespace akvf::test {
 
@@ -37,6 +39,38 @@ TriMesh bumpy_disk(int nx, int ny) {
   TriMesh mesh = grid_disk(nx, ny);
   for (int v = 0; v < mesh.num_vertices(); ++v)
     mesh.V(v, 2) = 0.3 * std::sin(5 * mesh.V(v, 0)) * std::cos(4 * mesh.V(v, 1));
+  return mesh;
+}
+
+TetMesh tet_grid(int n) {
+  TetMesh mesh;
+  const int m = n + 1;
+  mesh.V.resize(m * m * m, 3);
+  auto id = [&](int i, int j, int k) { return (k * m + j) * m + i; };
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) mesh.V.row(id(i, j, k)) << double(i) / n, double(j) / n, double(k) / n;
+  std::vector<Eigen::RowVector4i> tets;
+  int order[3] = {0, 1, 2};
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        std::sort(order, order + 3);
+        do {
+          int c[3] = {i, j, k};
+          Eigen::RowVector4i t;
+          t[0] = id(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s) {
+            ++c[order[s]];
+            t[s + 1] = id(c[0], c[1], c[2]);
+          }
+          tets.push_back(t);
+        } while (std::next_permutation(order, order + 3));
+      }
+  mesh.T.resize(static_cast<Eigen::Index>(tets.size()), 4);
+  for (std::size_t t = 0; t < tets.size(); ++t) mesh.T.row(t) = tets[t];
+  for (int t = 0; t < mesh.num_tets(); ++t)
+    if (signed_tet_volume(mesh, t) < 0) std::swap(mesh.T(t, 2), mesh.T(t, 3));
   return mesh;
 }
 

@@ -16,6 +16,10 @@ TriMesh grid_disk(int nx, int ny, double jitter = 0, unsigned seed = 1);
 // The grid lifted onto a bumpy height field (not developable).
 TriMesh bumpy_disk(int nx, int ny);
 
+// The unit cube split into n^3 cells of 6 tets each (Kuhn triangulation),
+// every tet positively oriented.
+TetMesh tet_grid(int n);
+
 // A planar UV map of grid_disk's connectivity: the grid with random interior
 // jitter, never inverted for jitter < 0.3.
 Eigen::MatrixXd jittered_uv(const TriMesh& mesh, double jitter, unsigned seed);

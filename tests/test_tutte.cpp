@@ -6,7 +6,7 @@
 
 #include "framework/initialization.h"
 #include "framework/mesh_validation.h"
-#include "framework/param_objective.h"
+#include "framework/distortion_objective.h"
 #include "framework/rest_geometry.h"
 #include "tests/test_support.h"
 

@@ -1,0 +1,129 @@
+#include "framework/distortion_objective.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/LU>
+#include <limits>
+
+#include "framework/flip_free_step.h"
+
+namespace akvf {
+
+namespace {
+constexpr int kGrain = 1024;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+template <class Body>
+void for_each_index(int n, const Body& body) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, kGrain), [&](const tbb::blocked_range<int>& r) {
+    for (int i = r.begin(); i != r.end(); ++i) body(i);
+  });
+}
+}  // namespace
+
+template <int D>
+DistortionObjective<D>::DistortionObjective(Eigen::MatrixXi elements, Rest rest,
+                                            std::shared_ptr<const DistortionDensity<D>> density, int num_vertices)
+    : elements_(std::move(elements)),
+      rest_(std::move(rest)),
+      density_(std::move(density)),
+      num_vertices_(num_vertices),
+      weights_(rest_measure(rest_) / rest_measure(rest_).sum()),
+      incidence_(vertex_faces(elements_, num_vertices)),
+      element_value_(elements_.rows()),
+      element_gradient_(elements_.rows()) {}
+
+template <int D>
+typename DistortionObjective<D>::Matrix DistortionObjective<D>::edge_matrix(const Eigen::VectorXd& x, int e) const {
+  Matrix Ds;
+  const auto x0 = x.segment<D>(D * elements_(e, 0));
+  for (int k = 0; k < D; ++k) Ds.col(k) = x.segment<D>(D * elements_(e, k + 1)) - x0;
+  return Ds;
+}
+
+template <int D>
+typename DistortionObjective<D>::Matrix DistortionObjective<D>::jacobian(const Eigen::VectorXd& x, int e) const {
+  return edge_matrix(x, e) * rest_.Dm_inv[e];
+}
+
+template <int D>
+double DistortionObjective<D>::sum_element_values() const {
+  // Serial in element order: the same sum for any thread count.
+  double sum = 0;
+  for (double v : element_value_) sum += v;
+  return sum;
+}
+
+template <int D>
+double DistortionObjective<D>::value(const Eigen::VectorXd& x) const {
+  for_each_index(static_cast<int>(elements_.rows()),
+                 [&](int e) { element_value_[e] = weights_[e] * density_->value(jacobian(x, e)); });
+  return sum_element_values();
+}
+
+template <int D>
+double DistortionObjective<D>::value_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd* gradient) const {
+  for_each_index(static_cast<int>(elements_.rows()), [&](int e) {
+    Matrix dD_dJ;
+    element_value_[e] = weights_[e] * density_->value_and_gradient(jacobian(x, e), &dD_dJ);
+    // J = Ds Dm^-1, so dE/dDs = w dD/dJ Dm^-T; column c is dE/d(x_{c+1} - x_0).
+    element_gradient_[e] = weights_[e] * dD_dJ * rest_.Dm_inv[e].transpose();
+  });
+  gradient->resize(num_variables());
+  for_each_index(num_vertices_, [&](int v) {
+    Eigen::Matrix<double, D, 1> g = Eigen::Matrix<double, D, 1>::Zero();
+    for (int i = incidence_.offsets[v]; i < incidence_.offsets[v + 1]; ++i) {
+      const int e = incidence_.face_corner[i] / kCorners, corner = incidence_.face_corner[i] % kCorners;
+      const Matrix& G = element_gradient_[e];
+      if (corner == 0)
+        g -= G.rowwise().sum();
+      else
+        g += G.col(corner - 1);
+    }
+    gradient->template segment<D>(D * v) = g;
+  });
+  return sum_element_values();
+}
+
+template <int D>
+double DistortionObjective<D>::max_feasible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d) const {
+  for_each_index(static_cast<int>(elements_.rows()), [&](int e) {
+    const Matrix Ds = edge_matrix(x, e), Dd = edge_matrix(d, e);
+    if constexpr (D == 2)
+      element_value_[e] = triangle_flip_step(Ds.data(), Dd.data());
+    else
+      element_value_[e] = tet_flip_step(Ds, Dd);
+  });
+  double step = kInfinity;
+  for (double t : element_value_) step = std::min(step, t);
+  return step;
+}
+
+template <int D>
+int DistortionObjective<D>::count_inverted(const Eigen::VectorXd& x) const {
+  int inverted = 0;
+  for (int e = 0; e < elements_.rows(); ++e) inverted += !(edge_matrix(x, e).determinant() > 0);
+  return inverted;
+}
+
+template <int D>
+Eigen::VectorXd DistortionObjective<D>::face_distortion(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd values(elements_.rows());
+  for_each_index(static_cast<int>(elements_.rows()), [&](int e) { values[e] = density_->value(jacobian(x, e)); });
+  return values;
+}
+
+template class DistortionObjective<2>;
+template class DistortionObjective<3>;
+
+Eigen::VectorXd stack_rows(const Eigen::MatrixXd& P) {
+  const Eigen::MatrixXd T = P.transpose();
+  return Eigen::Map<const Eigen::VectorXd>(T.data(), T.size());
+}
+
+Eigen::MatrixXd unstack_rows(const Eigen::VectorXd& x, int dimension) {
+  return Eigen::Map<const Eigen::MatrixXd>(x.data(), dimension, x.size() / dimension).transpose();
+}
+
+}  // namespace akvf

@@ -1,0 +1,77 @@
+#pragma once
+// The distortion energy of Eq. (1) over the elements of a mesh, normalized by
+// the total rest measure:
+//   E(x) = sum_e M_e D(J_e(x)) / sum_e M_e,
+// with M_e the rest area (triangles mapped to the plane, D = 2) or volume
+// (tets deformed in space, D = 3) and J_e = Ds Dm^-1 (§3). Assembled in
+// parallel over elements with a deterministic gather (the same input and any
+// thread count give bitwise-identical results).
+//
+// Variables: x in R^{D|V|}, interleaved (x_0, y_0[, z_0], x_1, ...).
+#include <Eigen/Core>
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+#include "framework/distortion_density.h"
+#include "framework/mesh_topology.h"
+#include "framework/objective.h"
+#include "framework/rest_geometry.h"
+
+namespace akvf {
+
+template <int D>
+class DistortionObjective final : public Objective {
+ public:
+  using Matrix = Eigen::Matrix<double, D, D>;
+  using Rest = std::conditional_t<D == 2, RestTriangles, RestTets>;
+  static constexpr int kCorners = D + 1;
+
+  //   elements  #E by D + 1 vertex indices (faces or tets)
+  DistortionObjective(Eigen::MatrixXi elements, Rest rest, std::shared_ptr<const DistortionDensity<D>> density,
+                      int num_vertices);
+
+  int num_variables() const override { return D * num_vertices_; }
+  double value(const Eigen::VectorXd& x) const override;
+  double value_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd* gradient) const override;
+  double max_feasible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d) const override;
+  int count_inverted(const Eigen::VectorXd& x) const override;
+  double lower_bound() const override { return density_->lower_bound(); }
+
+  // J_e = Ds Dm^-1 (§3) for element e at x.
+  Matrix jacobian(const Eigen::VectorXd& x, int e) const;
+  // D(J_e) per element; +infinity for inverted elements.
+  Eigen::VectorXd face_distortion(const Eigen::VectorXd& x) const;
+
+  const Eigen::MatrixXi& faces() const { return elements_; }
+  const Rest& rest() const { return rest_; }
+  // M_e / sum M: the weight of element e in E.
+  const Eigen::VectorXd& weights() const { return weights_; }
+  const DistortionDensity<D>& density() const { return *density_; }
+  int num_vertices() const { return num_vertices_; }
+
+ private:
+  Matrix edge_matrix(const Eigen::VectorXd& x, int e) const;
+  double sum_element_values() const;
+
+  Eigen::MatrixXi elements_;
+  Rest rest_;
+  std::shared_ptr<const DistortionDensity<D>> density_;
+  int num_vertices_;
+  Eigen::VectorXd weights_;
+  VertexFaces incidence_;
+  // Scratch reused across calls (so calls on one object must not overlap).
+  mutable std::vector<double> element_value_;
+  mutable std::vector<Matrix> element_gradient_;  // dE/dDs per element
+};
+
+using ParamObjective = DistortionObjective<2>;  // triangle mesh -> plane
+using TetObjective = DistortionObjective<3>;    // tet mesh -> space
+
+// Stack a #V by D matrix into interleaved x, and back.
+Eigen::VectorXd stack_rows(const Eigen::MatrixXd& P);
+Eigen::MatrixXd unstack_rows(const Eigen::VectorXd& x, int dimension);
+inline Eigen::VectorXd stack_uv(const Eigen::MatrixXd& UV) { return stack_rows(UV); }
+inline Eigen::MatrixXd unstack_uv(const Eigen::VectorXd& x) { return unstack_rows(x, 2); }
+
+}  // namespace akvf

@@ -1,0 +1,62 @@
+// The distortion objective on tets (D = 3): assembled gradient, flip-free
+// step bound, inverted count.
+#include <doctest/doctest.h>
+
+#include <random>
+
+#include "energies/invariant_density_3d.h"
+#include "framework/distortion_objective.h"
+#include "tests/test_support.h"
+
+namespace {
+
+akvf::TetObjective cube_objective(const akvf::TetMesh& mesh) {
+  return akvf::TetObjective(mesh.T, akvf::rest_tets(mesh), std::make_shared<akvf::SymmetricDirichlet3>(),
+                            mesh.num_vertices());
+}
+
+// The rest positions stretched and jittered: a valid but distorted deformation.
+Eigen::VectorXd deformed(const akvf::TetMesh& mesh, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-0.03, 0.03);
+  Eigen::MatrixXd P = mesh.V * Eigen::Vector3d(1.3, 0.9, 1.1).asDiagonal();
+  for (int v = 0; v < P.rows(); ++v) P.row(v) += Eigen::RowVector3d(u(rng), u(rng), u(rng));
+  return akvf::stack_rows(P);
+}
+
+}  // namespace
+
+TEST_CASE("tet objective: rest state is the lower bound, the gradient matches finite differences") {
+  const akvf::TetMesh mesh = akvf::test::tet_grid(2);
+  const akvf::TetObjective objective = cube_objective(mesh);
+  Eigen::VectorXd g;
+  CHECK(objective.value_and_gradient(akvf::stack_rows(mesh.V), &g) == doctest::Approx(6.0).epsilon(1e-12));
+  CHECK(g.norm() <= 1e-10);
+  const Eigen::VectorXd x = deformed(mesh, 1);
+  const double energy = objective.value_and_gradient(x, &g);
+  CHECK(energy > 6.0);
+  CHECK(objective.value(x) == energy);
+  const double h = 1e-7;
+  for (int i = 0; i < x.size(); i += 5) {
+    Eigen::VectorXd plus = x, minus = x;
+    plus[i] += h;
+    minus[i] -= h;
+    CHECK(g[i] == doctest::Approx((objective.value(plus) - objective.value(minus)) / (2 * h)).epsilon(1e-5).scale(1.0));
+  }
+}
+
+TEST_CASE("tet objective: the flip-free bound is tight and no step below it inverts a tet") {
+  const akvf::TetMesh mesh = akvf::test::tet_grid(2);
+  const akvf::TetObjective objective = cube_objective(mesh);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> n;
+  for (int trial = 0; trial < 10; ++trial) {
+    const Eigen::VectorXd x = deformed(mesh, trial + 10);
+    REQUIRE(objective.count_inverted(x) == 0);
+    const Eigen::VectorXd d = Eigen::VectorXd::NullaryExpr(x.size(), [&](Eigen::Index) { return n(rng); });
+    const double t = objective.max_feasible_step(x, d);
+    REQUIRE(std::isfinite(t));
+    for (double fraction : {0.5, 0.9, 0.999999}) CHECK(objective.count_inverted(x + fraction * t * d) == 0);
+    CHECK(objective.count_inverted(x + 1.000001 * t * d) > 0);
+  }
+}
