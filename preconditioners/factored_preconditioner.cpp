@@ -32,32 +32,37 @@ Eigen::MatrixXd translation_basis_2d(int num_vertices) {
   return B / std::sqrt(static_cast<double>(num_vertices));
 }
 
-FactoredPreconditioner2D::FactoredPreconditioner2D(const Eigen::MatrixXi& F, int num_vertices, FactorOptions options)
-    : options_(options), matrix_(F, num_vertices) {
+template <int D>
+FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices,
+                                                  FactorOptions options)
+    : options_(options), matrix_(elements, num_vertices) {
   if (!(options_.tikhonov > 0)) throw OptionsError("Tikhonov shift must be > 0");
+  if (!(options_.absolute_shift >= 0)) throw OptionsError("absolute Tikhonov shift must be >= 0");
   if (!(options_.reuse_tolerance >= 0 && options_.reuse_tolerance < 1))
     throw OptionsError("factorization reuse tolerance must be in [0, 1)");
   if (options_.reuse_max_cg < 1) throw OptionsError("factorization reuse needs at least one CG iteration");
 }
 
-std::string FactoredPreconditioner2D::report() const {
+template <int D>
+std::string FactoredPreconditioner<D>::report() const {
   return std::to_string(statistics_.factorizations) + " factorizations, " + std::to_string(statistics_.reused_solves) +
          " solves with an earlier factor (" + std::to_string(statistics_.cg_iterations) + " CG iterations)";
 }
 
-void FactoredPreconditioner2D::update(const OptimizationState& state) {
+template <int D>
+void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   null_basis_ = null_space(state.x);
   if (is_constant()) {
     if (!cholesky_.analyzed()) {
       assemble(state, &matrix_);
-      matrix_.add_to_diagonal(options_.tikhonov * matrix_.mean_diagonal());
+      matrix_.add_to_diagonal(options_.tikhonov * matrix_.mean_diagonal() + options_.absolute_shift);
       factorize_current();
     }
     factor_is_current_ = true;
     return;
   }
   assemble(state, &matrix_);
-  matrix_.add_to_diagonal(options_.tikhonov * matrix_.mean_diagonal());
+  matrix_.add_to_diagonal(options_.tikhonov * matrix_.mean_diagonal() + options_.absolute_shift);
   factor_is_current_ = false;
   // Without reuse, or before the first factorization, factor now (§5.2);
   // otherwise apply() decides whether the previous factor still serves.
@@ -69,7 +74,8 @@ void FactoredPreconditioner2D::update(const OptimizationState& state) {
   }
 }
 
-void FactoredPreconditioner2D::factorize_current() {
+template <int D>
+void FactoredPreconditioner<D>::factorize_current() {
   if (!cholesky_.analyzed()) cholesky_.analyze(matrix_.upper());
   cholesky_.factorize(matrix_.upper());
   factored_null_basis_ = null_basis_;
@@ -77,7 +83,8 @@ void FactoredPreconditioner2D::factorize_current() {
   ++statistics_.factorizations;
 }
 
-void FactoredPreconditioner2D::apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) {
+template <int D>
+void FactoredPreconditioner<D>::apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) {
   if (!factor_is_current_) {
     if (solve_with_previous_factor(gradient, result)) {
       ++statistics_.reused_solves;
@@ -92,14 +99,15 @@ void FactoredPreconditioner2D::apply(const Eigen::VectorXd& gradient, Eigen::Vec
   *result -= null_basis_ * (null_basis_.transpose() * *result);
 }
 
-bool FactoredPreconditioner2D::solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d) {
+template <int D>
+bool FactoredPreconditioner<D>::solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d) {
   // CG on A = P(x) + eps I restricted to the complement of the current null
   // space N, with the symmetric PSD preconditioner
   //   M^-1 = P_N P_N' (P' + eps I)^-1 P_N' P_N,
   // where P' is the factored (older) matrix, N' its null space and P_X the
   // orthogonal projector onto the complement of X.
   const auto project = [](const Eigen::MatrixXd& basis, Eigen::VectorXd& v) { v -= basis * (basis.transpose() * v); };
-  const auto A = matrix_.upper().selfadjointView<Eigen::Upper>();
+  const auto A = matrix_.upper().template selfadjointView<Eigen::Upper>();
   const auto precondition = [&](Eigen::VectorXd r, Eigen::VectorXd* z) {
     project(null_basis_, r);
     project(factored_null_basis_, r);
@@ -134,5 +142,8 @@ bool FactoredPreconditioner2D::solve_with_previous_factor(const Eigen::VectorXd&
   }
   return false;
 }
+
+template class FactoredPreconditioner<2>;
+template class FactoredPreconditioner<3>;
 
 }  // namespace akvf

@@ -30,6 +30,7 @@ namespace akvf {
 
 struct FactorOptions {
   double tikhonov = 1e-8;      // shift relative to mean(diag P)
+  double absolute_shift = 0;   // added to the relative shift: c of K + c I (§6.2 uses 1e-4)
   double reuse_tolerance = 0;  // tau; 0 factors at every update
   int reuse_max_cg = 8;
 };
@@ -40,21 +41,24 @@ struct FactorStatistics {
   int cg_iterations = 0;
 };
 
-class FactoredPreconditioner2D : public Preconditioner {
+template <int D>
+class FactoredPreconditioner : public Preconditioner {
  public:
   void update(const OptimizationState& state) final;
   void apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) final;
   std::string report() const override;
 
-  const ElementMatrix2D& matrix() const { return matrix_; }
+  using Matrix = ElementMatrix<D, D + 1>;
+  const Matrix& matrix() const { return matrix_; }
   const FactorStatistics& statistics() const { return statistics_; }
 
  protected:
-  FactoredPreconditioner2D(const Eigen::MatrixXi& F, int num_vertices, FactorOptions options);
+  //   elements  #E by D + 1 (faces or tets)
+  FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices, FactorOptions options);
 
   // Fills matrix with P(x) (without the shift).
-  virtual void assemble(const OptimizationState& state, ElementMatrix2D* matrix) = 0;
-  // Orthonormal basis (2|V| by k) of the motions to project out at x.
+  virtual void assemble(const OptimizationState& state, Matrix* matrix) = 0;
+  // Orthonormal basis (D|V| by k, k may be 0) of the motions to project out at x.
   virtual Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const = 0;
   // True if P does not depend on x: assembled and factored once.
   virtual bool is_constant() const { return false; }
@@ -64,7 +68,7 @@ class FactoredPreconditioner2D : public Preconditioner {
   bool solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d);
 
   FactorOptions options_;
-  ElementMatrix2D matrix_;
+  Matrix matrix_;
   SparseCholesky cholesky_;
   Eigen::MatrixXd null_basis_;           // at the current x
   Eigen::MatrixXd factored_null_basis_;  // at the last factorization
@@ -73,6 +77,9 @@ class FactoredPreconditioner2D : public Preconditioner {
   int failure_backoff_ = 1;
   FactorStatistics statistics_;
 };
+
+using FactoredPreconditioner2D = FactoredPreconditioner<2>;
+using FactoredPreconditioner3D = FactoredPreconditioner<3>;
 
 // Orthonormal bases of the planar rigid motions (translations and the
 // rotation about the centroid; 2|V| by 3) and of the translations alone.

@@ -6,6 +6,7 @@
 
 #include "energies/invariant_density_3d.h"
 #include "framework/distortion_objective.h"
+#include "preconditioners/akvf_preconditioner_3d.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -58,5 +59,27 @@ TEST_CASE("tet objective: the flip-free bound is tight and no step below it inve
     REQUIRE(std::isfinite(t));
     for (double fraction : {0.5, 0.9, 0.999999}) CHECK(objective.count_inverted(x + fraction * t * d) == 0);
     CHECK(objective.count_inverted(x + 1.000001 * t * d) > 0);
+  }
+}
+
+TEST_CASE("3D AKVF preconditioner: K + c I gives a descent direction; with rigid projection, none of it rigid") {
+  const akvf::TetMesh mesh = akvf::test::tet_grid(2);
+  const akvf::TetObjective objective = cube_objective(mesh);
+  const Eigen::VectorXd x = deformed(mesh, 5);
+  Eigen::VectorXd g, d;
+  objective.value_and_gradient(x, &g);
+  for (bool project : {false, true}) {
+    CAPTURE(project);
+    akvf::Akvf3DOptions options;
+    options.project_rigid = project;
+    akvf::AkvfPreconditioner3D preconditioner(objective, options);
+    preconditioner.update({x, g, 0.0, 1});
+    preconditioner.apply(g, &d);
+    CHECK(d.allFinite());
+    CHECK(g.dot(d) > 0);
+    // P d = g: the matrix factored is K + c I (+ the tiny relative shift).
+    const Eigen::MatrixXd P(preconditioner.matrix().full());
+    if (!project) CHECK((P * d - g).norm() <= 1e-8 * g.norm());
+    if (project) CHECK((akvf::rigid_motion_basis_3d(x).transpose() * d).norm() <= 1e-10 * d.norm());
   }
 }
