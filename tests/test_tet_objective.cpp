@@ -5,6 +5,7 @@
 #include <random>
 
 #include "energies/invariant_density_3d.h"
+#include "framework/constrained_objective.h"
 #include "framework/distortion_objective.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "tests/test_support.h"
@@ -82,4 +83,24 @@ TEST_CASE("3D AKVF preconditioner: K + c I gives a descent direction; with rigid
     if (!project) CHECK((P * d - g).norm() <= 1e-8 * g.norm());
     if (project) CHECK((akvf::rigid_motion_basis_3d(x).transpose() * d).norm() <= 1e-10 * d.norm());
   }
+}
+
+TEST_CASE("soft positional constraints add w |x_i - p_i|^2 with its gradient; bad constraints are rejected") {
+  const akvf::TetMesh mesh = akvf::test::tet_grid(1);
+  const akvf::TetObjective base = cube_objective(mesh);
+  akvf::PositionConstraints constraints;
+  constraints.vertices = {0, 7};
+  constraints.targets.resize(2, 3);
+  constraints.targets << 0.1, 0, 0, 1, 1, 1.2;
+  const akvf::SoftConstrainedObjective objective(base, 3, constraints, 1e5);
+  const Eigen::VectorXd x = akvf::stack_rows(mesh.V);
+  CHECK(objective.value(x) == doctest::Approx(6.0 + 1e5 * (0.01 + 0.04)));
+  Eigen::VectorXd g;
+  objective.value_and_gradient(x, &g);
+  CHECK(g[0] == doctest::Approx(2e5 * -0.1));
+  CHECK(g[3 * 7 + 2] == doctest::Approx(2e5 * -0.2));
+  CHECK(objective.max_feasible_step(x, g) == base.max_feasible_step(x, g));
+  constraints.vertices = {0, 99};
+  CHECK(akvf::test::error_message([&] { akvf::SoftConstrainedObjective bad(base, 3, constraints, 1e5); }) ==
+        "constrained vertex 99 out of range (8 vertices)");
 }

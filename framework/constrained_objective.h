@@ -1,0 +1,43 @@
+#pragma once
+// Soft positional constraints as a term of the problem (§6.2):
+//   E_c(x) = E(x) + w sum_{i in C} |x_i - p_i|^2,
+// wrapping any objective on interleaved D-dimensional vertex positions. The
+// flip-free bound and the inverted count are the wrapped objective's.
+#include <Eigen/Core>
+#include <vector>
+
+#include "framework/objective.h"
+
+namespace akvf {
+
+struct PositionConstraints {
+  std::vector<int> vertices;  // constrained vertex indices (0-based)
+  Eigen::MatrixXd targets;    // #C by D target positions p_i
+};
+
+class SoftConstrainedObjective final : public Objective {
+ public:
+  // Throws OptionsError if a vertex index is out of range, the target matrix
+  // does not match, or the weight is not positive.
+  SoftConstrainedObjective(const Objective& base, int dimension, PositionConstraints constraints, double weight);
+
+  int num_variables() const override { return base_.num_variables(); }
+  double value(const Eigen::VectorXd& x) const override;
+  double value_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd* gradient) const override;
+  double max_feasible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d) const override {
+    return base_.max_feasible_step(x, d);
+  }
+  int count_inverted(const Eigen::VectorXd& x) const override { return base_.count_inverted(x); }
+  double lower_bound() const override { return base_.lower_bound(); }
+
+  // w sum |x_i - p_i|^2 alone.
+  double penalty(const Eigen::VectorXd& x) const;
+
+ private:
+  const Objective& base_;
+  int dimension_;
+  PositionConstraints constraints_;
+  double weight_;
+};
+
+}  // namespace akvf
