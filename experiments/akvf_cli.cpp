@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "experiments/catalog.h"
+#include "experiments/deform_command.h"
 #include "experiments/exit_codes.h"
 #include "experiments/param_command.h"
 #include "framework/error.h"
@@ -17,6 +18,7 @@ const char* kUsage =
     "commands:\n"
     "  param MESH   parameterize a disk-topology triangle mesh (.obj or .off)\n"
     "  demo         parameterize a built-in mesh and write its outputs (no input files)\n"
+    "  deform TETS  deform a tet mesh with positional constraints (.mesh, .obj or .tet)\n"
     "  list         list energies, preconditioners and line searches\n"
     "  help         show this help\n"
     "\n"
@@ -55,6 +57,7 @@ int run_akvf(std::vector<std::string> args, std::ostream& out, std::ostream& err
   try {
     if (command == "param") return param_command(args, out, err);
     if (command == "demo") return demo_command(args, out, err);
+    if (command == "deform") return deform_command(args, out, err);
     if (command == "list") return list_command(out);
     err << "akvf: unknown command '" << command << "'\n\n" << kUsage;
     return kExitUsageError;

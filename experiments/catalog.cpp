@@ -1,7 +1,9 @@
 #include "experiments/catalog.h"
 
 #include "energies/distortion_energies.h"
+#include "energies/invariant_density_3d.h"
 #include "energies/symmetric_dirichlet.h"
+#include "preconditioners/akvf_preconditioner_3d.h"
 #include "preconditioners/identity_preconditioner.h"
 #include "preconditioners/laplacian_preconditioner.h"
 #include "preconditioners/newton_preconditioner.h"
@@ -24,6 +26,30 @@ const DensityRegistry& energies_2d() {
           [](const EnergySettings& e) { return std::make_unique<ExpSymmetricDirichlet2>(e.exponent); });
     r.add("amips", "exp(k (|J|^2 / (4 det J) + (det J + 1/det J) / 4)), k = --exponent; lower bound exp(k)",
           [](const EnergySettings& e) { return std::make_unique<Amips2>(e.exponent); });
+    return r;
+  }();
+  return registry;
+}
+
+const DensityRegistry3D& energies_3d() {
+  static const DensityRegistry3D registry = [] {
+    DensityRegistry3D r("3D energy");
+    r.add("symmetric-dirichlet", "|J|^2 + |J^-1|^2 on tets; lower bound 6",
+          [](const EnergySettings&) { return std::make_unique<SymmetricDirichlet3>(); });
+    r.add("exp-symmetric-dirichlet", "exp(k (|J|^2 + |J^-1|^2)) on tets, k = --exponent; lower bound exp(6k)",
+          [](const EnergySettings& e) { return std::make_unique<ExpSymmetricDirichlet3>(e.exponent); });
+    return r;
+  }();
+  return registry;
+}
+
+const PreconditionerRegistry3D& preconditioners_3d() {
+  static const PreconditionerRegistry3D registry = [] {
+    PreconditionerRegistry3D r("3D preconditioner");
+    r.add("akvf", "K(x) + c I with K of Eq. (9)-(10), c = 1e-4 (Sec. 6.2)",
+          [](const TetObjective& objective) { return std::make_unique<AkvfPreconditioner3D>(objective); });
+    r.add("identity", "no preconditioning: plain gradient descent",
+          [](const TetObjective&) { return std::make_unique<IdentityPreconditioner>(); });
     return r;
   }();
   return registry;

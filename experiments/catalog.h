@@ -5,8 +5,8 @@
 #include <memory>
 
 #include "framework/distortion_density.h"
-#include "framework/line_search.h"
 #include "framework/distortion_objective.h"
+#include "framework/line_search.h"
 #include "framework/preconditioner.h"
 #include "framework/registry.h"
 #include "preconditioners/akvf_preconditioner.h"
@@ -39,7 +39,12 @@ inline constexpr const char* kLbfgsDescription =
 // Throws OptionsError listing every valid --precond name when `name` is none.
 void require_method(const std::string& name);
 
+using DensityRegistry3D = Registry<DistortionDensity<3>, const EnergySettings&>;
+using PreconditionerRegistry3D = Registry<Preconditioner, const TetObjective&>;
+
 const DensityRegistry& energies_2d();
+const DensityRegistry3D& energies_3d();
+const PreconditionerRegistry3D& preconditioners_3d();
 const PreconditionerRegistry& preconditioners_2d();
 const LineSearchRegistry& line_searches();
 

@@ -8,6 +8,7 @@
 #include "experiments/demo_mesh.h"
 #include "experiments/exit_codes.h"
 #include "experiments/parameterization.h"
+#include "experiments/run_reporting.h"
 #include "experiments/threads.h"
 #include "experiments/trace_csv.h"
 #include "experiments/uv_svg.h"
@@ -71,23 +72,6 @@ ParamConfig config_from(const CommandLine& cl) {
   return config;
 }
 
-void check_output_path(const std::string& path) {
-  if (path.empty()) return;
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty() && !std::filesystem::is_directory(parent))
-    throw OutputError("cannot write " + path + ": directory " + parent.string() + " does not exist");
-}
-
-IterationCallback progress_printer(std::ostream& err) {
-  return [&err](const IterationSummary& s, const Eigen::VectorXd&) {
-    char line[200];
-    std::snprintf(line, sizeof line, "iter %4d  t %8.3fs  E %.10g  |g| %.3e  step %.2e  ls %3d  flips %d\n",
-                  s.iteration, s.seconds, s.energy, s.grad_norm, s.step, s.ls_evals, s.flips);
-    err << line << std::flush;
-    return CallbackAction::kContinue;
-  };
-}
-
 int run_and_write(const TriMesh& input, const std::string& name, const ParamConfig& config, const Outputs& outputs,
                   bool quiet, std::ostream& out, std::ostream& err) {
   for (const auto& path : {outputs.obj, outputs.trace, outputs.svg}) check_output_path(path);
@@ -102,11 +86,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const ParamConf
   const ParamRun run = run_parameterization(setup, config, callbacks);
   const OptimizerResult& result = run.result;
   const IterationSummary& last = result.trace.back();
-  char summary[256];
-  std::snprintf(
-      summary, sizeof summary, "status %s after %d iterations, %.3f s: energy %.10g, gradient norm %.3e, %d inverted\n",
-      to_string(result.status).c_str(), last.iteration, last.seconds, last.energy, last.grad_norm, last.flips);
-  out << summary;
+  out << summary_line(result);
   if (!run.preconditioner_report.empty()) out << run.preconditioner_name << ": " << run.preconditioner_report << '\n';
   if (!is_normal_termination(result.status)) err << "error: " << result.message << '\n';
 

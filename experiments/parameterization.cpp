@@ -40,18 +40,16 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   setup.x0 = stack_uv(UV);
   setup.objective =
       std::make_shared<ParamObjective>(normalized.F, rest_triangles(normalized), density, normalized.num_vertices());
-  if (!std::isfinite(setup.objective->value(setup.x0)) && config.energy != kWarmStartEnergy)
-    warm_start(config, &setup);
+  if (!std::isfinite(setup.objective->value(setup.x0)) && config.energy != kWarmStartEnergy) warm_start(config, &setup);
   return setup;
 }
-
 
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks) {
   ParamRun run;
   OptimizerOptions optimizer = config.optimizer;
-  const bool accelerate = config.acceleration == "on" ||
-                          (config.acceleration == "auto" && config.preconditioner == "laplacian");
+  const bool accelerate =
+      config.acceleration == "on" || (config.acceleration == "auto" && config.preconditioner == "laplacian");
   optimizer.acceleration_eta = accelerate ? kAqpEta : 0;
   if (config.preconditioner == kLbfgsMethod) {
     run.preconditioner_name = kLbfgsMethod;
@@ -91,18 +89,21 @@ void warm_start(const ParamConfig& config, ParamSetup* setup) {
   sd_config.energy = kWarmStartEnergy;
   sd_config.optimizer.max_iterations = config.optimizer.max_iterations;
   ParamSetup sd_setup = *setup;
-  sd_setup.objective = std::make_shared<ParamObjective>(setup->objective->faces(), setup->objective->rest(),
-                                                        energies_2d().create(kWarmStartEnergy, {}),
-                                                        setup->objective->num_vertices());
+  sd_setup.objective =
+      std::make_shared<ParamObjective>(setup->objective->faces(), setup->objective->rest(),
+                                       energies_2d().create(kWarmStartEnergy, {}), setup->objective->num_vertices());
   const OptimizerResult warm = run_parameterization(sd_setup, sd_config).result;
   if (!is_normal_termination(warm.status) || !std::isfinite(setup->objective->value(warm.x))) {
-    setup->warnings.push_back(config.energy + " is infinite at the initial map and at the symmetric Dirichlet "
+    setup->warnings.push_back(config.energy +
+                              " is infinite at the initial map and at the symmetric Dirichlet "
                               "minimizer; the run will stop at once");
     return;
   }
   setup->x0 = warm.x;
-  setup->warnings.push_back(config.energy + " is infinite at the Tutte map; starting from the symmetric Dirichlet "
-                            "minimizer instead (" + std::to_string(warm.trace.back().iteration) + " AKVF iterations)");
+  setup->warnings.push_back(config.energy +
+                            " is infinite at the Tutte map; starting from the symmetric Dirichlet "
+                            "minimizer instead (" +
+                            std::to_string(warm.trace.back().iteration) + " AKVF iterations)");
 }
 
 }  // namespace

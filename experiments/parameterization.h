@@ -5,11 +5,11 @@
 #include <string>
 
 #include "experiments/catalog.h"
+#include "framework/distortion_objective.h"
 #include "framework/initialization.h"
 #include "framework/mesh.h"
 #include "framework/mesh_validation.h"
 #include "framework/optimizer.h"
-#include "framework/distortion_objective.h"
 #include "framework/rest_geometry.h"
 
 namespace akvf {

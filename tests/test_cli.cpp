@@ -113,3 +113,30 @@ TEST_CASE("help and list describe the commands") {
   CHECK(list.out.find("akvf") != std::string::npos);
   CHECK(list.out.find("backtracking") != std::string::npos);
 }
+
+TEST_CASE("deform: bad constraints files exit 1 naming the line; outputs are not written") {
+  const fs::path dir = scratch_dir("deform");
+  write_text(dir / "tet.mesh",
+             "MeshVersionFormatted 1\nDimension 3\nVertices\n5\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n1 1 1 0\n"
+             "Tetrahedra\n2\n1 2 3 4 0\n2 3 4 5 0\nEnd\n");
+  write_text(dir / "bad_index.txt", "0 0 0 0\n9 1 1 1\n");
+  write_text(dir / "bad_columns.txt", "0 0 0\n");
+  const fs::path out = dir / "out.mesh";
+  for (const auto& [file, message] :
+       {std::pair<std::string, std::string>{"bad_index.txt", ": vertex index 9 out of range (5 vertices, 0-based)"},
+        {"bad_columns.txt", ": expected 4 columns `vertex_index x y z`, found 3"}}) {
+    const Outcome r = akvf_run({"deform", (dir / "tet.mesh").string(), "--constraints", (dir / file).string(), "--out",
+                                out.string(), "--quiet"});
+    CHECK(r.code == akvf::kExitInputError);
+    CHECK(r.err.find(message) != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
+  write_text(dir / "good.txt", "0 0 0 0\n4 1.1 1 1\n");
+  const Outcome ok = akvf_run({"deform", (dir / "tet.mesh").string(), "--constraints", (dir / "good.txt").string(),
+                               "--out", out.string(), "--max-iters", "5", "--quiet"});
+  CHECK(ok.code == akvf::kExitOk);
+  CHECK(fs::exists(out));
+  CHECK(akvf_run({"deform", (dir / "tet.mesh").string(), "--quiet"}).err ==
+        "error: give exactly one of --constraints and --preset\n");
+  fs::remove_all(dir);
+}

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <filesystem>
 
+#include "experiments/deformation.h"
 #include "experiments/parameterization.h"
 #include "framework/mesh_io.h"
+#include "framework/tet_mesh_io.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -109,4 +111,32 @@ TEST_CASE("every method with symmetric Dirichlet on every disk mesh: no flip, en
       CHECK(akvf::is_normal_termination(result.status));
       CHECK(result.trace.back().energy < result.trace.front().energy);
     }
+}
+
+TEST_CASE("akvf deform runs on every shared tet mesh without inverting a tet") {
+  const std::string dir = akvf::test::data_dir();
+  if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
+  for (const char* name : {"cube_4k.obj", "octopus-low.mesh", "bar.tet"}) {
+    CAPTURE(name);
+    const std::string path = dir + "/tet/" + name;
+    const akvf::TetMesh mesh = akvf::read_tet_mesh(path);
+    // Pin the lowest 10 % of the vertices (by z) and lift the highest 10 % by a tenth of the height.
+    const double lo = mesh.V.col(2).minCoeff(), hi = mesh.V.col(2).maxCoeff();
+    akvf::PositionConstraints constraints;
+    std::vector<Eigen::RowVector3d> targets;
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+      const double z = (mesh.V(v, 2) - lo) / (hi - lo);
+      if (z > 0.1 && z < 0.9) continue;
+      constraints.vertices.push_back(v);
+      targets.push_back(mesh.V.row(v) + Eigen::RowVector3d(0, 0, z >= 0.9 ? 0.1 * (hi - lo) : 0));
+    }
+    constraints.targets.resize(static_cast<Eigen::Index>(targets.size()), 3);
+    for (std::size_t c = 0; c < targets.size(); ++c) constraints.targets.row(c) = targets[c];
+    akvf::DeformConfig config;
+    config.optimizer.max_iterations = 15;
+    const auto run = akvf::run_deformation(mesh, path, constraints, config);
+    CHECK(akvf::is_normal_termination(run.result.status));
+    for (const auto& row : run.result.trace) CHECK(row.flips == 0);
+    CHECK(run.result.trace.back().energy < run.result.trace.front().energy);
+  }
 }

@@ -2,10 +2,14 @@
 // step bound, inverted count.
 #include <doctest/doctest.h>
 
+#include <Eigen/Geometry>
 #include <random>
+#include <sstream>
 
 #include "energies/invariant_density_3d.h"
+#include "experiments/deformation.h"
 #include "framework/constrained_objective.h"
+#include "framework/constraints_io.h"
 #include "framework/distortion_objective.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "tests/test_support.h"
@@ -103,4 +107,58 @@ TEST_CASE("soft positional constraints add w |x_i - p_i|^2 with its gradient; ba
   constraints.vertices = {0, 99};
   CHECK(akvf::test::error_message([&] { akvf::SoftConstrainedObjective bad(base, 3, constraints, 1e5); }) ==
         "constrained vertex 99 out of range (8 vertices)");
+}
+
+TEST_CASE("constraints files: rows, comments, and each malformed line named") {
+  const auto parse = [](const std::string& text) {
+    std::istringstream in(text);
+    return akvf::read_constraints(in, "c.txt", 8);
+  };
+  const auto constraints = parse("# pinned corners\n0 0 0 0\n\n7 1 1 1.5  # pulled up\n");
+  REQUIRE(constraints.vertices == std::vector<int>{0, 7});
+  CHECK(constraints.targets(1, 2) == 1.5);
+  CHECK(akvf::test::error_message([&] { parse("8 0 0 0\n"); }) ==
+        "line 1 of c.txt: vertex index 8 out of range (8 vertices, 0-based)");
+  CHECK(akvf::test::error_message([&] { parse("1 0 0\n"); }) ==
+        "line 1 of c.txt: expected 4 columns `vertex_index x y z`, found 3");
+  CHECK(akvf::test::error_message([&] { parse("1 0 0 0 5\n"); }) ==
+        "line 1 of c.txt: expected 4 columns `vertex_index x y z`, found 5");
+  CHECK(akvf::test::error_message([&] { parse("1 0 a 0\n"); }) ==
+        "line 1 of c.txt: target coordinate 'a' is not a finite number");
+  CHECK(akvf::test::error_message([&] { parse("1 0 0 0\n1 1 1 1\n"); }) ==
+        "line 2 of c.txt: vertex 1 is already constrained on line 1");
+  CHECK(akvf::test::error_message([&] { parse("# nothing\n"); }) == "c.txt: no constraints");
+}
+
+TEST_CASE("a tet deformation with constraints never inverts a tet and lowers the energy") {
+  const akvf::TetMesh mesh = akvf::test::tet_grid(3);
+  akvf::PositionConstraints constraints;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (mesh.V(v, 2) == 0 || mesh.V(v, 2) == 1) constraints.vertices.push_back(v);
+  constraints.targets.resize(static_cast<Eigen::Index>(constraints.vertices.size()), 3);
+  for (std::size_t c = 0; c < constraints.vertices.size(); ++c) {
+    const Eigen::RowVector3d p = mesh.V.row(constraints.vertices[c]);
+    // Twist the top face by 0.5 rad about the vertical axis through the centre.
+    const double angle = p.z() == 1 ? 0.5 : 0.0;
+    const Eigen::Vector3d centred(p.x() - 0.5, p.y() - 0.5, 0);
+    constraints.targets.row(c) = (Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()) * centred).transpose() +
+                                 Eigen::RowVector3d(0.5, 0.5, p.z());
+  }
+  for (const char* energy : {"symmetric-dirichlet", "exp-symmetric-dirichlet"})
+    for (const char* method : {"akvf", "identity"}) {
+      CAPTURE(energy);
+      CAPTURE(method);
+      akvf::DeformConfig config;
+      config.energy = energy;
+      config.energy_settings.exponent = 0.1;
+      config.preconditioner = method;
+      config.optimizer.max_iterations = 30;
+      const auto run = akvf::run_deformation(mesh, "grid", constraints, config);
+      CHECK(akvf::is_normal_termination(run.result.status));
+      for (std::size_t i = 1; i < run.result.trace.size(); ++i) {
+        CHECK(run.result.trace[i].flips == 0);
+        CHECK(run.result.trace[i].energy <= run.result.trace[i - 1].energy);
+      }
+      CHECK(run.result.trace.back().energy < run.result.trace.front().energy);
+    }
 }

@@ -1,0 +1,39 @@
+#pragma once
+// Volumetric deformation (§6.2): minimize sum_t V_t D(J_t) / sum_t V_t +
+// w sum_i |x_i - p_i|^2 over the vertex positions of a tet mesh, starting
+// from the rest shape, with a flip-free preconditioned descent.
+#include <string>
+
+#include "experiments/catalog.h"
+#include "framework/constrained_objective.h"
+#include "framework/mesh.h"
+#include "framework/optimizer.h"
+
+namespace akvf {
+
+struct DeformConfig {
+  std::string energy = "symmetric-dirichlet";
+  EnergySettings energy_settings;
+  std::string preconditioner = "akvf";
+  std::string line_search = "backtracking";
+  LineSearchSettings line_search_settings;
+  double weight = 1e5;  // w (§6.2)
+  OptimizerOptions optimizer = [] {
+    OptimizerOptions o;
+    o.max_iterations = 100;  // Figure 8 runs 100 iterations of each method
+    return o;
+  }();
+};
+
+struct DeformRun {
+  TetMesh mesh;  // validated rest mesh (orientation fixed if it was inverted)
+  OptimizerResult result;
+  std::string preconditioner_report;
+  Warnings warnings;
+};
+
+// Throws InputError / ValidationError / OptionsError naming `name`.
+DeformRun run_deformation(const TetMesh& input, const std::string& name, const PositionConstraints& constraints,
+                          const DeformConfig& config, const std::vector<IterationCallback>& callbacks = {});
+
+}  // namespace akvf

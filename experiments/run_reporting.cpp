@@ -1,0 +1,36 @@
+#include "experiments/run_reporting.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "framework/error.h"
+
+namespace akvf {
+
+void check_output_path(const std::string& path) {
+  if (path.empty()) return;
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty() && !std::filesystem::is_directory(parent))
+    throw OutputError("cannot write " + path + ": directory " + parent.string() + " does not exist");
+}
+
+IterationCallback progress_printer(std::ostream& err) {
+  return [&err](const IterationSummary& s, const Eigen::VectorXd&) {
+    char line[200];
+    std::snprintf(line, sizeof line, "iter %4d  t %8.3fs  E %.10g  |g| %.3e  step %.2e  ls %3d  flips %d\n",
+                  s.iteration, s.seconds, s.energy, s.grad_norm, s.step, s.ls_evals, s.flips);
+    err << line << std::flush;
+    return CallbackAction::kContinue;
+  };
+}
+
+std::string summary_line(const OptimizerResult& result) {
+  const IterationSummary& last = result.trace.back();
+  char summary[256];
+  std::snprintf(
+      summary, sizeof summary, "status %s after %d iterations, %.3f s: energy %.10g, gradient norm %.3e, %d inverted\n",
+      to_string(result.status).c_str(), last.iteration, last.seconds, last.energy, last.grad_norm, last.flips);
+  return summary;
+}
+
+}  // namespace akvf
