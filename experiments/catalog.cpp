@@ -47,9 +47,11 @@ const PreconditionerRegistry3D& preconditioners_3d() {
   static const PreconditionerRegistry3D registry = [] {
     PreconditionerRegistry3D r("3D preconditioner");
     r.add("akvf", "K(x) + c I with K of Eq. (9)-(10), c = 1e-4 (Sec. 6.2)",
-          [](const TetObjective& objective) { return std::make_unique<AkvfPreconditioner3D>(objective); });
+          [](const TetObjective& objective, const Akvf3DOptions& options) {
+            return std::make_unique<AkvfPreconditioner3D>(objective, options);
+          });
     r.add("identity", "no preconditioning: plain gradient descent",
-          [](const TetObjective&) { return std::make_unique<IdentityPreconditioner>(); });
+          [](const TetObjective&, const Akvf3DOptions&) { return std::make_unique<IdentityPreconditioner>(); });
     return r;
   }();
   return registry;

@@ -10,6 +10,7 @@
 #include "framework/preconditioner.h"
 #include "framework/registry.h"
 #include "preconditioners/akvf_preconditioner.h"
+#include "preconditioners/akvf_preconditioner_3d.h"
 
 namespace akvf {
 
@@ -40,7 +41,7 @@ inline constexpr const char* kLbfgsDescription =
 void require_method(const std::string& name);
 
 using DensityRegistry3D = Registry<DistortionDensity<3>, const EnergySettings&>;
-using PreconditionerRegistry3D = Registry<Preconditioner, const TetObjective&>;
+using PreconditionerRegistry3D = Registry<Preconditioner, const TetObjective&, const Akvf3DOptions&>;
 
 const DensityRegistry& energies_2d();
 const DensityRegistry3D& energies_3d();

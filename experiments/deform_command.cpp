@@ -26,6 +26,9 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
           {"energy", "NAME", "symmetric-dirichlet (default) or exp-symmetric-dirichlet"},
           {"exponent", "K", "exponent of exp-symmetric-dirichlet (default 1)"},
           {"precond", "NAME", "akvf (default: K + 1e-4 I) or identity"},
+          {"cg-tol", "X",
+           "solve with Jacobi-preconditioned CG to relative residual X instead of\n"
+           "                          factoring (the paper uses 0.01; default 0 = factor)"},
           {"max-iters", "N", "iterations (default 100, as in Figure 8)"},
           {"grad-tol", "X", "stop when the gradient norm drops below X (default 1e-3)"},
           {"time-limit", "SECONDS", "stop after this much optimizer time"},
@@ -50,6 +53,9 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   config.energy_settings.exponent = cl.real("exponent", config.energy_settings.exponent);
   if (!(config.energy_settings.exponent > 0)) throw OptionsError("option --exponent must be > 0");
   config.preconditioner = cl.text("precond", config.preconditioner);
+  config.akvf.factor.cg_tolerance = cl.real("cg-tol", 0);
+  if (!(config.akvf.factor.cg_tolerance >= 0 && config.akvf.factor.cg_tolerance < 1))
+    throw OptionsError("option --cg-tol must be in [0, 1)");
   config.weight = cl.real("weight", config.weight);
   if (!(config.weight > 0)) throw OptionsError("option --weight must be > 0");
   config.optimizer.max_iterations = cl.integer("max-iters", config.optimizer.max_iterations);

@@ -17,7 +17,7 @@ DeformRun run_deformation(const TetMesh& input, const std::string& name, const P
   run.mesh = prepare_tet_mesh(input, name, &run.warnings);
   const TetObjective energy(run.mesh.T, rest_tets(run.mesh), density, run.mesh.num_vertices());
   const SoftConstrainedObjective objective(energy, 3, constraints, config.weight);
-  auto preconditioner = preconditioners_3d().create(config.preconditioner, energy);
+  auto preconditioner = preconditioners_3d().create(config.preconditioner, energy, config.akvf);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
   run.result = minimize(objective, *preconditioner, *line_search, stack_rows(run.mesh.V), config.optimizer, callbacks);
   run.preconditioner_report = preconditioner->report();

@@ -15,6 +15,7 @@ struct DeformConfig {
   std::string energy = "symmetric-dirichlet";
   EnergySettings energy_settings;
   std::string preconditioner = "akvf";
+  Akvf3DOptions akvf;  // c of K + c I, CG instead of the factorization
   std::string line_search = "backtracking";
   LineSearchSettings line_search_settings;
   double weight = 1e5;  // w (§6.2)

@@ -1,5 +1,7 @@
 #include "preconditioners/factored_preconditioner.h"
 
+#include <Eigen/IterativeLinearSolvers>
+
 #include "framework/error.h"
 
 namespace akvf {
@@ -40,11 +42,16 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
   if (!(options_.absolute_shift >= 0)) throw OptionsError("absolute Tikhonov shift must be >= 0");
   if (!(options_.reuse_tolerance >= 0 && options_.reuse_tolerance < 1))
     throw OptionsError("factorization reuse tolerance must be in [0, 1)");
+  if (!(options_.cg_tolerance >= 0 && options_.cg_tolerance < 1)) throw OptionsError("CG tolerance must be in [0, 1)");
+  if (options_.cg_max_iterations < 1) throw OptionsError("CG needs at least one iteration");
   if (options_.reuse_max_cg < 1) throw OptionsError("factorization reuse needs at least one CG iteration");
 }
 
 template <int D>
 std::string FactoredPreconditioner<D>::report() const {
+  if (statistics_.cg_solves > 0)
+    return std::to_string(statistics_.cg_solves) + " CG solves (" + std::to_string(statistics_.cg_iterations) +
+           " iterations), no factorization";
   return std::to_string(statistics_.factorizations) + " factorizations, " + std::to_string(statistics_.reused_solves) +
          " solves with an earlier factor (" + std::to_string(statistics_.cg_iterations) + " CG iterations)";
 }
@@ -64,6 +71,7 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   assemble(state, &matrix_);
   matrix_.add_to_diagonal(options_.tikhonov * matrix_.mean_diagonal() + options_.absolute_shift);
   factor_is_current_ = false;
+  if (options_.cg_tolerance > 0) return;  // apply() runs CG on the assembled matrix
   // Without reuse, or before the first factorization, factor now (§5.2);
   // otherwise apply() decides whether the previous factor still serves.
   if (options_.reuse_tolerance <= 0 || !cholesky_.analyzed()) {
@@ -85,6 +93,10 @@ void FactoredPreconditioner<D>::factorize_current() {
 
 template <int D>
 void FactoredPreconditioner<D>::apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) {
+  if (options_.cg_tolerance > 0 && !is_constant()) {
+    solve_by_conjugate_gradients(gradient, result);
+    return;
+  }
   if (!factor_is_current_) {
     if (solve_with_previous_factor(gradient, result)) {
       ++statistics_.reused_solves;
@@ -141,6 +153,21 @@ bool FactoredPreconditioner<D>::solve_with_previous_factor(const Eigen::VectorXd
     rz = rz_next;
   }
   return false;
+}
+
+template <int D>
+void FactoredPreconditioner<D>::solve_by_conjugate_gradients(const Eigen::VectorXd& g, Eigen::VectorXd* d) {
+  // Eigen's CG reads only the upper triangle; Jacobi preconditioning.
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Upper> cg;
+  cg.setTolerance(options_.cg_tolerance);
+  cg.setMaxIterations(options_.cg_max_iterations);
+  cg.compute(matrix_.upper());
+  Eigen::VectorXd rhs = g;
+  rhs -= null_basis_ * (null_basis_.transpose() * rhs);
+  *d = cg.solve(rhs);
+  *d -= null_basis_ * (null_basis_.transpose() * *d);
+  ++statistics_.cg_solves;
+  statistics_.cg_iterations += static_cast<int>(cg.iterations());
 }
 
 template class FactoredPreconditioner<2>;

@@ -33,10 +33,16 @@ struct FactorOptions {
   double absolute_shift = 0;   // added to the relative shift: c of K + c I (§6.2 uses 1e-4)
   double reuse_tolerance = 0;  // tau; 0 factors at every update
   int reuse_max_cg = 8;
+  // > 0: never factor; solve (P + shift) d = g by Jacobi-preconditioned
+  // conjugate gradients to this relative residual (§6.2 uses 1 %), at most
+  // cg_max_iterations iterations (the last iterate is still a descent direction).
+  double cg_tolerance = 0;
+  int cg_max_iterations = 1000;
 };
 
 struct FactorStatistics {
   int factorizations = 0;
+  int cg_solves = 0;      // directions from plain (Jacobi) CG, cg_tolerance > 0
   int reused_solves = 0;  // directions from CG with an older factorization
   int cg_iterations = 0;
 };
@@ -65,6 +71,7 @@ class FactoredPreconditioner : public Preconditioner {
 
  private:
   void factorize_current();
+  void solve_by_conjugate_gradients(const Eigen::VectorXd& g, Eigen::VectorXd* d);
   bool solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d);
 
   FactorOptions options_;

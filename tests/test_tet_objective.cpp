@@ -162,3 +162,21 @@ TEST_CASE("a tet deformation with constraints never inverts a tet and lowers the
       CHECK(run.result.trace.back().energy < run.result.trace.front().energy);
     }
 }
+
+TEST_CASE("3D AKVF with conjugate gradients solves (K + c I) d = g to the tolerance without factoring") {
+  const akvf::TetMesh mesh = akvf::test::tet_grid(2);
+  const akvf::TetObjective objective = cube_objective(mesh);
+  const Eigen::VectorXd x = deformed(mesh, 6);
+  Eigen::VectorXd g, d;
+  objective.value_and_gradient(x, &g);
+  akvf::Akvf3DOptions options;
+  options.factor.cg_tolerance = 0.01;
+  akvf::AkvfPreconditioner3D preconditioner(objective, options);
+  preconditioner.update({x, g, 0.0, 1});
+  preconditioner.apply(g, &d);
+  const Eigen::MatrixXd P(preconditioner.matrix().full());
+  CHECK((P * d - g).norm() <= 0.0101 * g.norm());
+  CHECK(g.dot(d) > 0);
+  CHECK(preconditioner.statistics().factorizations == 0);
+  CHECK(preconditioner.statistics().cg_solves == 1);
+}
