@@ -59,17 +59,20 @@ std::string FactoredPreconditioner<D>::report() const {
 template <int D>
 void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   null_basis_ = null_space(state.x);
+  // P(x) plus the Tikhonov shift: relative to mean(diag P), plus the absolute c.
+  const auto assemble_shifted = [&] {
+    assemble(state, &matrix_);
+    matrix_.add_to_diagonal(options_.tikhonov * matrix_.mean_diagonal() + options_.absolute_shift);
+  };
   if (is_constant()) {
     if (!cholesky_.analyzed()) {
-      assemble(state, &matrix_);
-      matrix_.add_to_diagonal(options_.tikhonov * matrix_.mean_diagonal() + options_.absolute_shift);
+      assemble_shifted();
       factorize_current();
     }
     factor_is_current_ = true;
     return;
   }
-  assemble(state, &matrix_);
-  matrix_.add_to_diagonal(options_.tikhonov * matrix_.mean_diagonal() + options_.absolute_shift);
+  assemble_shifted();
   factor_is_current_ = false;
   if (options_.cg_tolerance > 0) return;  // apply() runs CG on the assembled matrix
   // Without reuse, or before the first factorization, factor now (§5.2);
