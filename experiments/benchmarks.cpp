@@ -92,7 +92,7 @@ void BM_NumericFactorization(benchmark::State& state, const std::string& mesh) {
   REQUIRE_FIXTURE(state, mesh);
   const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
   akvf::SparseCholesky cholesky;
-  cholesky.analyze(K.upper());
+  cholesky.analyze(K.upper(), 2);
   for (auto _ : state) cholesky.factorize(K.upper());
   state.counters["nnz(L)"] = cholesky.factor_nonzeros();
   state.counters["flops"] = benchmark::Counter(cholesky.factor_flops(), benchmark::Counter::kIsIterationInvariantRate);
@@ -103,7 +103,7 @@ void BM_SymbolicAnalysis(benchmark::State& state, const std::string& mesh) {
   const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
   for (auto _ : state) {
     akvf::SparseCholesky cholesky;
-    cholesky.analyze(K.upper());
+    cholesky.analyze(K.upper(), 2);
   }
 }
 

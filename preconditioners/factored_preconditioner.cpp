@@ -1,6 +1,7 @@
 #include "preconditioners/factored_preconditioner.h"
 
 #include <Eigen/IterativeLinearSolvers>
+#include <cmath>
 
 #include "framework/error.h"
 
@@ -87,7 +88,7 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
 
 template <int D>
 void FactoredPreconditioner<D>::factorize_current() {
-  if (!cholesky_.analyzed()) cholesky_.analyze(matrix_.upper());
+  if (!cholesky_.analyzed()) cholesky_.analyze(matrix_.upper(), D);
   cholesky_.factorize(matrix_.upper());
   factored_null_basis_ = null_basis_;
   factor_is_current_ = true;
@@ -133,6 +134,7 @@ bool FactoredPreconditioner<D>::solve_with_previous_factor(const Eigen::VectorXd
   Eigen::VectorXd r = g;
   project(null_basis_, r);
   const double target = options_.reuse_tolerance * g.norm();
+  const double initial_residual = r.norm();
   d->setZero(g.size());
   Eigen::VectorXd z, p, q;
   precondition(r, &z);
@@ -146,9 +148,16 @@ bool FactoredPreconditioner<D>::solve_with_previous_factor(const Eigen::VectorXd
     const double alpha = rz / curvature;
     *d += alpha * p;
     r -= alpha * q;
-    if (r.norm() <= target) {
+    const double residual = r.norm();
+    if (residual <= target) {
       project(null_basis_, *d);
       return true;
+    }
+    // Give up early when the mean contraction so far, continued to the last
+    // allowed iteration, would still miss the target by a wide margin.
+    if (k >= 2 && k < options_.reuse_max_cg) {
+      const double rate = std::pow(residual / initial_residual, 1.0 / k);
+      if (residual * std::pow(rate, options_.reuse_max_cg - k) > 3 * target) return false;
     }
     precondition(r, &z);
     const double rz_next = r.dot(z);

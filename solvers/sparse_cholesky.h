@@ -18,7 +18,10 @@ class SparseCholesky {
 
   // Symbolic analysis of the pattern of `upper` (the upper triangle, column
   // major, compressed). Later factorize() calls must use the same pattern.
-  void analyze(const Eigen::SparseMatrix<double>& upper);
+  // With block_size b > 1 the unknowns come in groups of b consecutive ones
+  // (the coordinates of a vertex) that share their couplings; the ordering is
+  // then found on the graph of the groups, which is b^2 times smaller.
+  void analyze(const Eigen::SparseMatrix<double>& upper, int block_size = 1);
   // Numeric factorization A = L L^T. Throws NumericalError if A is not
   // positive definite.
   void factorize(const Eigen::SparseMatrix<double>& upper);
@@ -26,6 +29,9 @@ class SparseCholesky {
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd* x);
 
   bool analyzed() const;
+  // True if CHOLMOD chose the supernodal factorization (solved by our own
+  // supernodal triangular solves), false for its simplicial one.
+  bool supernodal() const;
   // Nonzeros of the factor L after the last analyze().
   double factor_nonzeros() const;
   // Floating-point operations of one numeric factorization.
