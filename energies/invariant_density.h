@@ -15,15 +15,14 @@ struct InvariantDerivatives {
   double f = 0, f_s = 0, f_g = 0, f_ss = 0, f_sg = 0, f_gg = 0;
 };
 
-class InvariantDensity2 : public DistortionDensity2 {
+class InvariantDensity2 : public DistortionDensity2, public SingularValueDerivative<2> {
  public:
   double value(const Matrix& J) const final;
   double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const final;
   Hessian hessian(const Matrix& J) const final;
 
-  // dD/dsigma_i at singular values (sigma_1, sigma_2) with sigma_1 sigma_2 > 0
-  // (what the SLIM proxy reweights with).
-  Eigen::Vector2d singular_value_gradient(const Eigen::Vector2d& sigma) const;
+  // dD/dsigma_i = 2 f_s sigma_i + f_g sigma_j (j != i).
+  Eigen::Vector2d singular_value_gradient(const Eigen::Vector2d& sigma) const final;
 
  protected:
   // f and its partials (g > 0). value() uses the same f, so the energy the

@@ -95,6 +95,20 @@ InvariantDensity3::Hessian InvariantDensity3::hessian(const Matrix& J) const {
          d.f_g * determinant_hessian(J);
 }
 
+Eigen::Vector3d InvariantDensity3::singular_value_gradient(const Eigen::Vector3d& sigma) const {
+  const Eigen::Vector3d squared = sigma.cwiseAbs2();
+  const double s = squared.sum();
+  const double c = squared[0] * squared[1] + squared[1] * squared[2] + squared[2] * squared[0];
+  const double g = sigma.prod();
+  const InvariantDerivatives3 d = derivatives(s, c, g);
+  Eigen::Vector3d gradient;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    gradient[i] = 2 * sigma[i] * (d.f_s + d.f_c * (squared[j] + squared[k])) + d.f_g * sigma[j] * sigma[k];
+  }
+  return gradient;
+}
+
 InvariantDerivatives3 SymmetricDirichlet3::formula(double s, double c, double g) {
   const double g2 = g * g, g3 = g2 * g;
   InvariantDerivatives3 d;
@@ -104,30 +118,6 @@ InvariantDerivatives3 SymmetricDirichlet3::formula(double s, double c, double g)
   d.f_g = -2 * c / g3;
   d.f_cg = -2 / g3;
   d.f_gg = 6 * c / (g2 * g2);
-  return d;
-}
-
-ExpSymmetricDirichlet3::ExpSymmetricDirichlet3(double exponent) : exponent_(exponent) {
-  if (!(exponent > 0)) throw OptionsError("energy exponent must be > 0");
-}
-
-double ExpSymmetricDirichlet3::lower_bound() const { return std::exp(6 * exponent_); }
-
-InvariantDerivatives3 ExpSymmetricDirichlet3::derivatives(double s, double c, double g) const {
-  const InvariantDerivatives3 u = SymmetricDirichlet3::formula(s, c, g);
-  const double k = exponent_;
-  InvariantDerivatives3 d;
-  d.f = std::exp(k * u.f);
-  const double kf = k * d.f;
-  d.f_s = kf * u.f_s;
-  d.f_c = kf * u.f_c;
-  d.f_g = kf * u.f_g;
-  d.f_ss = kf * (u.f_ss + k * u.f_s * u.f_s);
-  d.f_sc = kf * (u.f_sc + k * u.f_s * u.f_c);
-  d.f_sg = kf * (u.f_sg + k * u.f_s * u.f_g);
-  d.f_cc = kf * (u.f_cc + k * u.f_c * u.f_c);
-  d.f_cg = kf * (u.f_cg + k * u.f_c * u.f_g);
-  d.f_gg = kf * (u.f_gg + k * u.f_g * u.f_g);
   return d;
 }
 

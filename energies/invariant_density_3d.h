@@ -5,7 +5,7 @@
 //   dD/dvec(J) = G f',   d2D/dvec(J)^2 = G f'' G^T + f_s H_s + f_c H_c + f_g H_g,
 // G = [ds dc dg] (9 by 3); ds = 2 vec J, dc = vec(2 s J - 2 J J^T J),
 // dg = vec(cof J); H_s = 2 I, H_c and H_g (linear in J) as derived in the
-// .cpp. +infinity when g <= 0. Used by the tet issue's energies.
+// .cpp. +infinity when g <= 0. The other 3D energies: distortion_energies_3d.h.
 #include "framework/distortion_density.h"
 
 namespace akvf {
@@ -16,11 +16,13 @@ struct InvariantDerivatives3 {
   double f_ss = 0, f_sc = 0, f_sg = 0, f_cc = 0, f_cg = 0, f_gg = 0;
 };
 
-class InvariantDensity3 : public DistortionDensity<3> {
+class InvariantDensity3 : public DistortionDensity<3>, public SingularValueDerivative<3> {
  public:
   double value(const Matrix& J) const final;
   double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const final;
   Hessian hessian(const Matrix& J) const final;
+  // dD/dsigma_i = 2 sigma_i (f_s + f_c (sigma_j^2 + sigma_k^2)) + f_g sigma_j sigma_k.
+  Eigen::Vector3d singular_value_gradient(const Eigen::Vector3d& sigma) const final;
 
  protected:
   virtual InvariantDerivatives3 derivatives(double s, double c, double g) const = 0;
@@ -35,20 +37,6 @@ class SymmetricDirichlet3 final : public InvariantDensity3 {
 
  protected:
   InvariantDerivatives3 derivatives(double s, double c, double g) const override { return formula(s, c, g); }
-};
-
-// 3D exponential symmetric Dirichlet exp(k (|J|^2 + |J^-1|^2)), minimum exp(6k).
-class ExpSymmetricDirichlet3 final : public InvariantDensity3 {
- public:
-  explicit ExpSymmetricDirichlet3(double exponent);
-  std::string name() const override { return "exp-symmetric-dirichlet"; }
-  double lower_bound() const override;
-
- protected:
-  InvariantDerivatives3 derivatives(double s, double c, double g) const override;
-
- private:
-  double exponent_;
 };
 
 }  // namespace akvf

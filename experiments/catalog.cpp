@@ -1,7 +1,7 @@
 #include "experiments/catalog.h"
 
 #include "energies/distortion_energies.h"
-#include "energies/invariant_density_3d.h"
+#include "energies/distortion_energies_3d.h"
 #include "energies/symmetric_dirichlet.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "preconditioners/identity_preconditioner.h"
@@ -36,8 +36,14 @@ const DensityRegistry3D& energies_3d() {
     DensityRegistry3D r("3D energy");
     r.add("symmetric-dirichlet", "|J|^2 + |J^-1|^2 on tets; lower bound 6",
           [](const EnergySettings&) { return std::make_unique<SymmetricDirichlet3>(); });
+    r.add("arap", "|J - R(J)|^2 on tets, R the closest rotation (through the SVD); lower bound 0",
+          [](const EnergySettings&) { return std::make_unique<Arap3>(); });
+    r.add("mips", "conformal |J|^2 / det(J)^(2/3) on tets; lower bound 3",
+          [](const EnergySettings&) { return std::make_unique<Mips3>(); });
     r.add("exp-symmetric-dirichlet", "exp(k (|J|^2 + |J^-1|^2)) on tets, k = --exponent; lower bound exp(6k)",
           [](const EnergySettings& e) { return std::make_unique<ExpSymmetricDirichlet3>(e.exponent); });
+    r.add("amips", "exp(k (|J|^2 / (6 det(J)^(2/3)) + (det J + 1/det J) / 4)) on tets, k = --exponent; bound exp(k)",
+          [](const EnergySettings& e) { return std::make_unique<Amips3>(e.exponent); });
     return r;
   }();
   return registry;

@@ -38,4 +38,16 @@ class DistortionDensity {
 
 using DistortionDensity2 = DistortionDensity<2>;
 
+// Densities that expose dD/dsigma_i, the derivative in the signed singular
+// values of J (J = U diag(sigma) V^T with U V^T a rotation): what the SLIM
+// proxy reweights with. A density implements it alongside DistortionDensity.
+template <int Dim>
+class SingularValueDerivative {
+ public:
+  using Vector = Eigen::Matrix<double, Dim, 1>;
+  virtual ~SingularValueDerivative() = default;
+  // At sigma with a positive product (an element that is not inverted).
+  virtual Vector singular_value_gradient(const Vector& sigma) const = 0;
+};
+
 }  // namespace akvf

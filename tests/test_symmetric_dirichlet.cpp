@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "energies/distortion_energies.h"
-#include "energies/invariant_density_3d.h"
+#include "energies/distortion_energies_3d.h"
 #include "energies/symmetric_dirichlet.h"
 #include "tests/density_checks.h"
 
@@ -94,11 +94,14 @@ TEST_CASE("the singular-value gradient is the derivative of D along the singular
   }
 }
 
-TEST_CASE("3D symmetric Dirichlet and its exponential: derivatives by finite differences, bounds, inversion") {
+TEST_CASE("every 3D energy: derivatives by finite differences, bounds, inversion") {
   const akvf::SymmetricDirichlet3 sd;
   const akvf::ExpSymmetricDirichlet3 exp_sd(0.2);
+  const akvf::Mips3 mips;
+  const akvf::Amips3 amips(0.5);
+  const akvf::Arap3 arap;
   for (const akvf::DistortionDensity<3>* density :
-       std::initializer_list<const akvf::DistortionDensity<3>*>{&sd, &exp_sd}) {
+       std::initializer_list<const akvf::DistortionDensity<3>*>{&sd, &exp_sd, &mips, &amips, &arap}) {
     CAPTURE(density->name());
     akvf::test::check_density_derivatives<3>(*density, 0.5, 2.0, 30);
     const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
@@ -108,4 +111,29 @@ TEST_CASE("3D symmetric Dirichlet and its exponential: derivatives by finite dif
   }
   akvf::test::check_density_derivatives<3>(sd, 0.1, 10.0, 20, 9);
   CHECK(sd.lower_bound() == 6.0);
+  // MIPS is scale invariant: 3 at every similarity, not only at rotations.
+  CHECK(mips.value(2.5 * Eigen::Matrix3d::Identity()) == doctest::Approx(3.0).epsilon(1e-14));
+}
+
+TEST_CASE("3D singular-value derivatives match finite differences in sigma") {
+  const akvf::SymmetricDirichlet3 sd;
+  const akvf::Amips3 amips(0.5);
+  const akvf::Arap3 arap;
+  const Eigen::Vector3d sigma(1.7, 0.8, 0.45);
+  for (const akvf::SingularValueDerivative<3>* density :
+       std::initializer_list<const akvf::SingularValueDerivative<3>*>{&sd, &amips, &arap}) {
+    const auto& energy = dynamic_cast<const akvf::DistortionDensity<3>&>(*density);
+    CAPTURE(energy.name());
+    const Eigen::Vector3d grad = density->singular_value_gradient(sigma);
+    const double h = 1e-6;
+    for (int i = 0; i < 3; ++i) {
+      Eigen::Vector3d plus = sigma, minus = sigma;
+      plus[i] += h;
+      minus[i] -= h;
+      const double fd =
+          (energy.value(plus.asDiagonal().toDenseMatrix()) - energy.value(minus.asDiagonal().toDenseMatrix())) /
+          (2 * h);
+      CHECK(grad[i] == doctest::Approx(fd).epsilon(1e-6));
+    }
+  }
 }
