@@ -4,6 +4,7 @@
 #include "energies/distortion_energies_3d.h"
 #include "energies/symmetric_dirichlet.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
+#include "preconditioners/energy_scale.h"
 #include "preconditioners/identity_preconditioner.h"
 #include "preconditioners/laplacian_preconditioner.h"
 #include "preconditioners/newton_preconditioner.h"
@@ -52,12 +53,29 @@ const DensityRegistry3D& energies_3d() {
 const PreconditionerRegistry3D& preconditioners_3d() {
   static const PreconditionerRegistry3D registry = [] {
     PreconditionerRegistry3D r("3D preconditioner");
-    r.add("akvf", "K(x) + c I with K of Eq. (9)-(10), c = 1e-4 (Sec. 6.2)",
-          [](const TetObjective& objective, const Akvf3DOptions& options) {
-            return std::make_unique<AkvfPreconditioner3D>(objective, options);
+    r.add("akvf", "s K(x) + c I + constraints' Hessian, K of Eq. (9)-(10), c = 1e-4 (Sec. 6.2), s secant scale",
+          [](const TetObjective& objective, const Preconditioner3DSettings& settings) {
+            return std::make_unique<AkvfPreconditioner3D>(objective, settings.akvf);
+          });
+    r.add("newton", "projected Newton: tet Hessians clamped to PSD, plus the constraints' Hessian",
+          [](const TetObjective& objective, const Preconditioner3DSettings& settings) {
+            return std::make_unique<NewtonPreconditioner3D>(objective, settings.newton);
+          });
+    r.add("laplacian",
+          "AQP proxy: the rest Laplacian per coordinate at the energy's scale, plus the constraints' Hessian",
+          [](const TetObjective& objective, const Preconditioner3DSettings& settings) {
+            // L's quadratic form along a unit shear is |S|^2 = 2 (weights sum to 1).
+            return std::make_unique<LaplacianPreconditioner3D>(objective, settings.laplacian, MotionProjection::kNone,
+                                                               rest_shear_curvature(objective.density()) / 2);
+          });
+    r.add("slim", "SLIM: reweighted ARAP proxy plus the constraints' Hessian (Rabinovich et al. 2017)",
+          [](const TetObjective& objective, const Preconditioner3DSettings& settings) {
+            return std::make_unique<SlimPreconditioner3D>(objective, settings.slim);
           });
     r.add("identity", "no preconditioning: plain gradient descent",
-          [](const TetObjective&, const Akvf3DOptions&) { return std::make_unique<IdentityPreconditioner>(); });
+          [](const TetObjective&, const Preconditioner3DSettings&) {
+            return std::make_unique<IdentityPreconditioner>();
+          });
     return r;
   }();
   return registry;
@@ -74,7 +92,8 @@ const PreconditionerRegistry& preconditioners_2d() {
           [](const ParamObjective& objective, const PreconditionerSettings& settings) {
             return std::make_unique<NewtonPreconditioner2D>(objective, settings.newton);
           });
-    r.add("laplacian", "AQP proxy: cotangent Laplacian of the 3D mesh per coordinate, factored once (no acceleration)",
+    r.add("laplacian",
+          "AQP proxy: cotangent Laplacian of the 3D mesh per coordinate, factored once; AQP momentum by default",
           [](const ParamObjective& objective, const PreconditionerSettings& settings) {
             return std::make_unique<LaplacianPreconditioner2D>(objective, settings.laplacian);
           });
@@ -95,6 +114,14 @@ void require_method(const std::string& name) {
   if (name == kLbfgsMethod || preconditioners_2d().contains(name)) return;
   throw OptionsError("unknown preconditioner '" + name + "' (valid: " + preconditioners_2d().names() + ", " +
                      kLbfgsMethod + ")");
+}
+
+double acceleration_eta(const std::string& mode, const std::string& preconditioner) {
+  // AQP's acceleration parameter eta (theta = (1 - 1/sqrt(eta)) / (1 + 1/sqrt(eta)) = 0.82).
+  constexpr double kAqpEta = 100;
+  if (mode != "auto" && mode != "on" && mode != "off")
+    throw OptionsError("acceleration must be auto, on or off, found '" + mode + "'");
+  return mode == "on" || (mode == "auto" && preconditioner == "laplacian") ? kAqpEta : 0;
 }
 
 const LineSearchRegistry& line_searches() {

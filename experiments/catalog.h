@@ -40,8 +40,21 @@ inline constexpr const char* kLbfgsDescription =
 // Throws OptionsError listing every valid --precond name when `name` is none.
 void require_method(const std::string& name);
 
+// OptimizerOptions::acceleration_eta for an --acceleration mode: "auto" turns
+// AQP's momentum (eta = 100) on for the laplacian preconditioner only, "on"
+// and "off" force it. Throws OptionsError for any other mode.
+double acceleration_eta(const std::string& mode, const std::string& preconditioner);
+
 using DensityRegistry3D = Registry<DistortionDensity<3>, const EnergySettings&>;
-using PreconditionerRegistry3D = Registry<Preconditioner, const TetObjective&, const Akvf3DOptions&>;
+// Options of the 3D preconditioners. In deformation, newton, laplacian and
+// slim carry the constraint term's Hessian in their extra_diagonal.
+struct Preconditioner3DSettings {
+  Akvf3DOptions akvf;
+  FactorOptions newton{.tikhonov = 1e-8, .absolute_shift = 1e-4};
+  FactorOptions laplacian{.tikhonov = 1e-8, .absolute_shift = 1e-4};
+  FactorOptions slim{.tikhonov = 1e-8, .absolute_shift = 1e-4};
+};
+using PreconditionerRegistry3D = Registry<Preconditioner, const TetObjective&, const Preconditioner3DSettings&>;
 
 const DensityRegistry& energies_2d();
 const DensityRegistry3D& energies_3d();

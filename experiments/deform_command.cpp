@@ -22,10 +22,14 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
       {
           {"constraints", "FILE", "one `vertex_index x y z` per line (0-based), # comments"},
           {"preset", "NAME", "slim-cube: the SLIM paper's twisted cube (Figure 8)"},
-          {"weight", "W", "constraint weight w (default 1e5)"},
-          {"energy", "NAME", "symmetric-dirichlet (default) or exp-symmetric-dirichlet"},
-          {"exponent", "K", "exponent of exp-symmetric-dirichlet (default 1)"},
-          {"precond", "NAME", "akvf (default: K + 1e-4 I) or identity"},
+          {"weight", "W", "soft constraint weight w (default 1e5)"},
+          {"hard", "",
+           "hard constraints: constrained vertices start at their targets and stay\n"
+           "                          (refused when that inverts a tet)"},
+          {"energy", "NAME", "symmetric-dirichlet (default), exp-symmetric-dirichlet, arap, mips, amips"},
+          {"exponent", "K", "exponent of exp-symmetric-dirichlet and amips (default 1)"},
+          {"precond", "NAME", "akvf (default: K + 1e-4 I), newton, laplacian, slim, identity"},
+          {"acceleration", "auto|on|off", "AQP momentum (default auto: on for --precond laplacian only)"},
           {"cg-tol", "X",
            "solve with Jacobi-preconditioned CG to relative residual X instead of\n"
            "                          factoring (the paper uses 0.01; default 0 = factor)"},
@@ -53,9 +57,14 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   config.energy_settings.exponent = cl.real("exponent", config.energy_settings.exponent);
   if (!(config.energy_settings.exponent > 0)) throw OptionsError("option --exponent must be > 0");
   config.preconditioner = cl.text("precond", config.preconditioner);
-  config.akvf.factor.cg_tolerance = cl.real("cg-tol", 0);
-  if (!(config.akvf.factor.cg_tolerance >= 0 && config.akvf.factor.cg_tolerance < 1))
-    throw OptionsError("option --cg-tol must be in [0, 1)");
+  const double cg_tolerance = cl.real("cg-tol", 0);
+  if (!(cg_tolerance >= 0 && cg_tolerance < 1)) throw OptionsError("option --cg-tol must be in [0, 1)");
+  Preconditioner3DSettings& settings = config.preconditioner_settings;
+  for (FactorOptions* options : {&settings.akvf.factor, &settings.newton, &settings.slim})
+    options->cg_tolerance = cg_tolerance;
+  config.hard_constraints = cl.has("hard");
+  config.acceleration = cl.text("acceleration", config.acceleration);
+  if (config.hard_constraints && cl.has("weight")) throw OptionsError("option --weight has no effect with --hard");
   config.weight = cl.real("weight", config.weight);
   if (!(config.weight > 0)) throw OptionsError("option --weight must be > 0");
   config.optimizer.max_iterations = cl.integer("max-iters", config.optimizer.max_iterations);

@@ -1,7 +1,9 @@
 #pragma once
 // Volumetric deformation (§6.2): minimize sum_t V_t D(J_t) / sum_t V_t +
 // w sum_i |x_i - p_i|^2 over the vertex positions of a tet mesh, starting
-// from the rest shape, with a flip-free preconditioned descent.
+// from the rest shape, with a flip-free preconditioned descent; or, with hard
+// constraints, the distortion alone with the constrained vertices fixed at
+// their targets.
 #include <string>
 
 #include "experiments/catalog.h"
@@ -15,10 +17,14 @@ struct DeformConfig {
   std::string energy = "symmetric-dirichlet";
   EnergySettings energy_settings;
   std::string preconditioner = "akvf";
-  Akvf3DOptions akvf;  // c of K + c I, CG instead of the factorization
+  Preconditioner3DSettings preconditioner_settings;  // c of K + c I, CG instead of the factorization, ...
   std::string line_search = "backtracking";
+  std::string acceleration = "auto";  // AQP momentum: see acceleration_eta() in catalog.h
   LineSearchSettings line_search_settings;
   double weight = 1e5;  // w (§6.2)
+  // Hard constraints instead: the constrained vertices start at their
+  // targets (refused if that inverts a tet) and stay there.
+  bool hard_constraints = false;
   OptimizerOptions optimizer = [] {
     OptimizerOptions o;
     o.max_iterations = 100;  // Figure 8 runs 100 iterations of each method

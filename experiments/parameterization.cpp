@@ -13,9 +13,6 @@ namespace {
 constexpr const char* kWarmStartEnergy = "symmetric-dirichlet";
 
 void warm_start(const ParamConfig& config, ParamSetup* setup);
-
-// AQP's acceleration parameter eta (theta = (1 - 1/sqrt(eta)) / (1 + 1/sqrt(eta)) = 0.82).
-constexpr double kAqpEta = 100;
 }  // namespace
 
 ParamSetup prepare_parameterization(const TriMesh& input, const std::string& name, const ParamConfig& config) {
@@ -25,8 +22,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   // Resolve names first so a typo fails before any work.
   std::shared_ptr<const DistortionDensity2> density = energies_2d().create(config.energy, config.energy_settings);
   require_method(config.preconditioner);
-  if (config.acceleration != "auto" && config.acceleration != "on" && config.acceleration != "off")
-    throw OptionsError("acceleration must be auto, on or off, found '" + config.acceleration + "'");
+  acceleration_eta(config.acceleration, config.preconditioner);  // validates the mode
   line_searches().require(config.line_search);
 
   ParamSetup setup;
@@ -48,9 +44,7 @@ ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config
                               const std::vector<IterationCallback>& callbacks) {
   ParamRun run;
   OptimizerOptions optimizer = config.optimizer;
-  const bool accelerate =
-      config.acceleration == "on" || (config.acceleration == "auto" && config.preconditioner == "laplacian");
-  optimizer.acceleration_eta = accelerate ? kAqpEta : 0;
+  optimizer.acceleration_eta = acceleration_eta(config.acceleration, config.preconditioner);
   if (config.preconditioner == kLbfgsMethod) {
     run.preconditioner_name = kLbfgsMethod;
     run.result = minimize_lbfgs(*setup.objective, setup.x0, config.optimizer, {}, callbacks);  // no momentum

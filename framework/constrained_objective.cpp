@@ -39,4 +39,34 @@ double SoftConstrainedObjective::value_and_gradient(const Eigen::VectorXd& x, Ei
   return energy + penalty(x);
 }
 
+Eigen::VectorXd SoftConstrainedObjective::hessian_diagonal() const {
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(base_.num_variables());
+  for (int v : constraints_.vertices) diagonal.segment(dimension_ * v, dimension_).setConstant(2 * weight_);
+  return diagonal;
+}
+
+FixedVerticesObjective::FixedVerticesObjective(const Objective& base, int dimension, std::vector<int> fixed_vertices)
+    : base_(base), free_mask_(Eigen::VectorXd::Ones(base.num_variables())) {
+  const int num_vertices = base_.num_variables() / dimension;
+  for (int v : fixed_vertices) {
+    if (v < 0 || v >= num_vertices)
+      throw OptionsError("constrained vertex " + std::to_string(v) + " out of range (" + std::to_string(num_vertices) +
+                         " vertices)");
+    free_mask_.segment(dimension * v, dimension).setZero();
+  }
+}
+
+double FixedVerticesObjective::value_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd* gradient) const {
+  const double energy = base_.value_and_gradient(x, gradient);
+  gradient->array() *= free_mask_.array();
+  return energy;
+}
+
+Eigen::VectorXd place_at_targets(const Eigen::VectorXd& x, int dimension, const PositionConstraints& constraints) {
+  Eigen::VectorXd placed = x;
+  for (std::size_t c = 0; c < constraints.vertices.size(); ++c)
+    placed.segment(dimension * constraints.vertices[c], dimension) = constraints.targets.row(c).transpose();
+  return placed;
+}
+
 }  // namespace akvf

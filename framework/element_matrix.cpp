@@ -85,6 +85,17 @@ void ElementMatrix<D, N>::add_to_diagonal(double shift) {
 }
 
 template <int D, int N>
+void ElementMatrix<D, N>::scale(double factor) {
+  upper_ *= factor;
+  mean_diagonal_ *= factor;
+}
+
+template <int D, int N>
+void ElementMatrix<D, N>::add_to_diagonal(const Eigen::VectorXd& values) {
+  for (std::size_t i = 0; i < diagonal_entries_.size(); ++i) upper_.valuePtr()[diagonal_entries_[i]] += values[i];
+}
+
+template <int D, int N>
 Eigen::SparseMatrix<double> ElementMatrix<D, N>::full() const {
   Eigen::SparseMatrix<double> strict_lower = upper_.transpose();
   strict_lower.prune([](int row, int col, double) { return row > col; });

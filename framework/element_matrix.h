@@ -33,6 +33,10 @@ class ElementMatrix {
   void assemble(const LocalFunction& local);
   // upper() += shift I (Tikhonov regularization).
   void add_to_diagonal(double shift);
+  // upper() *= factor (mean_diagonal() follows).
+  void scale(double factor);
+  // upper() += diag(values), one value per dof.
+  void add_to_diagonal(const Eigen::VectorXd& values);
 
   // Upper triangle, column-major compressed, D|V| by D|V|.
   const Eigen::SparseMatrix<double>& upper() const { return upper_; }

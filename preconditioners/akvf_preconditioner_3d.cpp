@@ -1,18 +1,37 @@
 #include "preconditioners/akvf_preconditioner_3d.h"
 
+#include "preconditioners/energy_scale.h"
+
 namespace akvf {
 
 AkvfPreconditioner3D::AkvfPreconditioner3D(const TetObjective& objective, Akvf3DOptions options)
     : FactoredPreconditioner3D(objective.faces(), objective.num_vertices(), options.factor),
       objective_(objective),
-      options_(options) {}
+      options_(options),
+      // Energy curvature (weights V_t / sum V) over K's, 4 sum V, along a shear.
+      scale_(options.secant_scaling ? rest_shear_curvature(objective.density()) / (4 * objective.rest().total_volume)
+                                    : 1.0) {}
 
 void AkvfPreconditioner3D::assemble(const OptimizationState& state, ElementMatrix3D* matrix) {
   assemble_killing_operator_3d(objective_.faces(), state.x, matrix);
+  if (options_.secant_scaling) {
+    if (previous_x_.size() == state.x.size()) {
+      const Eigen::VectorXd dx = state.x - previous_x_;
+      Eigen::VectorXd dg = state.gradient - previous_gradient_;
+      const Eigen::VectorXd& constraint_hessian = options_.factor.extra_diagonal;
+      if (constraint_hessian.size() != 0) dg -= constraint_hessian.cwiseProduct(dx);
+      const double energy_curvature = dx.dot(dg);
+      const double killing_curvature = dx.dot(matrix->upper().selfadjointView<Eigen::Upper>() * dx);
+      if (energy_curvature > 0 && killing_curvature > 0) scale_ = energy_curvature / killing_curvature;
+    }
+    previous_x_ = state.x;
+    previous_gradient_ = state.gradient;
+  }
+  matrix->scale(scale_);
 }
 
 Eigen::MatrixXd AkvfPreconditioner3D::null_space(const Eigen::VectorXd& x) const {
-  return options_.project_rigid ? rigid_motion_basis_3d(x) : Eigen::MatrixXd(x.size(), 0);
+  return motion_basis(3, options_.project_rigid ? MotionProjection::kRigidMotions : MotionProjection::kNone, x);
 }
 
 }  // namespace akvf

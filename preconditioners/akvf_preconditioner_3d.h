@@ -1,10 +1,20 @@
 #pragma once
-// The AKVF preconditioner on tet meshes (§4.2.2, §6.2): P = K(x) + c I with
-// K(x) of Eq. (9)-(10) at the current positions. In deformation with
-// positional constraints the energy is not rigid-invariant, so nothing is
-// projected out by default and the Tikhonov term c I (§6.2: c = 1e-4) makes
-// P positive definite; for an unconstrained rigid-invariant energy,
-// project_rigid removes the six rigid motions as in 2D.
+// The AKVF preconditioner on tet meshes (§4.2.2, §6.2): P = s K(x) + c I + H_c
+// with K(x) of Eq. (9)-(10) at the current positions, c = 1e-4 (§6.2) and
+// H_c the soft constraints' Hessian (FactorOptions::extra_diagonal), as in
+// SLIM's own solve, which §6.2 follows "identically". In deformation the
+// energy is not rigid-invariant, so nothing is projected out by default;
+// for an unconstrained rigid-invariant energy, project_rigid removes the six
+// rigid motions as in 2D.
+//
+// The scale s (energy_scale.h): K is dimensionless, the constraint term is
+// not. s starts at the energy's rest curvature over K's along a shear and
+// then follows the secant: s_k = dx^T (dg - H_c dx) / dx^T K(x_k) dx with
+// dx = x_k - x_{k-1} and dg the change of the gradient, the curvature the
+// energy showed over the last step (kept when that is not positive). Without
+// it (secant_scaling = false, s = 1) the direction is off by the energy's
+// scale (exp(6k) for the exponential energies) and the descent crawls; see
+// docs/deformation.md.
 #include "framework/distortion_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 #include "preconditioners/killing_operator_3d.h"
@@ -14,6 +24,7 @@ namespace akvf {
 struct Akvf3DOptions {
   FactorOptions factor{.tikhonov = 1e-8, .absolute_shift = 1e-4, .reuse_tolerance = 0, .reuse_max_cg = 8};
   bool project_rigid = false;
+  bool secant_scaling = true;
 };
 
 class AkvfPreconditioner3D final : public FactoredPreconditioner3D {
@@ -27,6 +38,8 @@ class AkvfPreconditioner3D final : public FactoredPreconditioner3D {
 
   const TetObjective& objective_;
   Akvf3DOptions options_;
+  double scale_;  // s
+  Eigen::VectorXd previous_x_, previous_gradient_;
 };
 
 }  // namespace akvf

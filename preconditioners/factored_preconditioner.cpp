@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "framework/error.h"
+#include "preconditioners/killing_operator_3d.h"
 
 namespace akvf {
 
@@ -29,10 +30,24 @@ Eigen::MatrixXd rigid_motion_basis_2d(const Eigen::VectorXd& x) {
   return B;
 }
 
-Eigen::MatrixXd translation_basis_2d(int num_vertices) {
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(2 * num_vertices, 2);
-  for (int i = 0; i < num_vertices; ++i) B(2 * i, 0) = B(2 * i + 1, 1) = 1;
+Eigen::MatrixXd translation_basis(int dimension, int num_vertices) {
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(dimension) * num_vertices, dimension);
+  for (int i = 0; i < num_vertices; ++i)
+    for (int c = 0; c < dimension; ++c) B(dimension * i + c, c) = 1;
   return B / std::sqrt(static_cast<double>(num_vertices));
+}
+
+Eigen::MatrixXd motion_basis(int dimension, MotionProjection projection, const Eigen::VectorXd& x) {
+  const int num_vertices = static_cast<int>(x.size()) / dimension;
+  switch (projection) {
+    case MotionProjection::kNone:
+      return Eigen::MatrixXd(x.size(), 0);
+    case MotionProjection::kTranslations:
+      return translation_basis(dimension, num_vertices);
+    case MotionProjection::kRigidMotions:
+      return dimension == 2 ? rigid_motion_basis_2d(x) : rigid_motion_basis_3d(x);
+  }
+  throw OptionsError("unknown motion projection");
 }
 
 template <int D>
@@ -46,6 +61,10 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
   if (!(options_.cg_tolerance >= 0 && options_.cg_tolerance < 1)) throw OptionsError("CG tolerance must be in [0, 1)");
   if (options_.cg_max_iterations < 1) throw OptionsError("CG needs at least one iteration");
   if (options_.reuse_max_cg < 1) throw OptionsError("factorization reuse needs at least one CG iteration");
+  if (options_.extra_diagonal.size() != 0 &&
+      (options_.extra_diagonal.size() != static_cast<Eigen::Index>(D) * num_vertices ||
+       !(options_.extra_diagonal.array() >= 0).all()))
+    throw OptionsError("the extra diagonal of a preconditioner needs one value >= 0 per coordinate");
 }
 
 template <int D>
@@ -64,6 +83,7 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   const auto assemble_shifted = [&] {
     assemble(state, &matrix_);
     matrix_.add_to_diagonal(options_.tikhonov * matrix_.mean_diagonal() + options_.absolute_shift);
+    if (options_.extra_diagonal.size() != 0) matrix_.add_to_diagonal(options_.extra_diagonal);
   };
   if (is_constant()) {
     if (!cholesky_.analyzed()) {

@@ -41,6 +41,10 @@ struct FactorOptions {
   // cg_max_iterations iterations (the last iterate is still a descent direction).
   double cg_tolerance = 0;
   int cg_max_iterations = 1000;
+  // Empty, or one value per dof added to P's diagonal: the Hessian of a
+  // quadratic term of the problem that P should include (soft positional
+  // constraints: 2 w on the constrained coordinates).
+  Eigen::VectorXd extra_diagonal;
 };
 
 struct FactorStatistics {
@@ -91,9 +95,19 @@ class FactoredPreconditioner : public Preconditioner {
 using FactoredPreconditioner2D = FactoredPreconditioner<2>;
 using FactoredPreconditioner3D = FactoredPreconditioner<3>;
 
+// Which motions a preconditioner projects out of its directions (§5.1): the
+// null space of an unconstrained problem's P, or nothing when constraint
+// terms or a shift make P definite.
+enum class MotionProjection { kNone, kTranslations, kRigidMotions };
+
+// Orthonormal basis (D|V| by k) of those motions at x (interleaved dofs).
+Eigen::MatrixXd motion_basis(int dimension, MotionProjection projection, const Eigen::VectorXd& x);
+
 // Orthonormal bases of the planar rigid motions (translations and the
-// rotation about the centroid; 2|V| by 3) and of the translations alone.
+// rotation about the centroid; 2|V| by 3) and of the translations alone
+// (D|V| by D, interleaved dofs).
 Eigen::MatrixXd rigid_motion_basis_2d(const Eigen::VectorXd& x);
-Eigen::MatrixXd translation_basis_2d(int num_vertices);
+Eigen::MatrixXd translation_basis(int dimension, int num_vertices);
+inline Eigen::MatrixXd translation_basis_2d(int num_vertices) { return translation_basis(2, num_vertices); }
 
 }  // namespace akvf

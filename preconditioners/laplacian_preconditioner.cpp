@@ -1,23 +1,30 @@
 #include "preconditioners/laplacian_preconditioner.h"
 
+#include "preconditioners/element_derivatives.h"
+
 namespace akvf {
 
-LaplacianPreconditioner2D::LaplacianPreconditioner2D(const ParamObjective& objective, FactorOptions options)
-    : FactoredPreconditioner2D(objective.faces(), objective.num_vertices(), options),
+template <int D>
+LaplacianPreconditioner<D>::LaplacianPreconditioner(const DistortionObjective<D>& objective, FactorOptions options,
+                                                    MotionProjection projection, double scale)
+    : FactoredPreconditioner<D>(objective.faces(), objective.num_vertices(), std::move(options)),
       objective_(objective),
-      translations_(translation_basis_2d(objective.num_vertices())) {}
+      projection_(projection),
+      scale_(scale) {}
 
-void LaplacianPreconditioner2D::assemble(const OptimizationState&, ElementMatrix2D* matrix) {
-  matrix->assemble([&](int f, ElementMatrix2D::Local* local) {
-    // Rest hat-function gradients: rows of Dm^-1 for corners 1, 2; corner 0 is minus their sum.
-    const Eigen::Matrix2d& Dm_inv = objective_.rest().Dm_inv[f];
-    const Eigen::Vector2d grad[3] = {-(Dm_inv.row(0) + Dm_inv.row(1)).transpose(), Dm_inv.row(0).transpose(),
-                                     Dm_inv.row(1).transpose()};
+template <int D>
+void LaplacianPreconditioner<D>::assemble(const OptimizationState&, Matrix* matrix) {
+  matrix->assemble([&](int e, typename Matrix::Local* local) {
+    const auto grad = hat_gradients<D>(objective_.rest().Dm_inv[e]);
     local->setZero();
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        local->block<2, 2>(2 * i, 2 * j) = objective_.weights()[f] * grad[i].dot(grad[j]) * Eigen::Matrix2d::Identity();
+    for (int i = 0; i <= D; ++i)
+      for (int j = 0; j <= D; ++j)
+        local->template block<D, D>(D * i, D * j) =
+            scale_ * objective_.weights()[e] * grad[i].dot(grad[j]) * Eigen::Matrix<double, D, D>::Identity();
   });
 }
+
+template class LaplacianPreconditioner<2>;
+template class LaplacianPreconditioner<3>;
 
 }  // namespace akvf

@@ -1,27 +1,36 @@
 #pragma once
-// Projected Newton: P(x) = sum_f w_f G_f^T [d^2 D / dvec(J)^2]_+ G_f, the
+// Projected Newton: P(x) = sum_e w_e G_e^T [d^2 D / dvec(J)^2]_+ G_e, the
 // energy's Hessian with every element block projected to PSD (the density's
-// projected_hessian), where G_f maps the face's corner positions to vec(J_f).
-// The baseline of TinyAD-style second-order solvers; shift, projection of
-// the rigid motions and factorization reuse as in factored_preconditioner.h.
+// projected_hessian), where G_e maps the element's corner positions to
+// vec(J_e) (element_derivatives.h). The baseline of TinyAD-style
+// second-order solvers; shift, projection and factorization reuse as in
+// factored_preconditioner.h. In 3D deformation the constraint term's Hessian
+// comes in through FactorOptions::extra_diagonal.
 #include "framework/distortion_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {
 
-class NewtonPreconditioner2D final : public FactoredPreconditioner2D {
+template <int D>
+class NewtonPreconditioner final : public FactoredPreconditioner<D> {
  public:
-  explicit NewtonPreconditioner2D(const ParamObjective& objective, FactorOptions options = {});
+  // projection: rigid motions by default in 2D (the energy's null space),
+  // none in 3D (the constraints fix the motion).
+  explicit NewtonPreconditioner(const DistortionObjective<D>& objective, FactorOptions options = {},
+                                MotionProjection projection = D == 2 ? MotionProjection::kRigidMotions
+                                                                     : MotionProjection::kNone);
   std::string name() const override { return "newton"; }
 
  private:
-  void assemble(const OptimizationState& state, ElementMatrix2D* matrix) override;
-  Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return rigid_motion_basis_2d(x); }
+  using Matrix = typename FactoredPreconditioner<D>::Matrix;
+  void assemble(const OptimizationState& state, Matrix* matrix) override;
+  Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return motion_basis(D, projection_, x); }
 
-  const ParamObjective& objective_;
+  const DistortionObjective<D>& objective_;
+  MotionProjection projection_;
 };
 
-// G (4 by 6): dvec(J) / d(x_0, x_1, x_2) for J = [x1 - x0, x2 - x0] Dm^-1.
-Eigen::Matrix<double, 4, 6> jacobian_map(const Eigen::Matrix2d& Dm_inv);
+using NewtonPreconditioner2D = NewtonPreconditioner<2>;
+using NewtonPreconditioner3D = NewtonPreconditioner<3>;
 
 }  // namespace akvf

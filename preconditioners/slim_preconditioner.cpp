@@ -4,14 +4,15 @@
 #include <cmath>
 
 #include "framework/error.h"
-#include "preconditioners/newton_preconditioner.h"
+#include "preconditioners/element_derivatives.h"
 
 namespace akvf {
 
 namespace {
 
-const InvariantDensity2& singular_value_density(const ParamObjective& objective) {
-  const auto* density = dynamic_cast<const InvariantDensity2*>(&objective.density());
+template <int D>
+const SingularValueDerivative<D>& singular_value_density(const DistortionObjective<D>& objective) {
+  const auto* density = dynamic_cast<const SingularValueDerivative<D>*>(&objective.density());
   if (!density)
     throw OptionsError("the slim preconditioner needs an energy with a singular-value derivative; '" +
                        objective.density().name() + "' has none");
@@ -20,29 +21,33 @@ const InvariantDensity2& singular_value_density(const ParamObjective& objective)
 
 }  // namespace
 
-SlimPreconditioner2D::SlimPreconditioner2D(const ParamObjective& objective, FactorOptions options)
-    : FactoredPreconditioner2D(objective.faces(), objective.num_vertices(), options),
+template <int D>
+SlimPreconditioner<D>::SlimPreconditioner(const DistortionObjective<D>& objective, FactorOptions options,
+                                          MotionProjection projection)
+    : FactoredPreconditioner<D>(objective.faces(), objective.num_vertices(), std::move(options)),
       objective_(objective),
       density_(singular_value_density(objective)),
-      translations_(translation_basis_2d(objective.num_vertices())) {}
+      projection_(projection) {}
 
-void SlimPreconditioner2D::proxy_weights(const InvariantDensity2& density, const Eigen::Matrix2d& J,
-                                         Eigen::Matrix2d* WtW, Eigen::Matrix2d* R) {
-  const Eigen::JacobiSVD<Eigen::Matrix2d> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix2d U = svd.matrixU(), V = svd.matrixV();
-  Eigen::Vector2d sigma = svd.singularValues();
-  if (U.determinant() * V.determinant() < 0) {  // det J > 0: make U V^T a rotation
-    U.col(1) *= -1;
-    sigma[1] *= -1;
+template <int D>
+void SlimPreconditioner<D>::proxy_weights(const SingularValueDerivative<D>& density, const Square& J, Square* WtW,
+                                          Square* R) {
+  using Vector = Eigen::Matrix<double, D, 1>;
+  const Eigen::JacobiSVD<Square> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Square U = svd.matrixU(), V = svd.matrixV();
+  Vector sigma = svd.singularValues();
+  if (U.determinant() * V.determinant() < 0) {  // det J > 0 expected: make U V^T a rotation
+    U.col(D - 1) *= -1;
+    sigma[D - 1] *= -1;
   }
-  const Eigen::Vector2d dD = density.singular_value_gradient(sigma);
-  Eigen::Vector2d w2;
-  for (int i = 0; i < 2; ++i) {
+  const Vector dD = density.singular_value_gradient(sigma);
+  Vector w2;
+  for (int i = 0; i < D; ++i) {
     const double gap = sigma[i] - 1;
     // At sigma = 1 use the limit dD/dsigma / (2 (sigma - 1)) -> D''(1) / 2,
     // approximated by a one-sided difference.
     if (std::abs(gap) < 1e-8) {
-      Eigen::Vector2d shifted = sigma;
+      Vector shifted = sigma;
       shifted[i] = 1 + 1e-6;
       w2[i] = density.singular_value_gradient(shifted)[i] / (2e-6);
     } else {
@@ -54,16 +59,20 @@ void SlimPreconditioner2D::proxy_weights(const InvariantDensity2& density, const
   *R = U * V.transpose();
 }
 
-void SlimPreconditioner2D::assemble(const OptimizationState& state, ElementMatrix2D* matrix) {
-  matrix->assemble([&](int f, ElementMatrix2D::Local* local) {
-    Eigen::Matrix2d WtW, R;
-    proxy_weights(density_, objective_.jacobian(state.x, f), &WtW, &R);
-    // Hessian of |W (J - R)|^2 in vec(J) (column-major): I_2 (x) 2 W^T W.
-    Eigen::Matrix4d H = Eigen::Matrix4d::Zero();
-    H.block<2, 2>(0, 0) = H.block<2, 2>(2, 2) = 2 * WtW;
-    const Eigen::Matrix<double, 4, 6> G = jacobian_map(objective_.rest().Dm_inv[f]);
-    *local = objective_.weights()[f] * G.transpose() * H * G;
+template <int D>
+void SlimPreconditioner<D>::assemble(const OptimizationState& state, Matrix* matrix) {
+  matrix->assemble([&](int e, typename Matrix::Local* local) {
+    Square WtW, R;
+    proxy_weights(density_, objective_.jacobian(state.x, e), &WtW, &R);
+    // Hessian of |W (J - R)|^2 in vec(J) (column-major): I_D (x) 2 W^T W.
+    Eigen::Matrix<double, D * D, D* D> H = Eigen::Matrix<double, D * D, D * D>::Zero();
+    for (int c = 0; c < D; ++c) H.template block<D, D>(D * c, D * c) = 2 * WtW;
+    const auto G = jacobian_map<D>(objective_.rest().Dm_inv[e]);
+    *local = objective_.weights()[e] * G.transpose() * H * G;
   });
 }
+
+template class SlimPreconditioner<2>;
+template class SlimPreconditioner<3>;
 
 }  // namespace akvf

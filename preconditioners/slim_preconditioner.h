@@ -1,40 +1,50 @@
 #pragma once
 // The SLIM proxy of Rabinovich, Poranne, Panozzo and Sorkine-Hornung 2017 as
-// a preconditioner. At the current iterate, each face gets the reweighted
-// ARAP proxy  A_f |W_f (J_f - R_f)|_F^2  with J_f = U S V^T, R_f = U V^T and
-// W_f = U diag(w_1, w_2) U^T, w_i^2 = (dD/dsigma_i) / (2 (sigma_i - 1)),
-// chosen so that the proxy's gradient equals the energy's gradient at x.
-// The proxy is quadratic with Hessian
-//   P = sum_f w_f G_f^T (I_2 (x) 2 W_f^T W_f) G_f,
+// a preconditioner, on triangles and on tets. At the current iterate, each
+// element gets the reweighted ARAP proxy  w_e |W_e (J_e - R_e)|_F^2  with
+// J_e = U S V^T, R_e = U V^T and W_e = U diag(w_1..w_D) U^T,
+// w_i^2 = (dD/dsigma_i) / (2 (sigma_i - 1)), chosen so that the proxy's
+// gradient equals the energy's gradient at x. The proxy is quadratic with
+// Hessian
+//   P = sum_e w_e G_e^T (I_D (x) 2 W_e^T W_e) G_e,
 // so the proxy minimizer x* satisfies P (x* - x) = -grad E(x): SLIM's
 // search direction x* - x is -P^-1 grad E, a preconditioned gradient.
 // Needs an energy that exposes its singular-value derivative
-// (InvariantDensity2). Weights are clamped below at 1e-8 where w_i^2 <= 0
-// (possible for non-isometric energies such as MIPS); there the gradient
-// property holds only approximately, as in SLIM's own code.
-#include "energies/invariant_density.h"
+// (SingularValueDerivative<D>). Weights are clamped below at 1e-8 where
+// w_i^2 <= 0 (possible for non-isometric energies such as MIPS); there the
+// gradient property holds only approximately, as in SLIM's own code. In 3D
+// deformation SLIM's soft constraints enter through
+// FactorOptions::extra_diagonal, as in SLIM's own solve.
 #include "framework/distortion_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {
 
-class SlimPreconditioner2D final : public FactoredPreconditioner2D {
+template <int D>
+class SlimPreconditioner final : public FactoredPreconditioner<D> {
  public:
+  using Square = Eigen::Matrix<double, D, D>;
+
   // Throws OptionsError if the objective's density has no singular-value derivative.
-  explicit SlimPreconditioner2D(const ParamObjective& objective, FactorOptions options = {});
+  explicit SlimPreconditioner(const DistortionObjective<D>& objective, FactorOptions options = {},
+                              MotionProjection projection = D == 2 ? MotionProjection::kTranslations
+                                                                   : MotionProjection::kNone);
   std::string name() const override { return "slim"; }
 
-  // W_f^T W_f (the squared per-face weight matrix) and R_f at J.
-  static void proxy_weights(const InvariantDensity2& density, const Eigen::Matrix2d& J, Eigen::Matrix2d* WtW,
-                            Eigen::Matrix2d* R);
+  // W_e^T W_e (the squared per-element weight matrix) and R_e at J.
+  static void proxy_weights(const SingularValueDerivative<D>& density, const Square& J, Square* WtW, Square* R);
 
  private:
-  void assemble(const OptimizationState& state, ElementMatrix2D* matrix) override;
-  Eigen::MatrixXd null_space(const Eigen::VectorXd&) const override { return translations_; }
+  using Matrix = typename FactoredPreconditioner<D>::Matrix;
+  void assemble(const OptimizationState& state, Matrix* matrix) override;
+  Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return motion_basis(D, projection_, x); }
 
-  const ParamObjective& objective_;
-  const InvariantDensity2& density_;
-  Eigen::MatrixXd translations_;
+  const DistortionObjective<D>& objective_;
+  const SingularValueDerivative<D>& density_;
+  MotionProjection projection_;
 };
+
+using SlimPreconditioner2D = SlimPreconditioner<2>;
+using SlimPreconditioner3D = SlimPreconditioner<3>;
 
 }  // namespace akvf

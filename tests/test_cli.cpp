@@ -138,5 +138,14 @@ TEST_CASE("deform: bad constraints files exit 1 naming the line; outputs are not
   CHECK(fs::exists(out));
   CHECK(akvf_run({"deform", (dir / "tet.mesh").string(), "--quiet"}).err ==
         "error: give exactly one of --constraints and --preset\n");
+  // Hard constraints: a small displacement runs; one that inverts a tet at the start is refused.
+  const Outcome hard = akvf_run({"deform", (dir / "tet.mesh").string(), "--constraints", (dir / "good.txt").string(),
+                                 "--hard", "--precond", "slim", "--max-iters", "5", "--quiet"});
+  CHECK(hard.code == akvf::kExitOk);
+  write_text(dir / "inverting.txt", "0 0 0 0\n4 -1 -1 -1\n");
+  const Outcome refused = akvf_run({"deform", (dir / "tet.mesh").string(), "--constraints",
+                                    (dir / "inverting.txt").string(), "--hard", "--out", out.string(), "--quiet"});
+  CHECK(refused.code == akvf::kExitInputError);
+  CHECK(refused.err.find("hard constraints need a start without inverted tets") != std::string::npos);
   fs::remove_all(dir);
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "experiments/catalog.h"
 #include "experiments/deformation.h"
 #include "experiments/parameterization.h"
 #include "framework/mesh_io.h"
@@ -113,7 +114,7 @@ TEST_CASE("every method with symmetric Dirichlet on every disk mesh: no flip, en
     }
 }
 
-TEST_CASE("akvf deform runs on every shared tet mesh without inverting a tet") {
+TEST_CASE("every 3D method deforms every shared tet mesh without inverting a tet") {
   const std::string dir = akvf::test::data_dir();
   if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
   for (const char* name : {"cube_4k.obj", "octopus-low.mesh", "bar.tet"}) {
@@ -132,11 +133,15 @@ TEST_CASE("akvf deform runs on every shared tet mesh without inverting a tet") {
     }
     constraints.targets.resize(static_cast<Eigen::Index>(targets.size()), 3);
     for (std::size_t c = 0; c < targets.size(); ++c) constraints.targets.row(c) = targets[c];
-    akvf::DeformConfig config;
-    config.optimizer.max_iterations = 15;
-    const auto run = akvf::run_deformation(mesh, path, constraints, config);
-    CHECK(akvf::is_normal_termination(run.result.status));
-    for (const auto& row : run.result.trace) CHECK(row.flips == 0);
-    CHECK(run.result.trace.back().energy < run.result.trace.front().energy);
+    for (const auto& [method, description] : akvf::preconditioners_3d().entries()) {
+      CAPTURE(method);
+      akvf::DeformConfig config;
+      config.preconditioner = method;
+      config.optimizer.max_iterations = 10;
+      const auto run = akvf::run_deformation(mesh, path, constraints, config);
+      CHECK(akvf::is_normal_termination(run.result.status));
+      for (const auto& row : run.result.trace) CHECK(row.flips == 0);
+      CHECK(run.result.trace.back().energy < run.result.trace.front().energy);
+    }
   }
 }
