@@ -8,6 +8,7 @@
 #include "experiments/deform_command.h"
 #include "experiments/exit_codes.h"
 #include "experiments/param_command.h"
+#include "experiments/plot_command.h"
 #include "framework/error.h"
 
 namespace {
@@ -19,6 +20,7 @@ const char* kUsage =
     "  param MESH   parameterize a disk-topology triangle mesh (.obj or .off)\n"
     "  demo         parameterize a built-in mesh and write its outputs (no input files)\n"
     "  deform TETS  deform a tet mesh with positional constraints (.mesh, .obj or .tet)\n"
+    "  plot TRACES  SVG line plot of trace CSV files (energy against iterations or seconds)\n"
     "  list         list energies, preconditioners and line searches\n"
     "  help         show this help\n"
     "\n"
@@ -40,6 +42,8 @@ int list_command(std::ostream& out) {
   out << "solvers (--precond):\n  " << akvf::kLbfgsMethod
       << std::string(22 - std::string(akvf::kLbfgsMethod).size(), ' ') << akvf::kLbfgsDescription << '\n';
   print_entries(out, "line searches (--line-search)", akvf::line_searches());
+  print_entries(out, "3D energies (akvf deform --energy)", akvf::energies_3d());
+  print_entries(out, "3D preconditioners (akvf deform --precond)", akvf::preconditioners_3d());
   return akvf::kExitOk;
 }
 
@@ -58,6 +62,7 @@ int run_akvf(std::vector<std::string> args, std::ostream& out, std::ostream& err
     if (command == "param") return param_command(args, out, err);
     if (command == "demo") return demo_command(args, out, err);
     if (command == "deform") return deform_command(args, out, err);
+    if (command == "plot") return plot_command(args, out, err);
     if (command == "list") return list_command(out);
     err << "akvf: unknown command '" << command << "'\n\n" << kUsage;
     return kExitUsageError;

@@ -149,3 +149,24 @@ TEST_CASE("deform: bad constraints files exit 1 naming the line; outputs are not
   CHECK(refused.err.find("hard constraints need a start without inverted tets") != std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("plot draws trace files as SVG lines; a malformed trace names its line") {
+  const fs::path dir = scratch_dir("plot");
+  write_text(dir / "a.csv", "iter,seconds,energy,status\n0,0,10,\n1,0.5,5,\n2,1.0,4.5,converged\n");
+  write_text(dir / "bad.csv", "iter,seconds,energy,status\n0,0,10,\n1,x,5,\n");
+  const fs::path svg = dir / "plot.svg";
+  const Outcome ok = akvf_run({"plot", (dir / "a.csv").string() + "=first method", (dir / "a.csv").string(), "--x",
+                               "seconds", "--minus", "4", "--out", svg.string()});
+  CHECK(ok.code == akvf::kExitOk);
+  const std::string text = read_text(svg);
+  CHECK(text.find("<svg") == 0);
+  CHECK(text.find(">first method</text>") != std::string::npos);
+  CHECK(text.find(">a.csv</text>") != std::string::npos);
+  CHECK(text.find(">energy - 4</text>") != std::string::npos);
+  const Outcome bad = akvf_run({"plot", (dir / "bad.csv").string(), "--out", (dir / "bad.svg").string()});
+  CHECK(bad.code == akvf::kExitInputError);
+  CHECK(bad.err.find("line 3 of") != std::string::npos);
+  CHECK(bad.err.find("column seconds: 'x' is not a number") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "bad.svg"));
+  fs::remove_all(dir);
+}

@@ -1,0 +1,62 @@
+#include "experiments/plot_command.h"
+
+#include "experiments/command_line.h"
+#include "experiments/exit_codes.h"
+#include "experiments/line_plot.h"
+#include "experiments/run_reporting.h"
+#include "experiments/trace_csv.h"
+#include "framework/error.h"
+#include "framework/output_file.h"
+
+namespace akvf {
+
+int plot_command(const std::vector<std::string>& args, std::ostream& out, std::ostream&) {
+  CommandLine cl(
+      "akvf plot TRACE.csv[=LABEL]... --out FIGURE.svg [options]\n\n"
+      "Draws one line per trace file (written by --trace): a column against iterations or seconds.\n"
+      "LABEL names the line in the legend (default: the file name).",
+      {
+          {"out", "FIGURE.svg", "the SVG to write (required)"},
+          {"x", "COLUMN", "horizontal axis: iter (default) or seconds"},
+          {"y", "COLUMN", "vertical axis: energy (default), grad_norm, or any numeric trace column"},
+          {"minus", "VALUE", "plot y - VALUE (e.g. the energy's lower bound)"},
+          {"log-y", "on|off", "log10 vertical axis (default on)"},
+          {"title", "TEXT", "title above the plot"},
+          {"help", "", "show this help"},
+      });
+  cl.parse(args);
+  if (cl.has("help")) {
+    out << cl.help();
+    return kExitOk;
+  }
+  if (cl.positional().empty()) throw OptionsError("expected at least one trace file (see --help)");
+  if (!cl.has("out")) throw OptionsError("option --out is required");
+  const std::string out_path = cl.text("out", ""), x_name = cl.text("x", "iter"), y_name = cl.text("y", "energy");
+  const std::string log_y = cl.text("log-y", "on");
+  if (log_y != "on" && log_y != "off") throw OptionsError("option --log-y: expected on or off, found '" + log_y + "'");
+  const double minus = cl.real("minus", 0);
+  check_output_path(out_path);
+
+  std::vector<PlotSeries> series;
+  for (const std::string& argument : cl.positional()) {
+    const std::size_t equals = argument.find('=');
+    const std::string path = argument.substr(0, equals);
+    const TraceTable table = read_trace_csv(path);
+    PlotSeries line;
+    line.label = equals == std::string::npos ? path.substr(path.find_last_of('/') + 1) : argument.substr(equals + 1);
+    line.x = table.column(x_name, path);
+    line.y = table.column(y_name, path);
+    for (double& v : line.y) v -= minus;
+    series.push_back(std::move(line));
+  }
+  PlotSpec spec;
+  spec.title = cl.text("title", "");
+  spec.x_label = x_name == "iter" ? "iteration" : x_name;
+  spec.y_label = minus != 0 ? y_name + " - " + cl.text("minus", "") : y_name;
+  spec.log_y = log_y == "on";
+  const std::string svg = line_plot_svg(spec, series);
+  write_file_atomically(out_path, [&](std::ostream& file) { file << svg; });
+  return kExitOk;
+}
+
+}  // namespace akvf
