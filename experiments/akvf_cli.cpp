@@ -7,6 +7,7 @@
 #include "experiments/catalog.h"
 #include "experiments/deform_command.h"
 #include "experiments/exit_codes.h"
+#include "experiments/experiment_command.h"
 #include "experiments/param_command.h"
 #include "experiments/plot_command.h"
 #include "framework/error.h"
@@ -21,6 +22,7 @@ const char* kUsage =
     "  demo         parameterize a built-in mesh and write its outputs (no input files)\n"
     "  deform TETS  deform a tet mesh with positional constraints (.mesh, .obj or .tet)\n"
     "  plot TRACES  SVG line plot of trace CSV files (energy against iterations or seconds)\n"
+    "  experiment MANIFEST  run a manifest of cases (shard, resume, merge); tables and plots\n"
     "  list         list energies, preconditioners and line searches\n"
     "  help         show this help\n"
     "\n"
@@ -63,6 +65,7 @@ int run_akvf(std::vector<std::string> args, std::ostream& out, std::ostream& err
     if (command == "demo") return demo_command(args, out, err);
     if (command == "deform") return deform_command(args, out, err);
     if (command == "plot") return plot_command(args, out, err);
+    if (command == "experiment") return experiment_command(args, out, err);
     if (command == "list") return list_command(out);
     err << "akvf: unknown command '" << command << "'\n\n" << kUsage;
     return kExitUsageError;

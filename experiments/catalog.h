@@ -50,9 +50,9 @@ using DensityRegistry3D = Registry<DistortionDensity<3>, const EnergySettings&>;
 // slim carry the constraint term's Hessian in their extra_diagonal.
 struct Preconditioner3DSettings {
   Akvf3DOptions akvf;
-  FactorOptions newton{.tikhonov = 1e-8, .absolute_shift = 1e-4};
-  FactorOptions laplacian{.tikhonov = 1e-8, .absolute_shift = 1e-4};
-  FactorOptions slim{.tikhonov = 1e-8, .absolute_shift = 1e-4};
+  FactorOptions newton = shifted_factor_options(1e-4);
+  FactorOptions laplacian = shifted_factor_options(1e-4);
+  FactorOptions slim = shifted_factor_options(1e-4);
 };
 using PreconditionerRegistry3D = Registry<Preconditioner, const TetObjective&, const Preconditioner3DSettings&>;
 

@@ -93,15 +93,10 @@ int run_and_write(const TriMesh& input, const std::string& name, const ParamConf
   const Eigen::MatrixXd UV = output_uv(setup, result.x);
   if (!outputs.obj.empty()) write_obj_with_uv(outputs.obj, input, UV);
   if (!outputs.trace.empty()) write_trace_csv(outputs.trace, result);
-  if (!outputs.svg.empty()) {
-    const Eigen::VectorXd excess =
-        setup.objective->face_distortion(result.x).array() - setup.objective->density().lower_bound();
-    Eigen::MatrixXd compact_uv(mesh.num_vertices(), 2);
-    for (int v = 0; v < mesh.num_vertices(); ++v) compact_uv.row(v) = UV.row(setup.disk.input_vertex[v]);
-    write_uv_svg(outputs.svg, compact_uv, mesh.F, excess,
-                 name + " - " + run.preconditioner_name + ", " + std::to_string(last.iteration) +
-                     " iterations, E = " + std::to_string(last.energy));
-  }
+  if (!outputs.svg.empty())
+    write_layout_svg(outputs.svg, setup, result.x,
+                     name + " - " + run.preconditioner_name + ", " + std::to_string(last.iteration) +
+                         " iterations, E = " + std::to_string(last.energy));
   return is_normal_termination(result.status) ? kExitOk : kExitOptimizerFailure;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "experiments/catalog.h"
+#include "experiments/uv_svg.h"
 #include "framework/error.h"
 #include "solvers/lbfgs_solver.h"
 
@@ -101,5 +102,15 @@ void warm_start(const ParamConfig& config, ParamSetup* setup) {
 }
 
 }  // namespace
+
+void write_layout_svg(const std::string& path, const ParamSetup& setup, const Eigen::VectorXd& x,
+                      const std::string& title) {
+  const Eigen::VectorXd excess = setup.objective->face_distortion(x).array() - setup.objective->density().lower_bound();
+  const Eigen::MatrixXd UV = output_uv(setup, x);
+  const TriMesh& mesh = setup.disk.mesh;
+  Eigen::MatrixXd compact_uv(mesh.num_vertices(), 2);
+  for (int v = 0; v < mesh.num_vertices(); ++v) compact_uv.row(v) = UV.row(setup.disk.input_vertex[v]);
+  write_uv_svg(path, compact_uv, mesh.F, excess, title);
+}
 
 }  // namespace akvf

@@ -57,4 +57,8 @@ ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config
 // UV area equals the input mesh's 3D area. Unreferenced vertices get (0, 0).
 Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x);
 
+// The UV layout at x as SVG, triangles shaded by D(J_f) - lower bound (uv_svg.h).
+void write_layout_svg(const std::string& path, const ParamSetup& setup, const Eigen::VectorXd& x,
+                      const std::string& title);
+
 }  // namespace akvf

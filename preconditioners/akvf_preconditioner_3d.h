@@ -22,7 +22,7 @@
 namespace akvf {
 
 struct Akvf3DOptions {
-  FactorOptions factor{.tikhonov = 1e-8, .absolute_shift = 1e-4, .reuse_tolerance = 0, .reuse_max_cg = 8};
+  FactorOptions factor = shifted_factor_options(1e-4);  // c of §6.2
   bool project_rigid = false;
   bool secant_scaling = true;
 };

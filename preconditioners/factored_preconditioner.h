@@ -47,6 +47,13 @@ struct FactorOptions {
   Eigen::VectorXd extra_diagonal;
 };
 
+// Default options with an absolute Tikhonov shift c (P + c I).
+inline FactorOptions shifted_factor_options(double absolute_shift) {
+  FactorOptions options;
+  options.absolute_shift = absolute_shift;
+  return options;
+}
+
 struct FactorStatistics {
   int factorizations = 0;
   int cg_solves = 0;      // directions from plain (Jacobi) CG, cg_tolerance > 0

@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libtbb-dev doctest-dev
-  libbenchmark-dev libceres-dev libopenblas-dev
+  libbenchmark-dev libceres-dev libopenblas-dev nlohmann-json3-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -178,6 +178,11 @@ struct SparseCholesky::Impl {
   }
 };
 
+std::string cholmod_version() {
+  return std::to_string(CHOLMOD_MAIN_VERSION) + "." + std::to_string(CHOLMOD_SUB_VERSION) + "." +
+         std::to_string(CHOLMOD_SUBSUB_VERSION);
+}
+
 SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}
 SparseCholesky::~SparseCholesky() = default;
 

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
+#include <string>
 
 namespace akvf {
 
@@ -41,5 +42,8 @@ class SparseCholesky {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// "MAJOR.MINOR.PATCH" of the CHOLMOD the project was built against.
+std::string cholmod_version();
 
 }  // namespace akvf

@@ -34,7 +34,7 @@ LineSearchSummary WolfeBisectionLineSearch::do_search(const LineSearchInput& in)
       best_alpha = alpha;
       best_energy = energy;
       if (gradient.dot(in.direction) >= c2_ * in.directional_derivative) break;  // both conditions hold
-      lo = alpha;  // too short
+      lo = alpha;                                                                // too short
       if (alpha >= hi_bound) break;  // cannot go further without nearing a flip
     }
     alpha = std::isfinite(hi) ? 0.5 * (lo + hi) : 2 * alpha;

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "framework/distortion_objective.h"
 #include "framework/initialization.h"
 #include "framework/mesh_validation.h"
-#include "framework/distortion_objective.h"
 #include "framework/rest_geometry.h"
 #include "tests/test_support.h"
 

@@ -1,0 +1,66 @@
+#pragma once
+// Experiment manifests (docs/experiments.md has the schema): JSON files that
+// list meshes and methods; every mesh x method pair is one case. Keys of a
+// mesh or a method entry override the manifest's "defaults" (a method's
+// override a mesh's). Parsing validates every name and number up front and
+// reports the offending key as a path, e.g.
+//   "table1.json: methods[2].precond: unknown preconditioner 'slm' (valid: ...)".
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace akvf {
+
+// What one case runs: a mesh (from the data folder) with one method.
+struct CaseSettings {
+  std::string problem = "param";  // param (2D) or deform (3D)
+  std::string energy = "symmetric-dirichlet";
+  double exponent = 1;
+  std::string precond = "akvf";  // or "lbfgs" for param
+  std::string line_search = "backtracking";
+  std::string acceleration = "auto";
+  double grad_tol = 1e-3;
+  int max_iters = 1000;
+  double time_limit = 60;      // seconds of optimizer time
+  std::string preset;          // deform: "slim-cube"
+  std::string constraints;     // deform: a constraints file, relative to the data folder
+  double weight = 1e5;         // deform: soft constraint weight
+  double cg_tol = 0;           // deform: CG instead of factoring
+  std::vector<int> snapshots;  // param: write the UV layout (SVG) after these iterations
+};
+
+struct ManifestMesh {
+  std::string label;
+  std::string file;                     // relative to the data folder; empty when missing
+  std::string missing;                  // why the mesh is not available ("" when it is)
+  std::string note;                     // e.g. "stand-in for ..."
+  std::map<std::string, double> paper;  // the paper's figures for this mesh, by column name
+};
+
+struct ExperimentCase {
+  int index = 0;   // position in the manifest's case order
+  std::string id;  // "<mesh>--<method>", file-name safe
+  std::string mesh_label, method_label;
+  int mesh_index = 0;  // into Manifest::meshes
+  CaseSettings settings;
+};
+
+struct Manifest {
+  std::string name, description;
+  std::string table_value = "seconds";  // report cell: "seconds" to the stopping rule, or "energy"
+  std::vector<ManifestMesh> meshes;
+  std::vector<std::string> methods;   // labels, in order
+  std::vector<ExperimentCase> cases;  // meshes x methods, mesh-major
+  std::string source_text;            // the JSON as read (copied into result folders)
+};
+
+// Throws InputError naming the file and the key path (or the line for a
+// JSON syntax error).
+Manifest read_manifest(const std::string& path);
+Manifest parse_manifest(const std::string& text, const std::string& file_name);
+
+// "Camel Head" -> "camel-head": letters, digits and dashes only.
+std::string slug(const std::string& label);
+
+}  // namespace akvf

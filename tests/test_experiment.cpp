@@ -1,0 +1,154 @@
+// The experiment runner: manifest validation, a tiny end-to-end manifest,
+// shard + merge equal to one run, resume.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "experiments/akvf_cli.h"
+#include "experiments/exit_codes.h"
+#include "experiments/manifest.h"
+#include "tests/test_support.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string manifest_error(const std::string& text) {
+  return akvf::test::error_message([&] { akvf::parse_manifest(text, "m.json"); });
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("akvf_experiment_test_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void write_obj(const fs::path& path, const akvf::TriMesh& mesh) {
+  std::ofstream out(path);
+  out.precision(17);
+  for (int v = 0; v < mesh.V.rows(); ++v)
+    out << "v " << mesh.V(v, 0) << ' ' << mesh.V(v, 1) << ' ' << mesh.V(v, 2) << '\n';
+  for (int f = 0; f < mesh.F.rows(); ++f)
+    out << "f " << mesh.F(f, 0) + 1 << ' ' << mesh.F(f, 1) + 1 << ' ' << mesh.F(f, 2) + 1 << '\n';
+}
+
+int akvf_run(const std::vector<std::string>& args, std::string* out = nullptr, std::string* err = nullptr) {
+  std::ostringstream o, e;
+  const int code = akvf::run_akvf(args, o, e);
+  if (out) *out = o.str();
+  if (err) *err = e.str();
+  return code;
+}
+
+// The comparable part of a summary: everything but times and the machine.
+std::string result_of(const fs::path& summary) {
+  auto j = nlohmann::json::parse(read_text(summary));
+  j.erase("seconds");
+  j.erase("machine");
+  return j.dump();
+}
+
+const char* kTinyManifest = R"({
+  "name": "tiny",
+  "defaults": {"grad_tol": 1e-6, "max_iters": 40, "time_limit": 20},
+  "meshes": [
+    {"label": "Bumpy", "file": "bumpy.obj", "paper": {"AKVF": 0.5}},
+    {"label": "Gone", "missing": "not in the test data"},
+    {"label": "Bumpy small", "file": "small.obj"}
+  ],
+  "methods": [
+    {"label": "AKVF", "precond": "akvf", "snapshots": [2]},
+    {"label": "SLIM", "precond": "slim"}
+  ]
+})";
+
+}  // namespace
+
+TEST_CASE("manifest errors point at the offending key") {
+  const std::string base_mesh = R"("meshes": [{"label": "A", "file": "a.obj"}])";
+  CHECK(
+      manifest_error(R"({"meshes": [{"label": "A", "file": "a.obj"}], "methods": [{"label": "X", "precond": "slm"}]})")
+          .find("m.json: methods[0].precond: unknown preconditioner 'slm'") == 0);
+  CHECK(manifest_error("{" + base_mesh + R"(, "methods": [{"label": "X", "energi": "arap"}]})")
+            .find("m.json: methods[0].energi: unknown key (valid: ") == 0);
+  CHECK(manifest_error("{" + base_mesh + R"(, "defaults": {"energy": "nope"}, "methods": [{"label": "X"}]})")
+            .find("m.json: defaults.energy: unknown energy 'nope'") == 0);
+  CHECK(manifest_error("{" + base_mesh + R"(, "methods": [{"label": "X", "max_iters": 1.5}]})") ==
+        "m.json: methods[0].max_iters: expected an integer, found 1.5");
+  CHECK(manifest_error(R"({"meshes": [{"label": "A"}], "methods": [{"label": "X"}]})") ==
+        "m.json: meshes[0]: give exactly one of \"file\" and \"missing\" (the reason the mesh is not available)");
+  CHECK(manifest_error("{" + base_mesh + R"(, "methods": [{"label": "X"}, {"label": "x"}]})") ==
+        "m.json: methods[1].label: duplicate method label");
+  CHECK(manifest_error("{" + base_mesh + R"(, "methods": [{"label": "X", "problem": "deform"}]})") ==
+        "m.json: methods[0]: a deform case needs exactly one of \"preset\" and \"constraints\"");
+  CHECK(manifest_error("{\n\"meshes\": [\n,]}").find("line 3 of m.json: invalid JSON") == 0);
+  CHECK(manifest_error(R"({"meshes": []})") == "m.json: meshes: expected a non-empty array of meshes");
+}
+
+TEST_CASE("a tiny manifest runs end to end; shards merged give the same results as one run; resume skips") {
+  const fs::path dir = scratch("tiny");
+  const fs::path data = dir / "data";
+  fs::create_directories(data);
+  write_obj(data / "bumpy.obj", akvf::test::bumpy_disk(8, 8));
+  write_obj(data / "small.obj", akvf::test::bumpy_disk(5, 5));
+  std::ofstream(dir / "tiny.json") << kTinyManifest;
+  const std::string manifest = (dir / "tiny.json").string();
+
+  std::string table, log;
+  REQUIRE(akvf_run({"experiment", manifest, "--data-dir", data.string(), "--out-dir", (dir / "all").string()}, &table,
+                   &log) == akvf::kExitOk);
+  CHECK(log.find("[1/6] Bumpy / AKVF: converged") != std::string::npos);
+  CHECK(log.find("[3/6] Gone / AKVF: missing (not in the test data)") != std::string::npos);
+  CHECK(log.find("left") != std::string::npos);
+  CHECK(table.find("| Gone |  | mesh not available | mesh not available | ") != std::string::npos);
+  CHECK(table.find("| paper AKVF |") != std::string::npos);
+  CHECK(fs::exists(dir / "all" / "table.md"));
+  CHECK(read_text(dir / "all" / "table.csv").find("mesh,method,status,reached,iterations,seconds") == 0);
+  CHECK(fs::exists(dir / "all" / "plots" / "bumpy-iterations.svg"));
+  CHECK(fs::exists(dir / "all" / "plots" / "bumpy-small-seconds.svg"));
+  CHECK(fs::exists(dir / "all" / "cases" / "bumpy--akvf" / "iter-2.svg"));
+  const auto summary = nlohmann::json::parse(read_text(dir / "all" / "cases" / "bumpy--akvf" / "summary.json"));
+  CHECK(summary["reached"] == true);
+  CHECK(summary["max_flips"] == 0);
+  CHECK(summary["machine"]["cores"].get<int>() >= 1);
+  CHECK(summary["machine"]["versions"].contains("cholmod"));
+
+  for (const char* shard : {"1/2", "2/2"})
+    REQUIRE(akvf_run({"experiment", manifest, "--data-dir", data.string(), "--out-dir",
+                      (dir / (std::string("shard") + shard[0])).string(), "--shard", shard}) == akvf::kExitOk);
+  CHECK(fs::exists(dir / "shard1" / "cases" / "bumpy--akvf" / "summary.json"));
+  CHECK_FALSE(fs::exists(dir / "shard1" / "cases" / "bumpy--slim" / "summary.json"));
+  REQUIRE(akvf_run({"experiment", "merge", (dir / "shard1").string(), (dir / "shard2").string(), "--out-dir",
+                    (dir / "merged").string()}) == akvf::kExitOk);
+  int compared = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "all" / "cases")) {
+    CAPTURE(entry.path().filename().string());
+    CHECK(result_of(entry.path() / "summary.json") ==
+          result_of(dir / "merged" / "cases" / entry.path().filename() / "summary.json"));
+    ++compared;
+  }
+  CHECK(compared == 6);
+
+  REQUIRE(
+      akvf_run({"experiment", manifest, "--data-dir", data.string(), "--out-dir", (dir / "all").string(), "--resume"},
+               nullptr, &log) == akvf::kExitOk);
+  CHECK(log.find("6 skipped") != std::string::npos);
+  std::ofstream(dir / "other.json")
+      << R"({"name": "tiny", "meshes": [{"label": "A", "missing": "x"}], "methods": [{"label": "X"}]})";
+  CHECK(akvf_run({"experiment", (dir / "other.json").string(), "--out-dir", (dir / "all").string()}, nullptr, &log) ==
+        akvf::kExitOutputError);
+  CHECK(log.find("holds the results of a different manifest") != std::string::npos);
+  CHECK(akvf_run({"experiment", manifest, "--shard", "3/2"}, nullptr, &log) == akvf::kExitUsageError);
+  fs::remove_all(dir);
+}
