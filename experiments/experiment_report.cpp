@@ -1,5 +1,6 @@
 #include "experiments/experiment_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -97,8 +98,11 @@ std::string write_experiment_report(const std::string& out_dir) {
     }
     md << "| " << mesh.label << " | " << faces << " | ";
     for (std::size_t j = 0; j < per_mesh; ++j) md << cell(summaries[i * per_mesh + j], manifest.table_value) << " | ";
-    for (const std::string& column : paper_columns)
-      md << (mesh.paper.count(column) ? number(mesh.paper.at(column)) : "") << " | ";
+    for (const std::string& column : paper_columns) {
+      const auto found = std::find_if(mesh.paper.begin(), mesh.paper.end(),
+                                      [&](const auto& entry) { return entry.first == column; });
+      md << (found != mesh.paper.end() ? number(found->second) : "") << " | ";
+    }
     md << (mesh.missing.empty() ? mesh.note : "not available: " + mesh.missing) << " |\n";
   }
   const std::string table = md.str();

@@ -184,7 +184,7 @@ Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOpt
 
 std::string format_seconds(double seconds) {
   std::ostringstream text;
-  text << std::fixed << std::setprecision(seconds < 10 ? 1 : 0) << seconds << " s";
+  text << std::setprecision(seconds < 100 ? 2 : 3) << seconds << " s";
   return text.str();
 }
 

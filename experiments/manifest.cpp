@@ -188,7 +188,7 @@ Manifest parse_manifest(const std::string& text, const std::string& file_name) {
     if (entry.contains("paper")) {
       if (!entry["paper"].is_object()) c.fail(path + ".paper", "expected an object of column: number");
       for (const auto& [column, value] : entry["paper"].items())
-        mesh.paper[column] = number_of(c, value, path + ".paper." + column);
+        mesh.paper.emplace_back(column, number_of(c, value, path + ".paper." + column));
     }
     m.meshes.push_back(mesh);
     mesh_settings.push_back(s);

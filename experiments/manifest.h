@@ -35,7 +35,7 @@ struct ManifestMesh {
   std::string file;                     // relative to the data folder; empty when missing
   std::string missing;                  // why the mesh is not available ("" when it is)
   std::string note;                     // e.g. "stand-in for ..."
-  std::map<std::string, double> paper;  // the paper's figures for this mesh, by column name
+  std::vector<std::pair<std::string, double>> paper;  // the paper's figures for this mesh: (column, value), in order
 };
 
 struct ExperimentCase {
