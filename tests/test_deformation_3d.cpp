@@ -10,6 +10,7 @@
 #include "experiments/catalog.h"
 #include "experiments/deformation.h"
 #include "framework/constrained_objective.h"
+#include "solvers/backtracking_line_search.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "preconditioners/energy_scale.h"
 #include "preconditioners/laplacian_preconditioner.h"
@@ -123,6 +124,24 @@ TEST_CASE("3D AKVF scales K to the energy: rest shear curvature first, then the 
   const Eigen::VectorXd dx = x2 - x1;
   const Eigen::MatrixXd P(preconditioner.matrix().full());
   CHECK(dx.dot(P * dx) == doctest::Approx(dx.dot(g2 - g1)).epsilon(1e-6));
+}
+
+TEST_CASE("a stretched cube relaxes to symmetric Dirichlet 6 (a rigid motion of the rest shape) with 3D AKVF") {
+  const akvf::TetMesh mesh = akvf::test::tet_grid(3);
+  const akvf::TetObjective objective = grid_objective(mesh, std::make_shared<akvf::SymmetricDirichlet3>());
+  const Eigen::VectorXd stretched = akvf::stack_rows(mesh.V * Eigen::Vector3d(1.4, 0.8, 1.1).asDiagonal());
+  akvf::Akvf3DOptions options;
+  options.project_rigid = true;  // no constraints: the energy is rigid-invariant
+  akvf::AkvfPreconditioner3D preconditioner(objective, options);
+  const akvf::BacktrackingLineSearch line_search(akvf::LineSearchSettings{});
+  akvf::OptimizerOptions stop;
+  stop.gradient_tolerance = 1e-9;
+  stop.max_iterations = 300;
+  const akvf::OptimizerResult result = akvf::minimize(objective, preconditioner, line_search, stretched, stop);
+  CHECK(result.status == akvf::TerminationStatus::kConverged);
+  CHECK(result.trace.front().energy > 6.5);
+  CHECK(result.trace.back().energy == doctest::Approx(6.0).epsilon(1e-10));
+  for (const auto& row : result.trace) CHECK(row.flips == 0);
 }
 
 TEST_CASE("every 3D energy with every 3D method under soft constraints: no flip, the energy never rises") {

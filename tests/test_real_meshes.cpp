@@ -4,10 +4,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "experiments/catalog.h"
 #include "experiments/deformation.h"
 #include "experiments/parameterization.h"
+#include "framework/constraints_io.h"
 #include "framework/mesh_io.h"
 #include "framework/tet_mesh_io.h"
 #include "tests/test_support.h"
@@ -131,8 +133,18 @@ TEST_CASE("every 3D method deforms every shared tet mesh without inverting a tet
       constraints.vertices.push_back(v);
       targets.push_back(mesh.V.row(v) + Eigen::RowVector3d(0, 0, z >= 0.9 ? 0.1 * (hi - lo) : 0));
     }
-    constraints.targets.resize(static_cast<Eigen::Index>(targets.size()), 3);
-    for (std::size_t c = 0; c < targets.size(); ++c) constraints.targets.row(c) = targets[c];
+    // Through a constraints file, as a user would give them.
+    const std::string file = (std::filesystem::temp_directory_path() / "akvf_real_mesh_constraints.txt").string();
+    {
+      std::ofstream out(file);
+      out.precision(17);
+      out << "# vertex x y z\n";
+      for (std::size_t c = 0; c < targets.size(); ++c)
+        out << constraints.vertices[c] << ' ' << targets[c].x() << ' ' << targets[c].y() << ' ' << targets[c].z() << '\n';
+    }
+    constraints = akvf::read_constraints_file(file, mesh.num_vertices());
+    std::filesystem::remove(file);
+    REQUIRE(constraints.vertices.size() == targets.size());
     for (const auto& [method, description] : akvf::preconditioners_3d().entries()) {
       CAPTURE(method);
       akvf::DeformConfig config;
