@@ -11,6 +11,7 @@
 #include "experiments/experiment_runner.h"
 #include "experiments/line_plot.h"
 #include "experiments/manifest.h"
+#include "experiments/text_utilities.h"
 #include "experiments/trace_csv.h"
 #include "framework/error.h"
 #include "framework/output_file.h"
@@ -21,13 +22,6 @@ namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
 namespace {
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::string number(double v, int digits = 4) {
   std::ostringstream text;
@@ -68,11 +62,11 @@ std::string csv_field(const Json& s, const char* key) {
 std::string write_experiment_report(const std::string& out_dir) {
   const std::string manifest_path = join_path(out_dir, "manifest.json");
   if (!fs::exists(manifest_path)) throw InputError(out_dir + ": not a results folder (no manifest.json)");
-  const Manifest manifest = parse_manifest(read_text(manifest_path), manifest_path);
+  const Manifest manifest = parse_manifest(read_text_file(manifest_path), manifest_path);
   std::vector<Json> summaries(manifest.cases.size());
   for (const ExperimentCase& c : manifest.cases) {
     const std::string path = join_path(join_path(join_path(out_dir, "cases"), c.id), "summary.json");
-    if (fs::exists(path)) summaries[c.index] = Json::parse(read_text(path));
+    if (fs::exists(path)) summaries[c.index] = Json::parse(read_text_file(path));
   }
   // Paper columns, in first-seen order.
   std::vector<std::string> paper_columns;
@@ -99,8 +93,8 @@ std::string write_experiment_report(const std::string& out_dir) {
     md << "| " << mesh.label << " | " << faces << " | ";
     for (std::size_t j = 0; j < per_mesh; ++j) md << cell(summaries[i * per_mesh + j], manifest.table_value) << " | ";
     for (const std::string& column : paper_columns) {
-      const auto found = std::find_if(mesh.paper.begin(), mesh.paper.end(),
-                                      [&](const auto& entry) { return entry.first == column; });
+      const auto found =
+          std::find_if(mesh.paper.begin(), mesh.paper.end(), [&](const auto& entry) { return entry.first == column; });
       md << (found != mesh.paper.end() ? number(found->second) : "") << " | ";
     }
     md << (mesh.missing.empty() ? mesh.note : "not available: " + mesh.missing) << " |\n";

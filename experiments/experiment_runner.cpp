@@ -13,6 +13,7 @@
 #include "experiments/deformation.h"
 #include "experiments/parameterization.h"
 #include "experiments/slim_cube.h"
+#include "experiments/text_utilities.h"
 #include "experiments/trace_csv.h"
 #include "framework/constraints_io.h"
 #include "framework/error.h"
@@ -31,13 +32,6 @@ namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
 namespace {
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::string cpu_model() {
   std::ifstream in("/proc/cpuinfo");
@@ -82,6 +76,17 @@ OptimizerOptions stopping_rule(const CaseSettings& s) {
   return o;
 }
 
+// The settings param and deform configs share (same member names in both).
+template <class Config>
+void apply_common_settings(const CaseSettings& s, Config* config) {
+  config->energy = s.energy;
+  config->energy_settings.exponent = s.exponent;
+  config->preconditioner = s.precond;
+  config->line_search = s.line_search;
+  config->acceleration = s.acceleration;
+  config->optimizer = stopping_rule(s);
+}
+
 struct CaseResult {
   OptimizerResult result;
   double lower_bound = 0;
@@ -91,12 +96,7 @@ struct CaseResult {
 CaseResult run_param_case(const ExperimentCase& c, const std::string& mesh_path, const std::string& case_dir) {
   const CaseSettings& s = c.settings;
   ParamConfig config;
-  config.energy = s.energy;
-  config.energy_settings.exponent = s.exponent;
-  config.preconditioner = s.precond;
-  config.line_search = s.line_search;
-  config.acceleration = s.acceleration;
-  config.optimizer = stopping_rule(s);
+  apply_common_settings(s, &config);
   const ParamSetup setup = prepare_parameterization(read_triangle_mesh(mesh_path), mesh_path, config);
   std::vector<IterationCallback> callbacks;
   callbacks.push_back([&](const IterationSummary& row, const Eigen::VectorXd& x) {
@@ -121,16 +121,11 @@ CaseResult run_deform_case(const ExperimentCase& c, const std::string& mesh_path
       s.preset.empty() ? read_constraints_file(join_path(data_dir, s.constraints), mesh.num_vertices())
                        : slim_cube_constraints(mesh);
   DeformConfig config;
-  config.energy = s.energy;
-  config.energy_settings.exponent = s.exponent;
-  config.preconditioner = s.precond;
-  config.line_search = s.line_search;
-  config.acceleration = s.acceleration;
+  apply_common_settings(s, &config);
   config.weight = s.weight;
   for (FactorOptions* options : {&config.preconditioner_settings.akvf.factor, &config.preconditioner_settings.newton,
                                  &config.preconditioner_settings.slim})
     options->cg_tolerance = s.cg_tol;
-  config.optimizer = stopping_rule(s);
   const DeformRun run = run_deformation(mesh, mesh_path, constraints, config);
   CaseResult out;
   out.result = run.result;
@@ -193,7 +188,7 @@ void claim_folder(const Manifest& manifest, const std::string& out_dir) {
   fs::create_directories(join_path(out_dir, "cases"));
   const std::string path = join_path(out_dir, "manifest.json");
   if (fs::exists(path)) {
-    if (read_text(path) != manifest.source_text)
+    if (read_text_file(path) != manifest.source_text)
       throw OutputError(out_dir + ": holds the results of a different manifest (" + path +
                         "); choose another --out-dir or remove it");
     return;
@@ -254,7 +249,7 @@ void merge_experiments(const std::vector<std::string>& sources, const std::strin
   for (const std::string& source : sources) {
     const std::string path = join_path(source, "manifest.json");
     if (!fs::exists(path)) throw InputError(source + ": not a results folder (no manifest.json)");
-    const std::string text = read_text(path);
+    const std::string text = read_text_file(path);
     if (manifest_text.empty()) manifest_text = text;
     if (text != manifest_text) throw InputError(source + ": holds results of a different manifest than " + sources[0]);
   }
@@ -270,8 +265,8 @@ void merge_experiments(const std::vector<std::string>& sources, const std::strin
       const fs::path target = fs::path(out_dir) / "cases" / entry.path().filename();
       if (fs::exists(target) && fs::equivalent(entry.path(), target)) continue;  // merging into a source
       if (fs::exists(target / "summary.json")) {
-        const Json a = Json::parse(read_text(summary.string())),
-                   b = Json::parse(read_text((target / "summary.json").string()));
+        const Json a = Json::parse(read_text_file(summary.string())),
+                   b = Json::parse(read_text_file((target / "summary.json").string()));
         if (a["status"] != b["status"] || a.value("iterations", -1) != b.value("iterations", -1))
           throw InputError(source + ": case " + entry.path().filename().string() +
                            " is also in another folder with a different result");

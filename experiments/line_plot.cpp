@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "experiments/text_utilities.h"
 #include "framework/error.h"
 
 namespace akvf {
@@ -85,21 +86,6 @@ std::string format_tick(double v, bool log) {
   return text.str();
 }
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else
-      out += c;
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string line_plot_svg(const PlotSpec& spec, const std::vector<PlotSeries>& series) {
@@ -111,7 +97,7 @@ std::string line_plot_svg(const PlotSpec& spec, const std::vector<PlotSeries>& s
       << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   svg << "<text x=\"" << (kLeft + kWidth - kRight) / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">"
-      << escape(spec.title) << "</text>\n";
+      << xml_escape(spec.title) << "</text>\n";
   // Grid and ticks.
   for (double t : x.ticks()) {
     const double px = x.pixel(t);
@@ -128,9 +114,9 @@ std::string line_plot_svg(const PlotSpec& spec, const std::vector<PlotSeries>& s
   svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << kWidth - kLeft - kRight << "\" height=\""
       << kHeight - kTop - kBottom << "\" fill=\"none\" stroke=\"black\"/>\n";
   svg << "<text x=\"" << (kLeft + kWidth - kRight) / 2 << "\" y=\"" << kHeight - 12 << "\" text-anchor=\"middle\">"
-      << escape(spec.x_label) << "</text>\n";
+      << xml_escape(spec.x_label) << "</text>\n";
   svg << "<text transform=\"translate(18," << (kTop + kHeight - kBottom) / 2
-      << ") rotate(-90)\" text-anchor=\"middle\">" << escape(spec.y_label) << "</text>\n";
+      << ") rotate(-90)\" text-anchor=\"middle\">" << xml_escape(spec.y_label) << "</text>\n";
   // Series and legend.
   for (std::size_t s = 0; s < series.size(); ++s) {
     const char* color = kColors[s % std::size(kColors)];
@@ -142,7 +128,7 @@ std::string line_plot_svg(const PlotSpec& spec, const std::vector<PlotSeries>& s
     const double ly = kTop + 10 + 20 * static_cast<double>(s);
     svg << "<line x1=\"" << kWidth - kRight + 12 << "\" y1=\"" << ly << "\" x2=\"" << kWidth - kRight + 36 << "\" y2=\""
         << ly << "\" stroke=\"" << color << "\" stroke-width=\"2.5\"/>\n<text x=\"" << kWidth - kRight + 42 << "\" y=\""
-        << ly + 4 << "\">" << escape(series[s].label) << "</text>\n";
+        << ly + 4 << "\">" << xml_escape(series[s].label) << "</text>\n";
   }
   svg << "</svg>\n";
   return svg.str();

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "experiments/catalog.h"
+#include "experiments/text_utilities.h"
 #include "framework/error.h"
 
 namespace akvf {
@@ -221,12 +222,6 @@ Manifest parse_manifest(const std::string& text, const std::string& file_name) {
   return m;
 }
 
-Manifest read_manifest(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the manifest");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_manifest(text.str(), path);
-}
+Manifest read_manifest(const std::string& path) { return parse_manifest(read_text_file(path), path); }
 
 }  // namespace akvf

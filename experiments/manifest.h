@@ -32,9 +32,9 @@ struct CaseSettings {
 
 struct ManifestMesh {
   std::string label;
-  std::string file;                     // relative to the data folder; empty when missing
-  std::string missing;                  // why the mesh is not available ("" when it is)
-  std::string note;                     // e.g. "stand-in for ..."
+  std::string file;                                   // relative to the data folder; empty when missing
+  std::string missing;                                // why the mesh is not available ("" when it is)
+  std::string note;                                   // e.g. "stand-in for ..."
   std::vector<std::pair<std::string, double>> paper;  // the paper's figures for this mesh: (column, value), in order
 };
 

@@ -1,5 +1,7 @@
 #include "experiments/uv_svg.h"
 
+#include "experiments/text_utilities.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,21 +22,6 @@ std::string color_for(double excess) {
   char buffer[8];
   std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", r, g, b);
   return buffer;
-}
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else
-      out += c;
-  }
-  return out;
 }
 
 }  // namespace

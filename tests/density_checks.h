@@ -61,4 +61,23 @@ void check_density_derivatives(const DistortionDensity<Dim>& density, double sma
   }
 }
 
+// dD/dsigma_i of a density with a singular-value derivative against central
+// differences of D at diag(sigma).
+template <int Dim>
+void check_singular_value_gradient(const DistortionDensity<Dim>& density, const Eigen::Matrix<double, Dim, 1>& sigma) {
+  using Vector = Eigen::Matrix<double, Dim, 1>;
+  const auto& derivative = dynamic_cast<const SingularValueDerivative<Dim>&>(density);
+  const Vector grad = derivative.singular_value_gradient(sigma);
+  const double h = 1e-6;
+  for (int i = 0; i < Dim; ++i) {
+    Vector plus = sigma, minus = sigma;
+    plus[i] += h;
+    minus[i] -= h;
+    const double fd =
+        (density.value(plus.asDiagonal().toDenseMatrix()) - density.value(minus.asDiagonal().toDenseMatrix())) /
+        (2 * h);
+    CHECK(grad[i] == doctest::Approx(fd).epsilon(1e-6));
+  }
+}
+
 }  // namespace akvf::test

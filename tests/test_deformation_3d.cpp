@@ -10,12 +10,12 @@
 #include "experiments/catalog.h"
 #include "experiments/deformation.h"
 #include "framework/constrained_objective.h"
-#include "solvers/backtracking_line_search.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "preconditioners/energy_scale.h"
 #include "preconditioners/laplacian_preconditioner.h"
 #include "preconditioners/newton_preconditioner.h"
 #include "preconditioners/slim_preconditioner.h"
+#include "solvers/backtracking_line_search.h"
 #include "tests/density_checks.h"
 #include "tests/test_support.h"
 
@@ -24,15 +24,6 @@ namespace {
 akvf::TetObjective grid_objective(const akvf::TetMesh& mesh,
                                   std::shared_ptr<const akvf::DistortionDensity<3>> density) {
   return akvf::TetObjective(mesh.T, akvf::rest_tets(mesh), std::move(density), mesh.num_vertices());
-}
-
-// The rest positions stretched and jittered: a valid but distorted deformation.
-Eigen::VectorXd distorted(const akvf::TetMesh& mesh, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-0.03, 0.03);
-  Eigen::MatrixXd P = mesh.V * Eigen::Vector3d(1.3, 0.9, 1.1).asDiagonal();
-  for (int v = 0; v < P.rows(); ++v) P.row(v) += Eigen::RowVector3d(u(rng), u(rng), u(rng));
-  return akvf::stack_rows(P);
 }
 
 // The grid's bottom face fixed and its top face turned by `angle` about the vertical axis.
@@ -58,7 +49,7 @@ akvf::PositionConstraints twisted_top(const akvf::TetMesh& mesh, double angle) {
 TEST_CASE("3D Newton, Laplacian and SLIM: symmetric PSD, the expected null spaces, descent directions") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
   const akvf::TetObjective objective = grid_objective(mesh, std::make_shared<akvf::SymmetricDirichlet3>());
-  const Eigen::VectorXd x = distorted(mesh, 3);
+  const Eigen::VectorXd x = akvf::test::distorted_tet_positions(mesh, 3);
   Eigen::VectorXd g, d;
   objective.value_and_gradient(x, &g);
   akvf::NewtonPreconditioner3D newton(objective);
@@ -107,7 +98,8 @@ TEST_CASE("3D AKVF scales K to the energy: rest shear curvature first, then the 
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
   const auto density = std::make_shared<akvf::ExpSymmetricDirichlet3>(0.5);
   const akvf::TetObjective objective = grid_objective(mesh, density);
-  const Eigen::VectorXd x1 = distorted(mesh, 11), x2 = distorted(mesh, 12);
+  const Eigen::VectorXd x1 = akvf::test::distorted_tet_positions(mesh, 11),
+                        x2 = akvf::test::distorted_tet_positions(mesh, 12);
   Eigen::VectorXd g1, g2;
   objective.value_and_gradient(x1, &g1);
   objective.value_and_gradient(x2, &g2);

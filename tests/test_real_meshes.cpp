@@ -140,7 +140,8 @@ TEST_CASE("every 3D method deforms every shared tet mesh without inverting a tet
       out.precision(17);
       out << "# vertex x y z\n";
       for (std::size_t c = 0; c < targets.size(); ++c)
-        out << constraints.vertices[c] << ' ' << targets[c].x() << ' ' << targets[c].y() << ' ' << targets[c].z() << '\n';
+        out << constraints.vertices[c] << ' ' << targets[c].x() << ' ' << targets[c].y() << ' ' << targets[c].z()
+            << '\n';
     }
     constraints = akvf::read_constraints_file(file, mesh.num_vertices());
     std::filesystem::remove(file);

@@ -105,4 +105,14 @@ std::string error_message(const std::function<void()>& f) {
 
 void skip(const std::string& reason) { std::cout << "SKIPPED: " << reason << std::endl; }
 
+Eigen::VectorXd distorted_tet_positions(const TetMesh& mesh, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-0.03, 0.03);
+  Eigen::MatrixXd P = mesh.V * Eigen::Vector3d(1.3, 0.9, 1.1).asDiagonal();
+  for (int v = 0; v < P.rows(); ++v) P.row(v) += Eigen::RowVector3d(u(rng), u(rng), u(rng));
+  Eigen::VectorXd x(3 * P.rows());
+  for (int v = 0; v < P.rows(); ++v) x.segment<3>(3 * v) = P.row(v).transpose();
+  return x;
+}
+
 }  // namespace akvf::test

@@ -20,6 +20,10 @@ TriMesh bumpy_disk(int nx, int ny);
 // every tet positively oriented.
 TetMesh tet_grid(int n);
 
+// The tet mesh's rest positions stretched by (1.3, 0.9, 1.1) and jittered by
+// up to 0.03: a valid but distorted deformation (interleaved, 3|V|).
+Eigen::VectorXd distorted_tet_positions(const TetMesh& mesh, unsigned seed);
+
 // A planar UV map of grid_disk's connectivity: the grid with random interior
 // jitter, never inverted for jitter < 0.3.
 Eigen::MatrixXd jittered_uv(const TriMesh& mesh, double jitter, unsigned seed);

@@ -78,20 +78,8 @@ TEST_CASE("every energy attains its lower bound at rotations and is infinite whe
 TEST_CASE("the singular-value gradient is the derivative of D along the singular values") {
   const akvf::Arap2 arap;
   const akvf::SymmetricDirichlet2 sd;
-  for (const akvf::InvariantDensity2* density : std::initializer_list<const akvf::InvariantDensity2*>{&arap, &sd}) {
-    const Eigen::Vector2d sigma(1.7, 0.6);
-    const Eigen::Vector2d grad = density->singular_value_gradient(sigma);
-    const double h = 1e-6;
-    for (int i = 0; i < 2; ++i) {
-      Eigen::Vector2d plus = sigma, minus = sigma;
-      plus[i] += h;
-      minus[i] -= h;
-      const double fd =
-          (density->value(plus.asDiagonal().toDenseMatrix()) - density->value(minus.asDiagonal().toDenseMatrix())) /
-          (2 * h);
-      CHECK(grad[i] == doctest::Approx(fd).epsilon(1e-6));
-    }
-  }
+  for (const akvf::DistortionDensity2* density : std::initializer_list<const akvf::DistortionDensity2*>{&arap, &sd})
+    akvf::test::check_singular_value_gradient<2>(*density, Eigen::Vector2d(1.7, 0.6));
 }
 
 TEST_CASE("every 3D energy: derivatives by finite differences, bounds, inversion") {
@@ -119,21 +107,9 @@ TEST_CASE("3D singular-value derivatives match finite differences in sigma") {
   const akvf::SymmetricDirichlet3 sd;
   const akvf::Amips3 amips(0.5);
   const akvf::Arap3 arap;
-  const Eigen::Vector3d sigma(1.7, 0.8, 0.45);
-  for (const akvf::SingularValueDerivative<3>* density :
-       std::initializer_list<const akvf::SingularValueDerivative<3>*>{&sd, &amips, &arap}) {
-    const auto& energy = dynamic_cast<const akvf::DistortionDensity<3>&>(*density);
-    CAPTURE(energy.name());
-    const Eigen::Vector3d grad = density->singular_value_gradient(sigma);
-    const double h = 1e-6;
-    for (int i = 0; i < 3; ++i) {
-      Eigen::Vector3d plus = sigma, minus = sigma;
-      plus[i] += h;
-      minus[i] -= h;
-      const double fd =
-          (energy.value(plus.asDiagonal().toDenseMatrix()) - energy.value(minus.asDiagonal().toDenseMatrix())) /
-          (2 * h);
-      CHECK(grad[i] == doctest::Approx(fd).epsilon(1e-6));
-    }
+  for (const akvf::DistortionDensity<3>* density :
+       std::initializer_list<const akvf::DistortionDensity<3>*>{&sd, &amips, &arap}) {
+    CAPTURE(density->name());
+    akvf::test::check_singular_value_gradient<3>(*density, Eigen::Vector3d(1.7, 0.8, 0.45));
   }
 }

@@ -21,15 +21,6 @@ akvf::TetObjective cube_objective(const akvf::TetMesh& mesh) {
                             mesh.num_vertices());
 }
 
-// The rest positions stretched and jittered: a valid but distorted deformation.
-Eigen::VectorXd deformed(const akvf::TetMesh& mesh, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-0.03, 0.03);
-  Eigen::MatrixXd P = mesh.V * Eigen::Vector3d(1.3, 0.9, 1.1).asDiagonal();
-  for (int v = 0; v < P.rows(); ++v) P.row(v) += Eigen::RowVector3d(u(rng), u(rng), u(rng));
-  return akvf::stack_rows(P);
-}
-
 }  // namespace
 
 TEST_CASE("tet objective: rest state is the lower bound, the gradient matches finite differences") {
@@ -38,7 +29,7 @@ TEST_CASE("tet objective: rest state is the lower bound, the gradient matches fi
   Eigen::VectorXd g;
   CHECK(objective.value_and_gradient(akvf::stack_rows(mesh.V), &g) == doctest::Approx(6.0).epsilon(1e-12));
   CHECK(g.norm() <= 1e-10);
-  const Eigen::VectorXd x = deformed(mesh, 1);
+  const Eigen::VectorXd x = akvf::test::distorted_tet_positions(mesh, 1);
   const double energy = objective.value_and_gradient(x, &g);
   CHECK(energy > 6.0);
   CHECK(objective.value(x) == energy);
@@ -57,7 +48,7 @@ TEST_CASE("tet objective: the flip-free bound is tight and no step below it inve
   std::mt19937 rng(3);
   std::normal_distribution<double> n;
   for (int trial = 0; trial < 10; ++trial) {
-    const Eigen::VectorXd x = deformed(mesh, trial + 10);
+    const Eigen::VectorXd x = akvf::test::distorted_tet_positions(mesh, trial + 10);
     REQUIRE(objective.count_inverted(x) == 0);
     const Eigen::VectorXd d = Eigen::VectorXd::NullaryExpr(x.size(), [&](Eigen::Index) { return n(rng); });
     const double t = objective.max_feasible_step(x, d);
@@ -70,7 +61,7 @@ TEST_CASE("tet objective: the flip-free bound is tight and no step below it inve
 TEST_CASE("3D AKVF preconditioner: K + c I gives a descent direction; with rigid projection, none of it rigid") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
   const akvf::TetObjective objective = cube_objective(mesh);
-  const Eigen::VectorXd x = deformed(mesh, 5);
+  const Eigen::VectorXd x = akvf::test::distorted_tet_positions(mesh, 5);
   Eigen::VectorXd g, d;
   objective.value_and_gradient(x, &g);
   for (bool project : {false, true}) {
@@ -133,7 +124,7 @@ TEST_CASE("constraints files: rows, comments, and each malformed line named") {
 TEST_CASE("3D AKVF with conjugate gradients solves (K + c I) d = g to the tolerance without factoring") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
   const akvf::TetObjective objective = cube_objective(mesh);
-  const Eigen::VectorXd x = deformed(mesh, 6);
+  const Eigen::VectorXd x = akvf::test::distorted_tet_positions(mesh, 6);
   Eigen::VectorXd g, d;
   objective.value_and_gradient(x, &g);
   akvf::Akvf3DOptions options;
