@@ -18,6 +18,7 @@
 #include "framework/constraints_io.h"
 #include "framework/error.h"
 #include "framework/mesh_io.h"
+#include "framework/mesh_subdivision.h"
 #include "framework/output_file.h"
 #include "framework/tet_mesh_io.h"
 #include "solvers/sparse_cholesky.h"
@@ -39,6 +40,19 @@ std::string cpu_model() {
   while (std::getline(in, line))
     if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
   return "unknown";
+}
+
+// Linux: resets the process's peak resident set size (VmHWM) so that the
+// value read after a case is that case's peak (writing 5 to clear_refs).
+void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+// VmHWM of /proc/self/status in MiB (0 where unavailable).
+double peak_memory_mb() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // reported in kB
+  return 0;
 }
 
 // Where and with what the case ran: the same for every case of a run.
@@ -93,11 +107,13 @@ struct CaseResult {
   int vertices = 0, elements = 0;
 };
 
-CaseResult run_param_case(const ExperimentCase& c, const std::string& mesh_path, const std::string& case_dir) {
+CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, const std::string& mesh_path,
+                          const std::string& case_dir) {
   const CaseSettings& s = c.settings;
   ParamConfig config;
   apply_common_settings(s, &config);
-  const ParamSetup setup = prepare_parameterization(read_triangle_mesh(mesh_path), mesh_path, config);
+  const ParamSetup setup =
+      prepare_parameterization(subdivide_midpoint(read_triangle_mesh(mesh_path), mesh.subdivide), mesh_path, config);
   std::vector<IterationCallback> callbacks;
   callbacks.push_back([&](const IterationSummary& row, const Eigen::VectorXd& x) {
     for (int k : s.snapshots)
@@ -108,6 +124,10 @@ CaseResult run_param_case(const ExperimentCase& c, const std::string& mesh_path,
   });
   CaseResult out;
   out.result = run_parameterization(setup, config, callbacks).result;
+  if (!s.snapshots.empty())  // also the layout where the run stopped (it may stop before a snapshot)
+    write_layout_svg(join_path(case_dir, "final.svg"), setup, out.result.x,
+                     c.mesh_label + " - " + c.method_label + ", final (iteration " +
+                         std::to_string(out.result.trace.back().iteration) + ")");
   out.lower_bound = setup.objective->lower_bound();
   out.vertices = setup.disk.mesh.num_vertices();
   out.elements = setup.disk.mesh.num_faces();
@@ -152,8 +172,9 @@ Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOpt
   }
   try {
     const std::string path = join_path(options.data_dir, mesh.file);
-    const CaseResult r =
-        c.settings.problem == "param" ? run_param_case(c, path, case_dir) : run_deform_case(c, path, options.data_dir);
+    reset_peak_memory();
+    const CaseResult r = c.settings.problem == "param" ? run_param_case(c, mesh, path, case_dir)
+                                                       : run_deform_case(c, path, options.data_dir);
     const IterationSummary& last = r.result.trace.back();
     int max_flips = 0;
     for (const IterationSummary& row : r.result.trace) max_flips = std::max(max_flips, row.flips);
@@ -169,6 +190,7 @@ Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOpt
     summary["max_flips"] = max_flips;
     summary["vertices"] = r.vertices;
     summary["elements"] = r.elements;
+    summary["peak_memory_mb"] = peak_memory_mb();
   } catch (const Error& e) {
     summary["status"] = "error";
     summary["message"] = e.what();

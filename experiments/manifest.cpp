@@ -176,7 +176,7 @@ Manifest parse_manifest(const std::string& text, const std::string& file_name) {
     const std::string path = "meshes[" + std::to_string(i) + "]";
     const Json& entry = meshes[i];
     CaseSettings s = defaults;
-    apply_case_keys(c, entry, path, {"label", "file", "missing", "note", "paper"}, &s);
+    apply_case_keys(c, entry, path, {"label", "file", "missing", "note", "paper", "subdivide"}, &s);
     ManifestMesh mesh;
     if (!entry.contains("label")) c.fail(path, "missing \"label\"");
     mesh.label = text_of(c, entry["label"], path + ".label");
@@ -186,6 +186,10 @@ Manifest parse_manifest(const std::string& text, const std::string& file_name) {
     if (mesh.file.empty() == mesh.missing.empty())
       c.fail(path, "give exactly one of \"file\" and \"missing\" (the reason the mesh is not available)");
     if (entry.contains("note")) mesh.note = text_of(c, entry["note"], path + ".note");
+    if (entry.contains("subdivide")) {
+      mesh.subdivide = integer_of(c, entry["subdivide"], path + ".subdivide");
+      if (mesh.subdivide < 0 || mesh.subdivide > 6) c.fail(path + ".subdivide", "expected 0 to 6 rounds");
+    }
     if (entry.contains("paper")) {
       if (!entry["paper"].is_object()) c.fail(path + ".paper", "expected an object of column: number");
       for (const auto& [column, value] : entry["paper"].items())

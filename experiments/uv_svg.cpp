@@ -1,11 +1,10 @@
 #include "experiments/uv_svg.h"
 
-#include "experiments/text_utilities.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "experiments/text_utilities.h"
 #include "framework/output_file.h"
 
 namespace akvf {
@@ -45,7 +44,7 @@ void write_uv_svg(const std::string& path, const Eigen::MatrixXd& UV, const Eige
         << "</text>\n";
     out << "<g stroke=\"#333\" stroke-width=\"0.3\" stroke-linejoin=\"round\">\n";
     for (int f = 0; f < F.rows(); ++f) {
-      std::snprintf(buffer, sizeof buffer, "<path d=\"M%.2f %.2fL%.2f %.2fL%.2f %.2fZ\" fill=\"", px(F(f, 0)),
+      std::snprintf(buffer, sizeof buffer, "<path d=\"M%.1f %.1fL%.1f %.1fL%.1f %.1fZ\" fill=\"", px(F(f, 0)),
                     py(F(f, 0)), px(F(f, 1)), py(F(f, 1)), px(F(f, 2)), py(F(f, 2)));
       out << buffer << color_for(distortion[f]) << "\"/>\n";
     }

@@ -51,11 +51,12 @@ int akvf_run(const std::vector<std::string>& args, std::string* out = nullptr, s
   return code;
 }
 
-// The comparable part of a summary: everything but times and the machine.
+// The comparable part of a summary: everything but times, memory and the machine.
 std::string result_of(const fs::path& summary) {
   auto j = nlohmann::json::parse(read_text(summary));
   j.erase("seconds");
   j.erase("machine");
+  j.erase("peak_memory_mb");
   return j.dump();
 }
 
@@ -65,7 +66,7 @@ const char* kTinyManifest = R"({
   "meshes": [
     {"label": "Bumpy", "file": "bumpy.obj", "paper": {"AKVF": 0.5}},
     {"label": "Gone", "missing": "not in the test data"},
-    {"label": "Bumpy small", "file": "small.obj"}
+    {"label": "Bumpy small", "file": "small.obj", "subdivide": 1}
   ],
   "methods": [
     {"label": "AKVF", "precond": "akvf", "snapshots": [2]},
@@ -123,6 +124,10 @@ TEST_CASE("a tiny manifest runs end to end; shards merged give the same results 
   CHECK(summary["max_flips"] == 0);
   CHECK(summary["machine"]["cores"].get<int>() >= 1);
   CHECK(summary["machine"]["versions"].contains("cholmod"));
+  CHECK(summary["peak_memory_mb"].get<double>() > 0);
+  // small.obj is a 5 x 5 grid (32 triangles), subdivided once.
+  const auto small = nlohmann::json::parse(read_text(dir / "all" / "cases" / "bumpy-small--slim" / "summary.json"));
+  CHECK(small["elements"] == 128);
 
   for (const char* shard : {"1/2", "2/2"})
     REQUIRE(akvf_run({"experiment", manifest, "--data-dir", data.string(), "--out-dir",

@@ -4,7 +4,9 @@
 
 #include <limits>
 
+#include "framework/mesh_subdivision.h"
 #include "framework/mesh_validation.h"
+#include "framework/rest_geometry.h"
 #include "tests/test_support.h"
 
 using akvf::TriMesh;
@@ -155,4 +157,15 @@ TEST_CASE("unreferenced vertices are dropped with a warning and mapped back") {
   CHECK(disk.input_vertex.back() == 9);
   REQUIRE(disk.warnings.size() == 1);
   CHECK(disk.warnings[0] == "p.obj: dropped 2 unreferenced vertices (first: 0); they get UV (0, 0) in the output");
+}
+
+TEST_CASE("midpoint subdivision keeps a disk a disk and multiplies the faces by 4 per round") {
+  const akvf::TriMesh grid = akvf::test::grid_disk(4, 3);
+  const akvf::TriMesh fine = akvf::subdivide_midpoint(grid, 2);
+  CHECK(fine.num_faces() == 16 * grid.num_faces());
+  const akvf::DiskMesh disk = akvf::prepare_disk_mesh(fine, "fine");
+  CHECK(disk.mesh.num_faces() == fine.num_faces());
+  CHECK(akvf::surface_area(fine) == doctest::Approx(akvf::surface_area(grid)));
+  const std::string expected = "would make " + std::to_string(64 * grid.num_faces()) + " faces (more than 100)";
+  CHECK(akvf::test::error_message([&] { akvf::subdivide_midpoint(grid, 3, 100); }).find(expected) != std::string::npos);
 }
