@@ -38,8 +38,8 @@ std::string cell(const Json& s, const std::string& value) {
   const std::string iterations = std::to_string(s["iterations"].get<int>()) + " it";
   if (value == "energy") return number(s["final_energy"].get<double>(), 8) + " (" + iterations + ")";
   if (s["reached"].get<bool>()) return number(s["seconds"].get<double>(), 3) + " s (" + iterations + ")";
-  return "not reached: " + status + " after " + iterations + ", " + number(s["seconds"].get<double>(), 3) + " s, E " +
-         number(s["final_energy"].get<double>(), 7) + ", |g| " + number(s["grad_norm"].get<double>(), 2);
+  return "not reached (" + status + "): " + iterations + ", " + number(s["seconds"].get<double>(), 3) + " s, E " +
+         number(s["final_energy"].get<double>(), 7) + ", gradient " + number(s["grad_norm"].get<double>(), 2);
 }
 
 std::string csv_field(const Json& s, const char* key) {
