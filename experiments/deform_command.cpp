@@ -102,7 +102,7 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
       write_medit(out_path, deformed);
   }
   if (!trace_path.empty()) write_trace_csv(trace_path, run.result);
-  return is_normal_termination(run.result.status) ? kExitOk : kExitOptimizerFailure;
+  return exit_code_of(run.result);
 }
 
 }  // namespace akvf

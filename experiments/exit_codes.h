@@ -8,6 +8,7 @@ enum ExitCode : int {
   kExitUsageError = 2,        // bad command line
   kExitOptimizerFailure = 3,  // line search or numerical failure; outputs hold the last valid iterate
   kExitOutputError = 4,       // an output file could not be written
+  kExitInterrupted = 130,     // SIGINT/SIGTERM: outputs hold the last accepted iterate (128 + SIGINT)
 };
 
 }  // namespace akvf

@@ -93,6 +93,7 @@ int experiment_command(const std::vector<std::string>& args, std::ostream& out, 
   const RunnerOutcome outcome = run_experiment(manifest, options, err);
   out << write_experiment_report(options.out_dir);
   err << outcome.ran << " cases run, " << outcome.skipped << " skipped, " << outcome.failed << " failed\n";
+  if (outcome.interrupted) return kExitInterrupted;
   return outcome.failed == 0 ? kExitOk : kExitOptimizerFailure;
 }
 

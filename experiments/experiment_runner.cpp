@@ -248,6 +248,11 @@ RunnerOutcome run_experiment(const Manifest& manifest, const RunnerOptions& opti
     fs::create_directories(case_dir);
     const auto case_start = Clock::now();
     const Json summary = run_case(manifest, c, options, case_dir);
+    if (summary["status"] == "interrupted") {  // no summary: --resume runs the case again
+      progress << "interrupted; run again with --resume to finish the remaining cases\n";
+      outcome.interrupted = true;
+      break;
+    }
     write_file_atomically(summary_path, [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
     ran_seconds += std::chrono::duration<double>(Clock::now() - case_start).count();
     ++outcome.ran;

@@ -25,6 +25,7 @@ struct RunnerOptions {
 
 struct RunnerOutcome {
   int ran = 0, skipped = 0, failed = 0;  // failed: the case could not run (bad mesh file, ...)
+  bool interrupted = false;              // a signal stopped the run (that case has no summary)
 };
 
 // Throws OutputError if out_dir holds results of a different manifest.

@@ -3,8 +3,10 @@
 
 #include "experiments/akvf_cli.h"
 #include "experiments/native_runtime.h"
+#include "framework/interrupt.h"
 
 int main(int argc, char** argv) {
   akvf::configure_native_runtime(argv);
+  akvf::install_interrupt_handler();  // Ctrl-C ends a run cleanly, outputs written (interrupt.h)
   return akvf::run_akvf(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
 }

@@ -35,7 +35,7 @@ struct ManifestMesh {
   std::string file;                                   // relative to the data folder; empty when missing
   std::string missing;                                // why the mesh is not available ("" when it is)
   std::string note;                                   // e.g. "stand-in for ..."
-  int subdivide = 0;  // rounds of midpoint subdivision after reading (faces x 4 each)
+  int subdivide = 0;                                  // rounds of midpoint subdivision after reading (faces x 4 each)
   std::vector<std::pair<std::string, double>> paper;  // the paper's figures for this mesh: (column, value), in order
 };
 

@@ -97,7 +97,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const ParamConf
     write_layout_svg(outputs.svg, setup, result.x,
                      name + " - " + run.preconditioner_name + ", " + std::to_string(last.iteration) +
                          " iterations, E = " + std::to_string(last.energy));
-  return is_normal_termination(result.status) ? kExitOk : kExitOptimizerFailure;
+  return exit_code_of(result);
 }
 
 }  // namespace

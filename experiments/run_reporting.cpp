@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "experiments/exit_codes.h"
 #include "framework/error.h"
 
 namespace akvf {
@@ -31,6 +32,11 @@ std::string summary_line(const OptimizerResult& result) {
       summary, sizeof summary, "status %s after %d iterations, %.3f s: energy %.10g, gradient norm %.3e, %d inverted\n",
       to_string(result.status).c_str(), last.iteration, last.seconds, last.energy, last.grad_norm, last.flips);
   return summary;
+}
+
+int exit_code_of(const OptimizerResult& result) {
+  if (result.status == TerminationStatus::kInterrupted) return kExitInterrupted;
+  return is_normal_termination(result.status) ? kExitOk : kExitOptimizerFailure;
 }
 
 }  // namespace akvf

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "framework/error.h"
+#include "framework/interrupt.h"
 
 namespace akvf {
 
@@ -61,6 +62,8 @@ std::string to_string(TerminationStatus status) {
       return "numerical-failure";
     case TerminationStatus::kUserStopped:
       return "user-stopped";
+    case TerminationStatus::kInterrupted:
+      return "interrupted";
   }
   return "unknown";
 }
@@ -118,6 +121,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
       return finish(TerminationStatus::kMaxIterations,
                     "reached " + std::to_string(options.max_iterations) + " iterations");
     if (elapsed() >= options.time_limit) return finish(TerminationStatus::kTimeLimit, "reached the time limit");
+    if (interrupt_requested()) return finish(TerminationStatus::kInterrupted, "interrupted by a signal");
 
     // The point the step starts from: x, or AQP's extrapolation of it.
     const bool accelerated = options.acceleration_eta > 0 &&
@@ -161,8 +165,9 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     }
     if (notify(row)) return finish(TerminationStatus::kUserStopped, "stopped by a callback");
 
-    stalled_iterations =
-        previous_energy - energy <= options.stall_tolerance * std::max(1.0, std::abs(energy)) ? stalled_iterations + 1 : 0;
+    stalled_iterations = previous_energy - energy <= options.stall_tolerance * std::max(1.0, std::abs(energy))
+                             ? stalled_iterations + 1
+                             : 0;
     if (stalled_iterations >= options.stall_iterations)
       return finish(TerminationStatus::kStalled, "energy decreased by less than " +
                                                      std::to_string(options.stall_tolerance) + " (relative) for " +

@@ -45,9 +45,10 @@ enum class TerminationStatus {
   kLineSearchFailed,  // no acceptable step; x is the last accepted iterate
   kNumericalFailure,  // non-finite energy or gradient
   kUserStopped,       // a callback asked to stop
+  kInterrupted,       // SIGINT / SIGTERM (interrupt.h); x is the last accepted iterate
 };
 std::string to_string(TerminationStatus status);
-// Converged, iteration or time limits, stall and user stops are normal ends;
+// Converged, iteration or time limits, stall, user stops and interrupts are normal ends;
 // the others mean the result should not be trusted as a minimum.
 bool is_normal_termination(TerminationStatus status);
 

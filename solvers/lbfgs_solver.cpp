@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "framework/error.h"
+#include "framework/interrupt.h"
 
 namespace akvf {
 
@@ -66,6 +67,10 @@ class TraceCallback final : public ceres::IterationCallback {
     }
     if (row.seconds >= options_.time_limit) {
       status_ = TerminationStatus::kTimeLimit;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    if (interrupt_requested()) {
+      status_ = TerminationStatus::kInterrupted;
       return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
     }
     return ceres::SOLVER_CONTINUE;

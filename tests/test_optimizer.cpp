@@ -11,6 +11,7 @@
 #include "experiments/demo_mesh.h"
 #include "experiments/parameterization.h"
 #include "framework/error.h"
+#include "framework/interrupt.h"
 #include "framework/rest_geometry.h"
 #include "solvers/backtracking_line_search.h"
 #include "tests/test_support.h"
@@ -123,6 +124,30 @@ TEST_CASE("callbacks can stop the run; iteration and time limits are statuses") 
   config.optimizer.max_iterations = 100000;
   config.optimizer.time_limit = 1e-9;
   CHECK(run(akvf::bent_bar(21, 5), config).result.status == TerminationStatus::kTimeLimit);
+}
+
+TEST_CASE("an interrupt (Ctrl-C) ends the run after the current iteration with its iterate, for every method") {
+  for (const char* method : {"akvf", "lbfgs"}) {
+    CAPTURE(method);
+    ParamConfig config;
+    config.preconditioner = method;
+    config.optimizer.gradient_tolerance = 0;
+    Eigen::VectorXd at_3;
+    auto interrupt_at_3 = [&](const akvf::IterationSummary& s, const Eigen::VectorXd& x) {
+      if (s.iteration == 3) {
+        akvf::request_interrupt();  // what the SIGINT handler does
+        at_3 = x;
+      }
+      return akvf::CallbackAction::kContinue;
+    };
+    const auto result = run(akvf::bent_bar(21, 5), config, {interrupt_at_3}).result;
+    akvf::clear_interrupt();
+    CHECK(result.status == TerminationStatus::kInterrupted);
+    CHECK(akvf::to_string(result.status) == "interrupted");
+    CHECK(akvf::is_normal_termination(result.status));
+    CHECK(result.trace.back().iteration == 3);
+    CHECK(result.x == at_3);
+  }
 }
 
 TEST_CASE("invalid options and unknown names are reported") {

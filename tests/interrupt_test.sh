@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Ctrl-C on a long `akvf param` run: exit code 130, a trace whose last row says
+# "interrupted", and a complete UV OBJ (written through a temporary name).
+# Usage: interrupt_test.sh AKVF_BINARY
+set -euo pipefail
+akvf=$1
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+# A 60 x 60 grid on a bumpy height field: identity preconditioning takes many thousands of iterations.
+awk 'BEGIN {
+  n = 60
+  for (j = 0; j < n; ++j) for (i = 0; i < n; ++i)
+    printf "v %.6f %.6f %.6f\n", i / (n - 1), j / (n - 1), 0.2 * sin(6 * i / n) * cos(5 * j / n)
+  for (j = 0; j < n - 1; ++j) for (i = 0; i < n - 1; ++i) {
+    a = j * n + i + 1; b = a + 1; c = a + n; d = c + 1
+    printf "f %d %d %d\nf %d %d %d\n", a, b, d, a, d, c
+  }
+}' > "$dir/grid.obj"
+"$akvf" param "$dir/grid.obj" --precond identity --max-iters 1000000 --grad-tol 0 --time-limit 60 \
+  --out "$dir/uv.obj" --trace "$dir/trace.csv" --quiet > "$dir/stdout" 2> "$dir/stderr" &
+pid=$!
+sleep 2
+kill -INT "$pid"
+set +e
+wait "$pid"
+code=$?
+set -e
+[ "$code" -eq 130 ] || { echo "expected exit code 130, got $code"; cat "$dir/stderr"; exit 1; }
+tail -n 1 "$dir/trace.csv" | grep -q ',interrupted$' || { echo "last trace row does not say interrupted"; tail -n 2 "$dir/trace.csv"; exit 1; }
+grep -q '^status interrupted' "$dir/stdout" || { echo "no status line"; cat "$dir/stdout"; exit 1; }
+vertices=$(grep -c '^v ' "$dir/uv.obj")
+uvs=$(grep -c '^vt ' "$dir/uv.obj")
+[ "$vertices" -eq 3600 ] && [ "$uvs" -eq 3600 ] || { echo "incomplete UV OBJ: $vertices v, $uvs vt"; exit 1; }
+ls "$dir" | grep -qv -e grid.obj -e uv.obj -e trace.csv -e stdout -e stderr && { echo "temporary files left: $(ls "$dir")"; exit 1; }
+echo "interrupted cleanly after $(($(wc -l < "$dir/trace.csv") - 2)) iterations"
