@@ -9,6 +9,7 @@
 #include "energies/distortion_energies_3d.h"
 #include "experiments/catalog.h"
 #include "experiments/deformation.h"
+#include "experiments/threads.h"
 #include "framework/constrained_objective.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "preconditioners/energy_scale.h"
@@ -189,4 +190,28 @@ TEST_CASE("hard constraints that would invert a tet at the start are refused wit
       akvf::test::error_message([&] { akvf::run_deformation(mesh, "grid.mesh", twisted_top(mesh, 2.5), config); });
   CHECK(message.find("grid.mesh: placing the") == 0);
   CHECK(message.find("use soft constraints") != std::string::npos);
+}
+
+TEST_CASE("3D deformation is bitwise deterministic for 1 and 2 threads") {
+  const akvf::TetMesh mesh = akvf::test::tet_grid(3);
+  const akvf::PositionConstraints constraints = twisted_top(mesh, 0.5);
+  for (const char* method : {"akvf", "slim"}) {
+    CAPTURE(method);
+    akvf::DeformConfig config;
+    config.preconditioner = method;
+    config.optimizer.max_iterations = 15;
+    std::vector<akvf::OptimizerResult> results;
+    for (int threads : {1, 2, 2}) {
+      const akvf::ThreadLimit limit(threads);
+      results.push_back(akvf::run_deformation(mesh, "grid", constraints, config).result);
+    }
+    for (std::size_t r = 1; r < results.size(); ++r) {
+      REQUIRE(results[r].trace.size() == results[0].trace.size());
+      for (std::size_t i = 0; i < results[0].trace.size(); ++i) {
+        CHECK(results[r].trace[i].energy == results[0].trace[i].energy);
+        CHECK(results[r].trace[i].grad_norm == results[0].trace[i].grad_norm);
+      }
+      CHECK(results[r].x == results[0].x);
+    }
+  }
 }
