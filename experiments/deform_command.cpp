@@ -29,6 +29,9 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
           {"energy", "NAME", "symmetric-dirichlet (default), exp-symmetric-dirichlet, arap, mips, amips"},
           {"exponent", "K", "exponent of exp-symmetric-dirichlet and amips (default 1)"},
           {"precond", "NAME", "akvf (default: K + 1e-4 I), newton, laplacian, slim, identity"},
+          {"akvf-as-written", "",
+           "AKVF as Sec. 6.2 states it: K + c I without the constraints' Hessian or\n"
+           "                          the energy scale (slow; for comparison, docs/design.md)"},
           {"acceleration", "auto|on|off", "AQP momentum (default auto: on for --precond laplacian only)"},
           {"cg-tol", "X",
            "solve with Jacobi-preconditioned CG to relative residual X instead of\n"
@@ -63,6 +66,7 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   for (FactorOptions* options : {&settings.akvf.factor, &settings.newton, &settings.slim})
     options->cg_tolerance = cg_tolerance;
   config.hard_constraints = cl.has("hard");
+  config.akvf_as_written = cl.has("akvf-as-written");
   config.acceleration = cl.text("acceleration", config.acceleration);
   if (config.hard_constraints && cl.has("weight")) throw OptionsError("option --weight has no effect with --hard");
   config.weight = cl.real("weight", config.weight);

@@ -16,6 +16,10 @@ Preconditioner3DSettings with_constraint_diagonal(const DeformConfig& config, co
   Preconditioner3DSettings settings = config.preconditioner_settings;
   for (FactorOptions* options : {&settings.akvf.factor, &settings.newton, &settings.laplacian, &settings.slim})
     options->extra_diagonal = diagonal;
+  if (config.akvf_as_written && !config.hard_constraints) {
+    settings.akvf.factor.extra_diagonal.resize(0);
+    settings.akvf.secant_scaling = false;
+  }
   return settings;
 }
 

@@ -159,6 +159,19 @@ TEST_CASE("every 3D energy with every 3D method under soft constraints: no flip,
     }
 }
 
+TEST_CASE("AKVF as written in Sec. 6.2 (K + c I alone) also runs without flips, and more slowly") {
+  const akvf::TetMesh mesh = akvf::test::tet_grid(3);
+  const akvf::PositionConstraints constraints = twisted_top(mesh, 0.5);
+  akvf::DeformConfig config;
+  config.optimizer.max_iterations = 20;
+  const auto scaled = akvf::run_deformation(mesh, "grid", constraints, config);
+  config.akvf_as_written = true;
+  const auto as_written = akvf::run_deformation(mesh, "grid", constraints, config);
+  for (const auto& row : as_written.result.trace) CHECK(row.flips == 0);
+  CHECK(as_written.result.trace.back().energy < as_written.result.trace.front().energy);
+  CHECK(scaled.result.trace.back().energy < as_written.result.trace.back().energy);
+}
+
 TEST_CASE("hard constraints: the constrained vertices sit at their targets at every iterate") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(3);
   const akvf::PositionConstraints constraints = twisted_top(mesh, 0.15);
