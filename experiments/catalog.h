@@ -53,6 +53,13 @@ struct Preconditioner3DSettings {
   FactorOptions newton = shifted_factor_options(1e-4);
   FactorOptions laplacian = shifted_factor_options(1e-4);
   FactorOptions slim = shifted_factor_options(1e-4);
+
+  // Jacobi-CG to this relative residual instead of factoring, for every
+  // matrix that changes per iteration (akvf, newton, slim; the Laplacian is
+  // factored once). 0 = factor.
+  void set_cg_tolerance(double tolerance) {
+    for (FactorOptions* options : {&akvf.factor, &newton, &slim}) options->cg_tolerance = tolerance;
+  }
 };
 using PreconditionerRegistry3D = Registry<Preconditioner, const TetObjective&, const Preconditioner3DSettings&>;
 

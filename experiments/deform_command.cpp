@@ -62,9 +62,7 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   config.preconditioner = cl.text("precond", config.preconditioner);
   const double cg_tolerance = cl.real("cg-tol", 0);
   if (!(cg_tolerance >= 0 && cg_tolerance < 1)) throw OptionsError("option --cg-tol must be in [0, 1)");
-  Preconditioner3DSettings& settings = config.preconditioner_settings;
-  for (FactorOptions* options : {&settings.akvf.factor, &settings.newton, &settings.slim})
-    options->cg_tolerance = cg_tolerance;
+  config.preconditioner_settings.set_cg_tolerance(cg_tolerance);
   config.hard_constraints = cl.has("hard");
   config.akvf_as_written = cl.has("akvf-as-written");
   config.acceleration = cl.text("acceleration", config.acceleration);

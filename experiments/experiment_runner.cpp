@@ -143,9 +143,7 @@ CaseResult run_deform_case(const ExperimentCase& c, const std::string& mesh_path
   DeformConfig config;
   apply_common_settings(s, &config);
   config.weight = s.weight;
-  for (FactorOptions* options : {&config.preconditioner_settings.akvf.factor, &config.preconditioner_settings.newton,
-                                 &config.preconditioner_settings.slim})
-    options->cg_tolerance = s.cg_tol;
+  config.preconditioner_settings.set_cg_tolerance(s.cg_tol);
   const DeformRun run = run_deformation(mesh, mesh_path, constraints, config);
   CaseResult out;
   out.result = run.result;
