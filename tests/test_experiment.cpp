@@ -10,6 +10,7 @@
 #include "experiments/akvf_cli.h"
 #include "experiments/exit_codes.h"
 #include "experiments/manifest.h"
+#include "experiments/text_utilities.h"
 #include "tests/test_support.h"
 
 namespace fs = std::filesystem;
@@ -27,12 +28,7 @@ fs::path scratch(const std::string& name) {
   return dir;
 }
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string read_text(const fs::path& path) { return akvf::read_text_file(path.string()); }
 
 void write_obj(const fs::path& path, const akvf::TriMesh& mesh) {
   std::ofstream out(path);
