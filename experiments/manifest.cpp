@@ -147,6 +147,16 @@ Manifest parse_manifest(const std::string& text, const std::string& file_name) {
     // e.byte is 1-based, pointing at the first character that did not fit.
     throw InputError(file_name, line_of_offset(text, e.byte == 0 ? 0 : e.byte - 1),
                      std::string("invalid JSON: ") + e.what());
+  } catch (const Json::out_of_range& e) {
+    // A number beyond double's range (found by fuzzing): nlohmann names the
+    // literal but not its place, so the line is that of its first occurrence.
+    const std::string what = e.what();
+    const auto open = what.find('\''), close = what.rfind('\'');
+    const std::string literal = open < close ? what.substr(open + 1, close - open - 1) : "";
+    const std::size_t at = literal.empty() ? std::string::npos : text.find(literal);
+    const std::string problem = "invalid JSON: number " + literal + " is out of range";
+    if (at == std::string::npos) throw InputError(file_name + ": " + problem);
+    throw InputError(file_name, line_of_offset(text, at), problem);
   }
   if (!root.is_object()) c.fail("(top level)", "expected an object with \"meshes\" and \"methods\"");
   for (const auto& [key, value] : root.items())

@@ -31,6 +31,7 @@ class SoftConstrainedObjective final : public Objective {
     return base_.max_feasible_step(x, d);
   }
   int count_inverted(const Eigen::VectorXd& x) const override { return base_.count_inverted(x); }
+  std::string first_bad_element(const Eigen::VectorXd& x) const override { return base_.first_bad_element(x); }
   double lower_bound() const override { return base_.lower_bound(); }
 
   // w sum |x_i - p_i|^2 alone.
@@ -57,6 +58,7 @@ class FixedVerticesObjective final : public Objective {
     return base_.max_feasible_step(x, d);
   }
   int count_inverted(const Eigen::VectorXd& x) const override { return base_.count_inverted(x); }
+  std::string first_bad_element(const Eigen::VectorXd& x) const override { return base_.first_bad_element(x); }
   double lower_bound() const override { return base_.lower_bound(); }
 
   // 1 on free coordinates, 0 on fixed ones.

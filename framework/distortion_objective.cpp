@@ -4,7 +4,9 @@
 #include <tbb/parallel_for.h>
 
 #include <Eigen/LU>
+#include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "framework/flip_free_step.h"
 
@@ -105,6 +107,35 @@ int DistortionObjective<D>::count_inverted(const Eigen::VectorXd& x) const {
   int inverted = 0;
   for (int e = 0; e < elements_.rows(); ++e) inverted += !(edge_matrix(x, e).determinant() > 0);
   return inverted;
+}
+
+template <int D>
+std::string DistortionObjective<D>::first_bad_element(const Eigen::VectorXd& x) const {
+  for (int e = 0; e < elements_.rows(); ++e) {
+    std::ostringstream problem;
+    problem.precision(3);
+    bool finite_corners = true;
+    for (int k = 0; k < kCorners; ++k) finite_corners &= x.segment<D>(D * elements_(e, k)).allFinite();
+    const double det = finite_corners ? edge_matrix(x, e).determinant() : 0;
+    Matrix dD_dJ = Matrix::Zero();
+    const double density = finite_corners && det > 0 ? density_->value_and_gradient(jacobian(x, e), &dD_dJ) : 0;
+    if (!finite_corners)
+      problem << "a corner has a non-finite coordinate";
+    else if (!(det > 0))
+      problem << "inverted or collapsed (det = " << det << ")";
+    else if (!std::isfinite(density))
+      problem << "distortion " << density;
+    else if (!dD_dJ.allFinite())
+      problem << "non-finite distortion gradient";
+    else
+      continue;
+    std::ostringstream message;
+    message << (D == 2 ? "triangle " : "tet ") << e << " (vertices";
+    for (int k = 0; k < kCorners; ++k) message << (k ? ", " : " ") << elements_(e, k);
+    message << "): " << problem.str();
+    return message.str();
+  }
+  return Objective::first_bad_element(x);
 }
 
 template <int D>

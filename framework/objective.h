@@ -2,9 +2,14 @@
 // What the optimizer minimizes: a function of the stacked vertex positions x
 // with a feasibility region (no inverted element) that line searches respect.
 #include <Eigen/Core>
+#include <cmath>
 #include <limits>
+#include <string>
 
 namespace akvf {
+
+// "NaN", "+inf" or "-inf" (std::to_string prints "-nan" for a negated NaN).
+inline std::string non_finite_name(double v) { return std::isnan(v) ? "NaN" : v > 0 ? "+inf" : "-inf"; }
 
 class Objective {
  public:
@@ -22,6 +27,15 @@ class Objective {
   virtual int count_inverted(const Eigen::VectorXd& x) const = 0;
   // The infimum of E, where known (4 for 2D symmetric Dirichlet).
   virtual double lower_bound() const { return -std::numeric_limits<double>::infinity(); }
+  // What is wrong with x, for the message of a numerical failure: the first
+  // bad element and why (non-finite coordinate, inverted, non-finite energy
+  // or gradient), or "" when nothing is. This default names the first
+  // non-finite variable.
+  virtual std::string first_bad_element(const Eigen::VectorXd& x) const {
+    for (Eigen::Index i = 0; i < x.size(); ++i)
+      if (!std::isfinite(x[i])) return "variable " + std::to_string(i) + " is " + non_finite_name(x[i]);
+    return "";
+  }
 };
 
 }  // namespace akvf

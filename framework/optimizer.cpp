@@ -30,6 +30,20 @@ bool extrapolate(const Objective& objective, const Eigen::VectorXd& x, const Eig
   return out->energy <= energy && out->gradient.allFinite();
 }
 
+// "; first bad element: triangle 3 (...): ..." or "" when the objective
+// finds nothing wrong with x.
+std::string bad_element_note(const Objective& objective, const Eigen::VectorXd& x) {
+  const std::string bad = objective.first_bad_element(x);
+  return bad.empty() ? "" : "; first bad element: " + bad;
+}
+
+std::string first_non_finite(const Eigen::VectorXd& v) {
+  Eigen::Index i = 0;
+  while (i < v.size() && std::isfinite(v[i])) ++i;
+  return "entry " + std::to_string(i) + " of " + std::to_string(v.size()) + " is " +
+         (i < v.size() ? non_finite_name(v[i]) : std::string("finite"));
+}
+
 }  // namespace
 
 bool OptimizerOptions::is_valid(std::string* error) const {
@@ -106,8 +120,9 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
   if (!std::isfinite(energy) || !gradient.allFinite()) {
     result.trace.push_back(row);
     return finish(TerminationStatus::kNumericalFailure,
-                  row.flips > 0 ? "the initial map has " + std::to_string(row.flips) + " inverted elements"
-                                : "the initial energy or gradient is not finite");
+                  (row.flips > 0 ? "the initial map has " + std::to_string(row.flips) + " inverted elements"
+                                 : std::string("the initial energy or gradient is not finite")) +
+                      bad_element_note(objective, x));
   }
   if (notify(row)) return finish(TerminationStatus::kUserStopped, "stopped by a callback");
 
@@ -136,6 +151,10 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     const double precond_seconds = std::chrono::duration<double>(Clock::now() - precond_start).count();
 
     const Eigen::VectorXd direction = -preconditioned;
+    if (!direction.allFinite())
+      return finish(TerminationStatus::kNumericalFailure,
+                    "the preconditioner returned a non-finite direction at iteration " + std::to_string(k) + " (" +
+                        first_non_finite(direction) + "); the last finite iterate is kept");
     const LineSearchSummary search = line_search.search(objective, start_x, start_energy, start_gradient, direction);
     if (!search.success)
       return finish(TerminationStatus::kLineSearchFailed,
@@ -158,10 +177,13 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     row.line_search_seconds = search.seconds;
     row.seconds = elapsed();
     if (!std::isfinite(energy) || !gradient.allFinite() || row.flips > 0) {
-      result.trace.push_back(row);
-      return finish(TerminationStatus::kNumericalFailure, "iteration " + std::to_string(k) +
-                                                              " produced a non-finite energy or gradient (" +
-                                                              std::to_string(row.flips) + " inverted elements)");
+      // Never hand back a bad iterate: the result is the last accepted one,
+      // whose row ends the trace.
+      const std::string note = bad_element_note(objective, x);
+      x.swap(previous);
+      return finish(TerminationStatus::kNumericalFailure,
+                    "iteration " + std::to_string(k) + " produced a non-finite energy or gradient or an inverted element (" +
+                        std::to_string(row.flips) + " inverted)" + note + "; the previous iterate is kept");
     }
     if (notify(row)) return finish(TerminationStatus::kUserStopped, "stopped by a callback");
 

@@ -7,6 +7,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libtbb-dev doctest-dev
   libbenchmark-dev libceres-dev libopenblas-dev nlohmann-json3-dev
+  clang libclang-rt-14-dev  # scripts/sanitize.sh: ASan, UBSan and libFuzzer
 )
 missing=()
 for p in "${packages[@]}"; do

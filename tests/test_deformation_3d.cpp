@@ -140,8 +140,11 @@ TEST_CASE("a stretched cube relaxes to symmetric Dirichlet 6 (a rigid motion of 
 TEST_CASE("every 3D energy with every 3D method under soft constraints: no flip, the energy never rises") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(3);
   const akvf::PositionConstraints constraints = twisted_top(mesh, 0.5);
-  for (const auto& [energy, energy_description] : akvf::energies_3d().entries())
-    for (const auto& [method, method_description] : akvf::preconditioners_3d().entries()) {
+  for (const auto& energy_entry : akvf::energies_3d().entries())
+    for (const auto& method_entry : akvf::preconditioners_3d().entries()) {
+      // Named copies: clang 14 cannot capture structured bindings in CAPTURE's lambda.
+      const std::string& energy = energy_entry.first;
+      const std::string& method = method_entry.first;
       CAPTURE(energy);
       CAPTURE(method);
       akvf::DeformConfig config;
@@ -175,7 +178,8 @@ TEST_CASE("AKVF as written in Sec. 6.2 (K + c I alone) also runs without flips, 
 TEST_CASE("hard constraints: the constrained vertices sit at their targets at every iterate") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(3);
   const akvf::PositionConstraints constraints = twisted_top(mesh, 0.15);
-  for (const auto& [method, description] : akvf::preconditioners_3d().entries()) {
+  for (const auto& entry : akvf::preconditioners_3d().entries()) {
+    const std::string& method = entry.first;  // clang 14 cannot capture a structured binding
     CAPTURE(method);
     akvf::DeformConfig config;
     config.preconditioner = method;

@@ -91,6 +91,9 @@ TEST_CASE("manifest errors point at the offending key") {
         "m.json: methods[0]: a deform case needs exactly one of \"preset\" and \"constraints\"");
   CHECK(manifest_error("{\n\"meshes\": [\n,]}").find("line 3 of m.json: invalid JSON") == 0);
   CHECK(manifest_error(R"({"meshes": []})") == "m.json: meshes: expected a non-empty array of meshes");
+  // Found by fuzz_manifest: a number beyond double's range escaped as nlohmann's out_of_range.
+  CHECK(manifest_error("{\"meshes\": [{\"label\": \"A\",\n\"file\": \"a.obj\", \"subdivide\": 4e999}]}") ==
+        "line 2 of m.json: invalid JSON: number 4e999 is out of range");
 }
 
 TEST_CASE("a tiny manifest runs end to end; shards merged give the same results as one run; resume skips") {

@@ -146,7 +146,8 @@ TEST_CASE("every 3D method deforms every shared tet mesh without inverting a tet
     constraints = akvf::read_constraints_file(file, mesh.num_vertices());
     std::filesystem::remove(file);
     REQUIRE(constraints.vertices.size() == targets.size());
-    for (const auto& [method, description] : akvf::preconditioners_3d().entries()) {
+    for (const auto& entry : akvf::preconditioners_3d().entries()) {
+      const std::string& method = entry.first;  // clang 14 cannot capture a structured binding
       CAPTURE(method);
       akvf::DeformConfig config;
       config.preconditioner = method;
