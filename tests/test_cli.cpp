@@ -1,9 +1,11 @@
 // The akvf command line in-process: exit codes, messages, output files.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "experiments/akvf_cli.h"
 #include "experiments/exit_codes.h"
@@ -169,4 +171,54 @@ TEST_CASE("plot draws trace files as SVG lines; a malformed trace names its line
   CHECK(bad.err.find("column seconds: 'x' is not a number") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "bad.svg"));
   fs::remove_all(dir);
+}
+
+TEST_CASE("the same run twice, with 1 and with 2 threads: byte-identical UV OBJ and SVG, identical traces but for the clocks") {
+  const fs::path dir = scratch_dir("determinism");
+  // A 24 x 24 bumpy grid written as OBJ.
+  std::ostringstream obj;
+  obj.precision(17);
+  const int n = 24;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      obj << "v " << i / double(n - 1) << ' ' << j / double(n - 1) << ' ' << 0.2 * std::sin(5.0 * i / n) * std::cos(4.0 * j / n) << '\n';
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i + 1, b = a + 1, c = a + n, d = c + 1;
+      obj << "f " << a << ' ' << b << ' ' << d << "\nf " << a << ' ' << d << ' ' << c << '\n';
+    }
+  write_text(dir / "grid.obj", obj.str());
+  // The trace without its clock columns (seconds, precond_seconds, line_search_seconds).
+  auto trace_without_clocks = [](const std::string& text) {
+    std::istringstream in(text);
+    std::string line, out;
+    while (std::getline(in, line)) {
+      std::vector<std::string> cells;
+      std::istringstream row(line);
+      for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+      REQUIRE(cells.size() >= 10);
+      for (std::size_t k = 0; k < cells.size(); ++k)
+        if (k != 1 && k != 8 && k != 9) out += cells[k] + ',';
+      out += '\n';
+    }
+    return out;
+  };
+  std::vector<std::string> uv, svg, trace;
+  for (const char* threads : {"1", "1", "2", "2"}) {
+    const std::string tag = std::string("t") + threads + "_" + std::to_string(uv.size());
+    const Outcome r = akvf_run({"param", (dir / "grid.obj").string(), "--threads", threads, "--max-iters", "12",
+                                "--out", (dir / (tag + ".obj")).string(), "--svg", (dir / (tag + ".svg")).string(),
+                                "--trace", (dir / (tag + ".csv")).string(), "--quiet"});
+    REQUIRE(r.code == akvf::kExitOk);
+    uv.push_back(read_text(dir / (tag + ".obj")));
+    svg.push_back(read_text(dir / (tag + ".svg")));
+    trace.push_back(trace_without_clocks(read_text(dir / (tag + ".csv"))));
+  }
+  REQUIRE(trace[0].find("precond_seconds") == std::string::npos);  // the clock columns are the ones dropped
+  CHECK(trace[0].find("energy,grad_norm,step,ls_evals,flips,max_step,") != std::string::npos);
+  for (std::size_t r = 1; r < uv.size(); ++r) {
+    CHECK(uv[r] == uv[0]);
+    CHECK(svg[r] == svg[0]);
+    CHECK(trace[r] == trace[0]);
+  }
 }

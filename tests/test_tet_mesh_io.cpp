@@ -63,6 +63,9 @@ TEST_CASE("MEDIT: malformed files name the line and the problem") {
         "line 1 of m.mesh: expected a section keyword (Vertices, Tetrahedra, ...), found '42'");
   CHECK(error_message([] { medit("Vertices\n-1\n"); }) == "line 2 of m.mesh: Vertices count must be >= 0, found -1");
   CHECK(error_message([] { medit("Vertices\n1\n0 0 0 0\nEnd\n"); }) == "m.mesh: no tetrahedra");
+  // Counts are never trusted for allocation: 10^12 rows fail at the end of the file, at once.
+  CHECK(error_message([] { medit("Vertices\n1000000000000\n0 0 0 0\n"); }) ==
+        "line 3 of m.mesh: file ends after 1 of 1000000000000 vertices");
 }
 
 TEST_CASE("OBJ-like tets: `f a b c d`, 1-based; other corner counts are rejected") {
@@ -83,6 +86,8 @@ TEST_CASE(".tet: header counts, then 0-based rows") {
         "line 1 of m.tet: expected '#num of vertex: N', found '#vertices 4'");
   CHECK(error_message([] { tet_file("#num of vertex: 4\n#num of tetrahedra: 1\n0 0 0\n"); }) ==
         "line 3 of m.tet: file ends after 1 of 4 vertices");
+  CHECK(error_message([] { tet_file("#num of vertex: 4\n#num of tetrahedra: 1000000000000\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"); }) ==
+        "line 6 of m.tet: file ends after 0 of 1000000000000 tetrahedra");
   CHECK(error_message([] {
           tet_file("#num of vertex: 4\n#num of tetrahedra: 1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 1 2 4\n");
         }) == "line 7 of m.tet: tet 0 uses vertex 4 (0-based), out of range (4 vertices)");
