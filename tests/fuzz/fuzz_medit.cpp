@@ -1,16 +1,7 @@
-// libFuzzer target: the MEDIT .mesh tet reader, then tet validation of
-// whatever it accepts (the path `akvf deform mesh.mesh` takes).
-#include <sstream>
-
+// libFuzzer target: the MEDIT .mesh tet reader, then tet validation (the path of `akvf deform mesh.mesh`).
 #include "framework/tet_mesh_io.h"
-#include "framework/tet_validation.h"
-#include "tests/fuzz/fuzz_text_input.h"
+#include "tests/fuzz/fuzz_mesh_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return akvf::fuzz::run_on_text(data, size, [](const std::string& text) {
-    std::istringstream in(text);
-    const akvf::TetMesh mesh = akvf::read_medit(in, "fuzz.mesh");
-    akvf::Warnings warnings;
-    akvf::prepare_tet_mesh(mesh, "fuzz.mesh", &warnings);
-  });
+  return akvf::fuzz::fuzz_tet_reader(data, size, akvf::read_medit, "fuzz.mesh");
 }

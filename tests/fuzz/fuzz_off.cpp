@@ -1,15 +1,7 @@
-// libFuzzer target: the OFF triangle-mesh reader, then disk validation of
-// whatever it accepts (the path `akvf param mesh.off` takes).
-#include <sstream>
-
+// libFuzzer target: the OFF triangle-mesh reader, then disk validation (the path of `akvf param mesh.off`).
 #include "framework/mesh_io.h"
-#include "framework/mesh_validation.h"
-#include "tests/fuzz/fuzz_text_input.h"
+#include "tests/fuzz/fuzz_mesh_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return akvf::fuzz::run_on_text(data, size, [](const std::string& text) {
-    std::istringstream in(text);
-    const akvf::TriMesh mesh = akvf::read_off(in, "fuzz.off");
-    akvf::prepare_disk_mesh(mesh, "fuzz.off");
-  });
+  return akvf::fuzz::fuzz_triangle_reader(data, size, akvf::read_off, "fuzz.off");
 }

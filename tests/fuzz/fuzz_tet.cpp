@@ -1,16 +1,7 @@
-// libFuzzer target: the .tet reader (`#num of vertex: N` headers), then tet
-// validation of whatever it accepts.
-#include <sstream>
-
+// libFuzzer target: the .tet reader (`#num of vertex: N` headers), then tet validation.
 #include "framework/tet_mesh_io.h"
-#include "framework/tet_validation.h"
-#include "tests/fuzz/fuzz_text_input.h"
+#include "tests/fuzz/fuzz_mesh_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return akvf::fuzz::run_on_text(data, size, [](const std::string& text) {
-    std::istringstream in(text);
-    const akvf::TetMesh mesh = akvf::read_tet_file(in, "fuzz.tet");
-    akvf::Warnings warnings;
-    akvf::prepare_tet_mesh(mesh, "fuzz.tet", &warnings);
-  });
+  return akvf::fuzz::fuzz_tet_reader(data, size, akvf::read_tet_file, "fuzz.tet");
 }
