@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "framework/error.h"
+#include "solvers/supernodal_solve.h"
 
 namespace akvf {
 
@@ -30,7 +32,7 @@ struct SparseCholesky::Impl {
   std::vector<double> lower_value;
   std::vector<int> value_map;  // nonzero k of the upper input -> its slot in lower_value
   std::vector<double> permuted_rhs;
-  std::vector<double> scratch;  // one supernode's rows below its diagonal block
+  std::unique_ptr<SupernodalSolve> supernodal_solver;  // reset with each analysis
 
   Impl() {
     cholmod_start(&common);
@@ -71,44 +73,14 @@ struct SparseCholesky::Impl {
       throw NumericalError(std::string("CHOLMOD ") + what + " failed (status " + std::to_string(common.status) + ")");
   }
 
-  // z = (L L^T)^-1 z in place, for the supernodal factor. CHOLMOD's own
-  // solve calls BLAS dtrsv/dgemv per supernode, and OpenBLAS takes a lock and
-  // a buffer at each call: with thousands of small supernodes that overhead
-  // is most of the solve. Here the same arithmetic runs through Eigen maps.
-  void solve_supernodal(double* z) {
-    using Block = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
-    const auto* super = static_cast<const int*>(factor->super);
-    const auto* pattern_start = static_cast<const int*>(factor->pi);
-    const auto* value_start = static_cast<const int*>(factor->px);
-    const auto* pattern = static_cast<const int*>(factor->s);
-    const auto* values = static_cast<const double*>(factor->x);
-    const int supernodes = static_cast<int>(factor->nsuper);
-    scratch.resize(factor->maxesize);
-    const auto block = [&](int s, int* first_column, int* columns, int* rows) {
-      *first_column = super[s];
-      *columns = super[s + 1] - super[s];
-      *rows = pattern_start[s + 1] - pattern_start[s];
-      return Block(values + value_start[s], *rows, *columns, Eigen::OuterStride<>(*rows));
-    };
-    int k, nc, nr;
-    for (int s = 0; s < supernodes; ++s) {  // L y = z
-      const Block L = block(s, &k, &nc, &nr);
-      Eigen::Map<Eigen::VectorXd> y(z + k, nc);
-      L.topRows(nc).triangularView<Eigen::Lower>().solveInPlace(y);
-      const int* below = pattern + pattern_start[s] + nc;
-      Eigen::Map<Eigen::VectorXd> update(scratch.data(), nr - nc);
-      update.noalias() = L.bottomRows(nr - nc) * y;
-      for (int i = 0; i < nr - nc; ++i) z[below[i]] -= update[i];
-    }
-    for (int s = supernodes - 1; s >= 0; --s) {  // L^T x = y
-      const Block L = block(s, &k, &nc, &nr);
-      Eigen::Map<Eigen::VectorXd> x(z + k, nc);
-      const int* below = pattern + pattern_start[s] + nc;
-      Eigen::Map<Eigen::VectorXd> known(scratch.data(), nr - nc);
-      for (int i = 0; i < nr - nc; ++i) known[i] = z[below[i]];
-      x.noalias() -= L.bottomRows(nr - nc).transpose() * known;
-      L.topRows(nc).triangularView<Eigen::Lower>().transpose().solveInPlace(x);
-    }
+  // Our supernodal triangular solves (solvers/supernodal_solve.h), set up
+  // for the factor's structure at the first solve after an analysis.
+  SupernodalSolve& supernodal_solve() {
+    if (!supernodal_solver)
+      supernodal_solver = std::make_unique<SupernodalSolve>(SupernodalStructure{
+          static_cast<int>(factor->nsuper), static_cast<const int*>(factor->super),
+          static_cast<const int*>(factor->pi), static_cast<const int*>(factor->px), static_cast<const int*>(factor->s)});
+    return *supernodal_solver;
   }
 
   // The upper-triangular pattern of the graph whose nodes are the blocks of
@@ -194,6 +166,8 @@ double SparseCholesky::factor_nonzeros() const { return impl_->common.lnz; }
 
 double SparseCholesky::factor_flops() const { return impl_->common.fl; }
 
+double SparseCholesky::serial_solve_share() { return supernodal() ? impl_->supernodal_solve().top_share() : 1.0; }
+
 void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block_size) {
   if (!upper.isCompressed() || upper.rows() != upper.cols())
     throw NumericalError("SparseCholesky: matrix must be square and compressed");
@@ -201,6 +175,7 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
     throw NumericalError("SparseCholesky: block size must divide the matrix size");
   Impl& m = *impl_;
   cholmod_free_factor(&m.factor, &m.common);
+  m.supernodal_solver.reset();
   const int n = static_cast<int>(upper.rows());
 
   // 1. CHOLMOD's own choice of fill-reducing ordering (AMD, or METIS when
@@ -257,7 +232,7 @@ void SparseCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd* x) {
   m.permuted_rhs.resize(n);
   for (size_t a = 0; a < n; ++a) m.permuted_rhs[a] = b[m.permutation[a]];  // c = P b
   if (m.factor->is_super) {
-    m.solve_supernodal(m.permuted_rhs.data());
+    m.supernodal_solve().solve(static_cast<const double*>(m.factor->x), m.permuted_rhs.data());
   } else {
     if (!m.rhs) m.rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &m.common);
     std::copy(m.permuted_rhs.begin(), m.permuted_rhs.end(), static_cast<double*>(m.rhs->x));

@@ -37,6 +37,10 @@ class SparseCholesky {
   double factor_nonzeros() const;
   // Floating-point operations of one numeric factorization.
   double factor_flops() const;
+  // Share of the supernodal factor's entries whose triangular solves run on
+  // one core (the top of the elimination tree; the rest is split between two
+  // cores, see solvers/supernodal_solve.h). 1 for a simplicial factor.
+  double serial_solve_share();
 
  private:
   struct Impl;
