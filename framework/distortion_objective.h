@@ -37,8 +37,9 @@ class DistortionObjective final : public Objective {
   double value_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd* gradient) const override;
   double max_feasible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d) const override;
   int count_inverted(const Eigen::VectorXd& x) const override;
-  // "triangle 12 (vertices 4, 5, 9): inverted (det = -3e-05)", in element
-  // order; checks coordinates, orientation, then D and dD/dJ.
+  // The first bad element in element order, e.g. "triangle 12 (vertices 4,
+  // 5, 9): inverted or collapsed (det = -3e-05)"; checks coordinates,
+  // orientation, then D and dD/dJ.
   std::string first_bad_element(const Eigen::VectorXd& x) const override;
   double lower_bound() const override { return density_->lower_bound(); }
 
