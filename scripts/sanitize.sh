@@ -21,7 +21,7 @@ CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 cmake --build "$build" -j "$(nproc)"
 
 # Every report aborts with a stack trace; leaks are reported at exit.
-export ASAN_OPTIONS=abort_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1
+export ASAN_OPTIONS=abort_on_error=1:detect_leaks=1:strict_string_checks=1:check_initialization_order=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 if [ -z "${SKIP_TESTS:-}" ]; then
@@ -41,7 +41,7 @@ if [ -z "${SKIP_FUZZ:-}" ]; then
     "$build/fuzz/fuzz_$name" "$corpus" "$seeds" -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 \
       -malloc_limit_mb=1024 -max_len=16384 -print_final_stats=1 -artifact_prefix="$findings/$name/" \
       > "$findings/$name.log" 2>&1 || { tail -n 60 "$findings/$name.log"; echo "fuzz_$name: FINDING (input in $findings/$name/)"; exit 1; }
-    grep -E "^stat::number_of_executed_runs|^stat::peak_rss_mb" "$findings/$name.log" | tr '\n' ' '
+    grep -E "^Done|^stat::new_units_added|^stat::peak_rss_mb" "$findings/$name.log" | tr -s ' ' | tr '\n' ' '
     echo
   done
 fi
