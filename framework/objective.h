@@ -8,8 +8,15 @@
 
 namespace akvf {
 
-// "NaN", "+inf" or "-inf" (std::to_string prints "-nan" for a negated NaN).
-inline std::string non_finite_name(double v) { return std::isnan(v) ? "NaN" : v > 0 ? "+inf" : "-inf"; }
+// "<what> 7 of 72 is NaN" (or +inf, -inf) for the first non-finite entry of
+// v, or "" when every entry is finite.
+inline std::string first_non_finite_entry(const Eigen::VectorXd& v, const std::string& what) {
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i]))
+      return what + " " + std::to_string(i) + " of " + std::to_string(v.size()) + " is " +
+             (std::isnan(v[i]) ? "NaN" : v[i] > 0 ? "+inf" : "-inf");
+  return "";
+}
 
 class Objective {
  public:
@@ -32,9 +39,7 @@ class Objective {
   // or gradient), or "" when nothing is. This default names the first
   // non-finite variable.
   virtual std::string first_bad_element(const Eigen::VectorXd& x) const {
-    for (Eigen::Index i = 0; i < x.size(); ++i)
-      if (!std::isfinite(x[i])) return "variable " + std::to_string(i) + " is " + non_finite_name(x[i]);
-    return "";
+    return first_non_finite_entry(x, "variable");
   }
 };
 

@@ -37,13 +37,6 @@ std::string bad_element_note(const Objective& objective, const Eigen::VectorXd& 
   return bad.empty() ? "" : "; first bad element: " + bad;
 }
 
-std::string first_non_finite(const Eigen::VectorXd& v) {
-  Eigen::Index i = 0;
-  while (i < v.size() && std::isfinite(v[i])) ++i;
-  return "entry " + std::to_string(i) + " of " + std::to_string(v.size()) + " is " +
-         (i < v.size() ? non_finite_name(v[i]) : std::string("finite"));
-}
-
 }  // namespace
 
 bool OptimizerOptions::is_valid(std::string* error) const {
@@ -154,7 +147,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     if (!direction.allFinite())
       return finish(TerminationStatus::kNumericalFailure,
                     "the preconditioner returned a non-finite direction at iteration " + std::to_string(k) + " (" +
-                        first_non_finite(direction) + "); the last finite iterate is kept");
+                        first_non_finite_entry(direction, "entry") + "); the last finite iterate is kept");
     const LineSearchSummary search = line_search.search(objective, start_x, start_energy, start_gradient, direction);
     if (!search.success)
       return finish(TerminationStatus::kLineSearchFailed,
