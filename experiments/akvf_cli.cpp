@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "experiments/catalog.h"
+#include "experiments/command_line.h"
 #include "experiments/deform_command.h"
 #include "experiments/exit_codes.h"
 #include "experiments/experiment_command.h"
@@ -24,7 +25,8 @@ const char* kUsage =
     "  plot TRACES  SVG line plot of trace CSV files (energy against iterations or seconds)\n"
     "  experiment MANIFEST  run a manifest of cases (shard, resume, merge); tables and plots\n"
     "  list         list energies, preconditioners and line searches\n"
-    "  help         show this help\n"
+    "  help         show this help (also -h, --help)\n"
+    "  --version    print the version\n"
     "\n"
     "`akvf COMMAND --help` describes each command's options.\n";
 
@@ -38,7 +40,15 @@ void print_entries(std::ostream& out, const char* title, const RegistryType& reg
   }
 }
 
-int list_command(std::ostream& out) {
+int list_command(const std::vector<std::string>& args, std::ostream& out) {
+  akvf::CommandLine cl("akvf list\n\nLists the energies, preconditioners, solvers and line searches by name.",
+                       {{"help", "", "show this help"}});
+  cl.parse(args);
+  if (cl.has("help")) {
+    out << cl.help();
+    return akvf::kExitOk;
+  }
+  if (!cl.positional().empty()) throw akvf::OptionsError("list takes no arguments (see --help)");
   print_entries(out, "energies (--energy)", akvf::energies_2d());
   print_entries(out, "preconditioners (--precond)", akvf::preconditioners_2d());
   out << "solvers (--precond):\n  " << akvf::kLbfgsMethod
@@ -58,6 +68,10 @@ int run_akvf(std::vector<std::string> args, std::ostream& out, std::ostream& err
     out << kUsage;
     return args.empty() ? kExitUsageError : kExitOk;
   }
+  if (args[0] == "--version" || args[0] == "version") {
+    out << "akvf " << AKVF_PROJECT_VERSION << '\n';
+    return kExitOk;
+  }
   const std::string command = args[0];
   args.erase(args.begin());
   try {
@@ -66,7 +80,7 @@ int run_akvf(std::vector<std::string> args, std::ostream& out, std::ostream& err
     if (command == "deform") return deform_command(args, out, err);
     if (command == "plot") return plot_command(args, out, err);
     if (command == "experiment") return experiment_command(args, out, err);
-    if (command == "list") return list_command(out);
+    if (command == "list") return list_command(args, out);
     err << "akvf: unknown command '" << command << "'\n\n" << kUsage;
     return kExitUsageError;
   } catch (const InputError& e) {

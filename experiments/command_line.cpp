@@ -1,5 +1,6 @@
 #include "experiments/command_line.h"
 
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -19,7 +20,10 @@ const OptionSpec* CommandLine::find(const std::string& name) const {
 
 void CommandLine::parse(const std::vector<std::string>& args) {
   for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
+    std::string arg = args[i];
+    // The usual one-letter aliases, where the command has the long option.
+    if (arg == "-h" && find("help")) arg = "--help";
+    if (arg == "-q" && find("quiet")) arg = "--quiet";
     if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
       positional_.push_back(arg);
       continue;
@@ -61,10 +65,23 @@ int CommandLine::integer(const std::string& name, int fallback) const {
   const auto it = values_.find(name);
   if (it == values_.end()) return fallback;
   long long value = 0;
-  if (!parse_integer(it->second, &value) || value < std::numeric_limits<int>::min() ||
-      value > std::numeric_limits<int>::max())
-    throw OptionsError("option --" + name + ": '" + it->second + "' is not an integer");
+  double real_value = 0;
+  const bool is_integer = parse_integer(it->second, &value);
+  if (!is_integer && parse_real(it->second, &real_value) && real_value == std::floor(real_value))
+    throw OptionsError("option --" + name + ": " + it->second + " is out of range (at most " +
+                       std::to_string(std::numeric_limits<int>::max()) + ")");
+  if (!is_integer) throw OptionsError("option --" + name + ": '" + it->second + "' is not an integer");
+  if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
+    throw OptionsError("option --" + name + ": " + it->second + " is out of range (" +
+                       std::to_string(std::numeric_limits<int>::min()) + " to " +
+                       std::to_string(std::numeric_limits<int>::max()) + ")");
   return static_cast<int>(value);
+}
+
+int CommandLine::thread_count() const {
+  const int n = integer("threads", 0);
+  if (n < 0) throw OptionsError("option --threads must be >= 0 (0 = all cores), found " + std::to_string(n));
+  return n;
 }
 
 std::string CommandLine::help() const {

@@ -1,7 +1,8 @@
 #pragma once
 // A small command-line parser: `--name value` and `--flag` options plus
-// positional arguments, with generated --help text. Unknown options and bad
-// values throw OptionsError naming the option.
+// positional arguments, with generated --help text. `-h` and `-q` stand for
+// --help and --quiet where a command has them. Unknown options and bad values
+// throw OptionsError naming the option.
 #include <map>
 #include <string>
 #include <vector>
@@ -24,6 +25,8 @@ class CommandLine {
   std::string text(const std::string& name, const std::string& fallback) const;
   double real(const std::string& name, double fallback) const;
   int integer(const std::string& name, int fallback) const;
+  // --threads N: 0 (the default) = all cores; negative is an error.
+  int thread_count() const;
   const std::vector<std::string>& positional() const { return positional_; }
 
   std::string help() const;

@@ -3,6 +3,7 @@
 #include "experiments/command_line.h"
 #include "experiments/deformation.h"
 #include "experiments/exit_codes.h"
+#include "experiments/file_arguments.h"
 #include "experiments/run_reporting.h"
 #include "experiments/slim_cube.h"
 #include "experiments/threads.h"
@@ -41,7 +42,7 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
           {"time-limit", "SECONDS", "stop after this much optimizer time"},
           {"out", "OUT.mesh", "write the deformed mesh (.mesh MEDIT or .vtk VTK legacy)"},
           {"trace", "TRACE.csv", "one CSV row per iteration; flips counts inverted tets"},
-          {"threads", "N", "worker threads for the parallel assembly"},
+          {"threads", "N", "worker threads for the parallel assembly (default 0 = all cores)"},
           {"quiet", "", "no per-iteration progress on stderr"},
           {"help", "", "show this help"},
       });
@@ -75,12 +76,14 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   const std::string out_path = cl.text("out", ""), trace_path = cl.text("trace", "");
   if (!out_path.empty() && lowercase_extension(out_path) != ".mesh" && lowercase_extension(out_path) != ".vtk")
     throw OptionsError("option --out: expected a .mesh or .vtk file name, found '" + out_path + "'");
-  check_output_path(out_path);
-  check_output_path(trace_path);
-  const ThreadLimit threads(cl.integer("threads", 0));
-
   const std::string& path = cl.positional()[0];
-  const TetMesh input = read_tet_mesh(path);
+  check_file_arguments({{"the input mesh", path}, {"--constraints", cl.text("constraints", "")}},
+                       {{"--out", out_path}, {"--trace", trace_path}});
+  const ThreadLimit threads(cl.thread_count());
+
+  Warnings read_warnings;
+  const TetMesh input = read_tet_mesh(path, &read_warnings);
+  for (const auto& warning : read_warnings) err << "warning: " << warning << '\n';
   const PositionConstraints constraints = cl.has("preset")
                                               ? slim_cube_constraints(input)
                                               : read_constraints_file(cl.text("constraints", ""), input.num_vertices());
@@ -88,7 +91,8 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   if (!cl.has("quiet")) callbacks.push_back(progress_printer(err));
   const DeformRun run = run_deformation(input, path, constraints, config, callbacks);
   for (const auto& warning : run.warnings) err << "warning: " << warning << '\n';
-  out << path << ": " << run.mesh.num_vertices() << " vertices, " << run.mesh.num_tets() << " tets, "
+  const TetMesh& mesh = run.prepared.mesh;
+  out << path << ": " << mesh.num_vertices() << " vertices, " << mesh.num_tets() << " tets, "
       << constraints.vertices.size() << " constrained vertices; energy " << config.energy << ", preconditioner "
       << config.preconditioner << '\n'
       << summary_line(run.result);
@@ -96,8 +100,7 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   if (!is_normal_termination(run.result.status)) err << "error: " << run.result.message << '\n';
 
   if (!out_path.empty()) {
-    TetMesh deformed = run.mesh;
-    deformed.V = unstack_rows(run.result.x, 3);
+    const TetMesh deformed = run.prepared.in_input_numbering(unstack_rows(run.result.x, 3), input);
     if (lowercase_extension(out_path) == ".vtk")
       write_vtk(out_path, deformed);
     else

@@ -2,7 +2,6 @@
 
 #include "framework/distortion_objective.h"
 #include "framework/error.h"
-#include "framework/tet_validation.h"
 #include "preconditioners/fixed_vertices_preconditioner.h"
 
 namespace akvf {
@@ -23,9 +22,38 @@ Preconditioner3DSettings with_constraint_diagonal(const DeformConfig& config, co
   return settings;
 }
 
+// The constraints with the vertices renumbered as in the prepared mesh; a
+// constraint on a dropped vertex (in no tet) is left out with a warning.
+PositionConstraints in_mesh_numbering(const PositionConstraints& constraints, const PreparedTetMesh& prepared,
+                                      const std::string& name, Warnings* warnings) {
+  std::vector<int> new_index(prepared.num_input_vertices, -1);
+  for (std::size_t i = 0; i < prepared.input_vertex.size(); ++i)
+    new_index[prepared.input_vertex[i]] = static_cast<int>(i);
+  PositionConstraints out;
+  std::vector<int> kept;
+  int ignored = 0, first_ignored = -1;
+  for (std::size_t c = 0; c < constraints.vertices.size(); ++c) {
+    const int v = constraints.vertices[c];
+    if (v >= 0 && v < prepared.num_input_vertices && new_index[v] >= 0) {
+      out.vertices.push_back(new_index[v]);
+      kept.push_back(static_cast<int>(c));
+    } else if (ignored++ == 0) {
+      first_ignored = v;
+    }
+  }
+  out.targets.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t k = 0; k < kept.size(); ++k) out.targets.row(k) = constraints.targets.row(kept[k]);
+  if (ignored > 0)
+    warnings->push_back(name + ": " + std::to_string(ignored) + " constraints are on vertices in no tet (first: " +
+                        std::to_string(first_ignored) + ", 0-based); they are ignored");
+  if (out.vertices.empty() && !constraints.vertices.empty())
+    throw ValidationError(name + ": every constrained vertex is in no tet; nothing to deform");
+  return out;
+}
+
 }  // namespace
 
-DeformRun run_deformation(const TetMesh& input, const std::string& name, const PositionConstraints& constraints,
+DeformRun run_deformation(const TetMesh& input, const std::string& name, const PositionConstraints& input_constraints,
                           const DeformConfig& config, const std::vector<IterationCallback>& callbacks) {
   std::string invalid;
   if (!config.optimizer.is_valid(&invalid) || !config.line_search_settings.is_valid(&invalid))
@@ -35,10 +63,12 @@ DeformRun run_deformation(const TetMesh& input, const std::string& name, const P
   OptimizerOptions optimizer = config.optimizer;
   optimizer.acceleration_eta = acceleration_eta(config.acceleration, config.preconditioner);
   DeformRun run;
-  run.mesh = prepare_tet_mesh(input, name, &run.warnings);
-  const TetObjective energy(run.mesh.T, rest_tets(run.mesh), density, run.mesh.num_vertices());
+  run.prepared = prepare_tet_mesh(input, name, &run.warnings);
+  const TetMesh& mesh = run.prepared.mesh;
+  const PositionConstraints constraints = in_mesh_numbering(input_constraints, run.prepared, name, &run.warnings);
+  const TetObjective energy(mesh.T, rest_tets(mesh), density, mesh.num_vertices());
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
-  const Eigen::VectorXd rest = stack_rows(run.mesh.V);
+  const Eigen::VectorXd rest = stack_rows(mesh.V);
   if (config.hard_constraints) {
     const FixedVerticesObjective objective(energy, 3, constraints.vertices);
     const Eigen::VectorXd start = place_at_targets(rest, 3, constraints);

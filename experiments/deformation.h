@@ -10,6 +10,7 @@
 #include "framework/constrained_objective.h"
 #include "framework/mesh.h"
 #include "framework/optimizer.h"
+#include "framework/tet_validation.h"
 
 namespace akvf {
 
@@ -36,13 +37,14 @@ struct DeformConfig {
 };
 
 struct DeformRun {
-  TetMesh mesh;  // validated rest mesh (orientation fixed if it was inverted)
+  PreparedTetMesh prepared;  // validated rest mesh (orientation fixed, unreferenced vertices dropped)
   OptimizerResult result;
   std::string preconditioner_report;
   Warnings warnings;
 };
 
-// Throws InputError / ValidationError / OptionsError naming `name`.
+// `constraints` number vertices as `input` does (0-based). Throws InputError /
+// ValidationError / OptionsError naming `name`.
 DeformRun run_deformation(const TetMesh& input, const std::string& name, const PositionConstraints& constraints,
                           const DeformConfig& config, const std::vector<IterationCallback>& callbacks = {});
 

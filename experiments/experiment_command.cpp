@@ -5,6 +5,8 @@
 
 #include "experiments/command_line.h"
 #include "experiments/exit_codes.h"
+#include "experiments/file_arguments.h"
+#include "experiments/run_reporting.h"
 #include "experiments/experiment_report.h"
 #include "experiments/experiment_runner.h"
 #include "experiments/threads.h"
@@ -14,6 +16,14 @@ namespace akvf {
 
 namespace {
 
+const char* kMergeUsage =
+    "akvf experiment merge RESULTS_DIR... [--out-dir DIR]\n\n"
+    "Joins the results folders of the shards of one manifest (they must hold the same manifest.json)\n"
+    "into --out-dir (default: the first folder), then writes the reports of the whole: table.md,\n"
+    "table.csv and plots/*.svg. A case present in two folders must have the same status and iterations.";
+const char* kReportUsage =
+    "akvf experiment report RESULTS_DIR\n\n"
+    "Writes table.md, table.csv and plots/*.svg again from the cases of a results folder.";
 const char* kUsage =
     "akvf experiment MANIFEST.json [--data-dir DIR] [--out-dir DIR] [--shard I/N] [--resume] [--threads N]\n"
     "akvf experiment merge RESULTS_DIR... [--out-dir DIR]\n"
@@ -56,12 +66,18 @@ int experiment_command(const std::vector<std::string>& args, std::ostream& out, 
                              {"help", "", "show this help"},
                          });
   cl.parse(args);
-  if (cl.has("help")) {
+  if (cl.has("help") && cl.positional().empty()) {
     out << cl.help();
     return kExitOk;
   }
   const std::vector<std::string>& positional = cl.positional();
   if (positional.empty()) throw OptionsError("expected a manifest, `merge DIR...` or `report DIR` (see --help)");
+  if (cl.has("help")) {
+    if (positional[0] == "merge") out << "usage: " << kMergeUsage << '\n';
+    else if (positional[0] == "report") out << "usage: " << kReportUsage << '\n';
+    else out << cl.help();
+    return kExitOk;
+  }
   if (positional[0] == "merge") {
     const std::vector<std::string> sources(positional.begin() + 1, positional.end());
     if (sources.empty()) throw OptionsError("merge: expected at least one results folder");
@@ -86,7 +102,14 @@ int experiment_command(const std::vector<std::string>& args, std::ostream& out, 
   for (const ManifestMesh& mesh : manifest.meshes) needs_data |= !mesh.file.empty();
   if (needs_data && !std::filesystem::is_directory(options.data_dir))
     throw OptionsError("meshes folder not found: " + options.data_dir + " (give --data-dir or set AKVF_DATA_DIR)");
-  const ThreadLimit threads(cl.integer("threads", 0));
+  const ThreadLimit threads(cl.thread_count());
+  if (options.shard_index > static_cast<int>(manifest.cases.size())) {
+    err << manifest.name << ": shard " << options.shard_index << "/" << options.shard_count
+        << " is empty: the manifest has " << manifest.cases.size() << " cases; nothing to run\n";
+    return kExitOk;
+  }
+  check_file_arguments({{"the manifest", positional[0]}}, {});
+  create_output_folder(options.out_dir);
   err << manifest.name << ": " << manifest.cases.size() << " cases";
   if (options.shard_count > 1) err << ", shard " << options.shard_index << "/" << options.shard_count;
   err << ", results in " << options.out_dir << '\n';

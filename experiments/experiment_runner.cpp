@@ -12,6 +12,7 @@
 
 #include "experiments/deformation.h"
 #include "experiments/parameterization.h"
+#include "experiments/run_reporting.h"
 #include "experiments/slim_cube.h"
 #include "experiments/text_utilities.h"
 #include "experiments/trace_csv.h"
@@ -148,8 +149,8 @@ CaseResult run_deform_case(const ExperimentCase& c, const std::string& mesh_path
   CaseResult out;
   out.result = run.result;
   out.lower_bound = energies_3d().create(s.energy, {s.exponent})->lower_bound();
-  out.vertices = run.mesh.num_vertices();
-  out.elements = static_cast<int>(run.mesh.T.rows());
+  out.vertices = run.prepared.mesh.num_vertices();
+  out.elements = run.prepared.mesh.num_tets();
   return out;
 }
 
@@ -205,7 +206,7 @@ std::string format_seconds(double seconds) {
 
 // Writes the manifest into out_dir, or checks that the one there is the same.
 void claim_folder(const Manifest& manifest, const std::string& out_dir) {
-  fs::create_directories(join_path(out_dir, "cases"));
+  create_output_folder(join_path(out_dir, "cases"));
   const std::string path = join_path(out_dir, "manifest.json");
   if (fs::exists(path)) {
     if (read_text_file(path) != manifest.source_text)
@@ -243,7 +244,7 @@ RunnerOutcome run_experiment(const Manifest& manifest, const RunnerOptions& opti
       progress << "done earlier, skipped\n";
       continue;
     }
-    fs::create_directories(case_dir);
+    create_output_folder(case_dir);
     const auto case_start = Clock::now();
     const Json summary = run_case(manifest, c, options, case_dir);
     if (summary["status"] == "interrupted") {  // no summary: --resume runs the case again
@@ -297,7 +298,7 @@ void merge_experiments(const std::vector<std::string>& sources, const std::strin
                            " is also in another folder with a different result");
         continue;
       }
-      fs::create_directories(target);
+      create_output_folder(target.string());
       for (const auto& file : fs::directory_iterator(entry.path()))
         fs::copy_file(file.path(), target / file.path().filename(), fs::copy_options::overwrite_existing);
       ++copied;

@@ -7,6 +7,7 @@
 #include "experiments/command_line.h"
 #include "experiments/demo_mesh.h"
 #include "experiments/exit_codes.h"
+#include "experiments/file_arguments.h"
 #include "experiments/parameterization.h"
 #include "experiments/run_reporting.h"
 #include "experiments/threads.h"
@@ -14,6 +15,7 @@
 #include "experiments/uv_svg.h"
 #include "framework/error.h"
 #include "framework/mesh_io.h"
+#include "framework/mesh_text.h"
 
 namespace akvf {
 
@@ -39,7 +41,7 @@ std::vector<OptionSpec> optimization_options() {
       {"grad-tol", "X", "stop when the gradient norm drops below X (default 1e-3)"},
       {"max-iters", "N", "stop after N iterations (default 1000)"},
       {"time-limit", "SECONDS", "stop after this much optimizer time (default none)"},
-      {"threads", "N", "worker threads for the parallel assembly (default: all cores)"},
+      {"threads", "N", "worker threads for the parallel assembly (default 0 = all cores)"},
       {"quiet", "", "no per-iteration progress on stderr"},
       {"help", "", "show this help"},
   };
@@ -68,13 +70,12 @@ ParamConfig config_from(const CommandLine& cl) {
   config.optimizer.max_iterations = cl.integer("max-iters", config.optimizer.max_iterations);
   config.optimizer.time_limit = cl.real("time-limit", config.optimizer.time_limit);
   if (!config.optimizer.is_valid(&invalid)) throw OptionsError(invalid);
-  if (cl.integer("threads", 0) < 0) throw OptionsError("option --threads must be >= 1");
+  cl.thread_count();  // validates --threads
   return config;
 }
 
 int run_and_write(const TriMesh& input, const std::string& name, const ParamConfig& config, const Outputs& outputs,
                   bool quiet, std::ostream& out, std::ostream& err) {
-  for (const auto& path : {outputs.obj, outputs.trace, outputs.svg}) check_output_path(path);
   const ParamSetup setup = prepare_parameterization(input, name, config);
   for (const auto& warning : setup.warnings) err << "warning: " << warning << '\n';
   const TriMesh& mesh = setup.disk.mesh;
@@ -121,11 +122,18 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   }
   if (cl.positional().size() != 1) throw OptionsError("expected exactly one mesh file (see --help)");
   const ParamConfig config = config_from(cl);
-  const ThreadLimit threads(cl.integer("threads", 0));
   const std::string& path = cl.positional()[0];
-  const TriMesh input = read_triangle_mesh(path);
-  return run_and_write(input, path, config, {cl.text("out", ""), cl.text("trace", ""), cl.text("svg", "")},
-                       cl.has("quiet"), out, err);
+  const Outputs outputs{cl.text("out", ""), cl.text("trace", ""), cl.text("svg", "")};
+  if (!outputs.obj.empty() && lowercase_extension(outputs.obj) != ".obj")
+    throw OptionsError("option --out: cannot write '" + outputs.obj + "': the UV map is written as .obj (found '" +
+                       lowercase_extension(outputs.obj) + "')");
+  check_file_arguments({{"the input mesh", path}},
+                       {{"--out", outputs.obj}, {"--trace", outputs.trace}, {"--svg", outputs.svg}});
+  const ThreadLimit threads(cl.thread_count());
+  Warnings warnings;
+  const TriMesh input = read_triangle_mesh(path, &warnings);
+  for (const auto& warning : warnings) err << "warning: " << warning << '\n';
+  return run_and_write(input, path, config, outputs, cl.has("quiet"), out, err);
 }
 
 int demo_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -144,13 +152,13 @@ int demo_command(const std::vector<std::string>& args, std::ostream& out, std::o
   }
   if (!cl.positional().empty()) throw OptionsError("demo takes no mesh file (see --help)");
   const ParamConfig config = config_from(cl);
-  const ThreadLimit threads(cl.integer("threads", 0));
   const std::filesystem::path dir = cl.text("out-dir", "akvf-demo");
-  std::filesystem::create_directories(dir);
-  const int code = run_and_write(
-      bent_bar(), "bent-bar", config,
-      {(dir / "demo_uv.obj").string(), (dir / "demo_trace.csv").string(), (dir / "demo_layout.svg").string()},
-      cl.has("quiet"), out, err);
+  create_output_folder(dir.string());
+  const Outputs outputs{(dir / "demo_uv.obj").string(), (dir / "demo_trace.csv").string(),
+                        (dir / "demo_layout.svg").string()};
+  check_file_arguments({}, {{"the UV OBJ", outputs.obj}, {"the trace", outputs.trace}, {"the layout", outputs.svg}});
+  const ThreadLimit threads(cl.thread_count());
+  const int code = run_and_write(bent_bar(), "bent-bar", config, outputs, cl.has("quiet"), out, err);
   out << "wrote " << (dir / "demo_uv.obj").string() << ", " << (dir / "demo_trace.csv").string() << ", "
       << (dir / "demo_layout.svg").string() << '\n';
   return code;

@@ -2,8 +2,8 @@
 
 #include "experiments/command_line.h"
 #include "experiments/exit_codes.h"
+#include "experiments/file_arguments.h"
 #include "experiments/line_plot.h"
-#include "experiments/run_reporting.h"
 #include "experiments/trace_csv.h"
 #include "framework/error.h"
 #include "framework/output_file.h"
@@ -35,7 +35,10 @@ int plot_command(const std::vector<std::string>& args, std::ostream& out, std::o
   const std::string log_y = cl.text("log-y", "on");
   if (log_y != "on" && log_y != "off") throw OptionsError("option --log-y: expected on or off, found '" + log_y + "'");
   const double minus = cl.real("minus", 0);
-  check_output_path(out_path);
+  std::vector<FileArgument> inputs;
+  for (const std::string& argument : cl.positional())
+    inputs.push_back({"the trace", argument.substr(0, argument.find('='))});
+  check_file_arguments(inputs, {{"--out", out_path}});
 
   std::vector<PlotSeries> series;
   for (const std::string& argument : cl.positional()) {

@@ -8,11 +8,12 @@
 
 namespace akvf {
 
-void check_output_path(const std::string& path) {
-  if (path.empty()) return;
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty() && !std::filesystem::is_directory(parent))
-    throw OutputError("cannot write " + path + ": directory " + parent.string() + " does not exist");
+void create_output_folder(const std::string& folder) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw OutputError("cannot create the output folder " + folder + ": " + error.message());
+  if (!std::filesystem::is_directory(folder))
+    throw OutputError("cannot use " + folder + " as the output folder: it is not a folder");
 }
 
 IterationCallback progress_printer(std::ostream& err) {

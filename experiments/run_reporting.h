@@ -1,5 +1,5 @@
 #pragma once
-// Pieces the command-line programs share: output-path checks, per-iteration
+// Pieces the command-line programs share: the output folder, per-iteration
 // progress lines and the closing summary line.
 #include <ostream>
 #include <string>
@@ -8,8 +8,9 @@
 
 namespace akvf {
 
-// OutputError if the folder of `path` does not exist ("" is no output).
-void check_output_path(const std::string& path);
+// Creates `folder` and its parents if needed; OutputError naming it if that
+// fails or it is not a folder.
+void create_output_folder(const std::string& folder);
 
 // Prints one progress line per iteration on `err`.
 IterationCallback progress_printer(std::ostream& err);

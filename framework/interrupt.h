@@ -3,7 +3,8 @@
 // flag that the optimizer loops check once per iteration, so a run ends with
 // the status "interrupted", its best iterate and a complete trace, and the
 // commands write their outputs as usual (through temporary names). A second
-// signal is not caught: it ends the process at once.
+// signal ends the process at once, after deleting the temporary files of the
+// outputs being written (output_file.h).
 namespace akvf {
 
 // Installs the handler for SIGINT and SIGTERM (idempotent).

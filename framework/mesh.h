@@ -12,6 +12,9 @@ namespace akvf {
 struct TriMesh {
   Eigen::MatrixXd V;
   Eigen::MatrixXi F;
+  // How the source numbers vertices and faces in messages: 1 for OBJ (and
+  // MEDIT), 0 for OFF, .tet and arrays. Indices here are always 0-based.
+  int index_base = 0;
 
   int num_vertices() const { return static_cast<int>(V.rows()); }
   int num_faces() const { return static_cast<int>(F.rows()); }
@@ -24,10 +27,19 @@ struct TriMesh {
 struct TetMesh {
   Eigen::MatrixXd V;
   Eigen::MatrixXi T;
+  int index_base = 0;  // as TriMesh::index_base
 
   int num_vertices() const { return static_cast<int>(V.rows()); }
   int num_tets() const { return static_cast<int>(T.rows()); }
 };
+
+// Element or vertex i (0-based) as the source numbers it, and the note that
+// says so once per message: "vertex 359 ... (numbered from 1, as in the file)"
+// for OBJ and MEDIT, "(numbered from 0)" for OFF, .tet and arrays.
+inline std::string file_number(long long i, int index_base) { return std::to_string(i + index_base); }
+inline std::string numbering_note(int index_base) {
+  return index_base == 0 ? " (numbered from 0)" : " (numbered from " + std::to_string(index_base) + ", as in the file)";
+}
 
 // Non-fatal findings of readers and validation, for the program to print.
 using Warnings = std::vector<std::string>;

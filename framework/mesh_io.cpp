@@ -13,10 +13,10 @@
 
 namespace akvf {
 
-
-TriMesh read_obj(std::istream& in, const std::string& file_name) {
-  const RawElements raw = read_obj_elements(in, file_name, 3, "face", "only triangles are supported (triangulate the mesh first)");
-  return {rows_to_matrix<double, 3>(raw.coords), rows_to_matrix<int, 3>(raw.corners)};
+TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings) {
+  const RawElements raw = read_obj_elements(in, file_name, 3, "face",
+                                            "only triangles are supported (triangulate the mesh first)", warnings);
+  return {rows_to_matrix<double, 3>(raw.coords), rows_to_matrix<int, 3>(raw.corners), 1};
 }
 
 TriMesh read_off(std::istream& in, const std::string& file_name) {
@@ -63,15 +63,19 @@ TriMesh read_off(std::istream& in, const std::string& file_name) {
       corners.push_back(static_cast<int>(index));
     }
   }
-  return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 3>(corners)};
+  // The header's count must match the file in both directions.
+  if (reader.next_line())
+    reader.fail("more faces than the header's face count " + std::to_string(nf) +
+                " (or stray text after the last face); fix the count on the header line");
+  return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 3>(corners), 0};
 }
 
-TriMesh read_triangle_mesh(const std::string& path) {
+TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings) {
   const std::string ext = lowercase_extension(path);
   if (ext != ".obj" && ext != ".off")
     throw InputError(path, 0, "unsupported mesh format '" + ext + "' (expected .obj or .off)");
   std::ifstream in = open_mesh_file(path);
-  return ext == ".obj" ? read_obj(in, path) : read_off(in, path);
+  return ext == ".obj" ? read_obj(in, path, warnings) : read_off(in, path);
 }
 
 void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV) {

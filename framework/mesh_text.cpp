@@ -4,6 +4,8 @@
 #include <cerrno>
 #include <cstring>
 #include <limits>
+#include <map>
+#include <set>
 
 #include "framework/error.h"
 #include "framework/text_reader.h"
@@ -33,15 +35,24 @@ long long obj_corner_index(const TextReader& reader, std::string_view token, lon
 }  // namespace
 
 RawElements read_obj_elements(std::istream& in, const std::string& file_name, int corners, const std::string& element,
-                              const std::string& advice) {
+                              const std::string& advice, Warnings* warnings) {
+  // Statements of the OBJ format that carry nothing a distortion energy uses.
+  static const std::set<std::string, std::less<>> kIgnored = {"vt", "vn", "vp", "g",  "o",
+                                                              "s",  "usemtl", "mtllib", "l", "p"};
   TextReader reader(in, file_name);
   RawElements raw;
   std::vector<long> element_lines;
+  std::map<std::string, std::pair<long, long>> unknown;  // statement -> (first line, count)
   while (reader.next_line()) {
     const auto& t = reader.tokens();
     if (t[0] == "v") {
+      // x y z, an optional weight w, or the common x y z r g b colour extension.
       if (t.size() < 4) reader.fail("vertex needs three coordinates, found " + std::to_string(t.size() - 1));
+      if (t.size() != 4 && t.size() != 5 && t.size() != 7)
+        reader.fail("vertex has " + std::to_string(t.size() - 1) +
+                    " numbers; expected x y z, x y z w, or x y z r g b (extra tokens after the coordinates)");
       for (std::size_t i = 1; i <= 3; ++i) raw.coords.push_back(reader.real(i, "vertex coordinate"));
+      for (std::size_t i = 4; i < t.size(); ++i) reader.real(i, t.size() == 5 ? "vertex weight w" : "vertex colour");
     } else if (t[0] == "f") {
       if (static_cast<int>(t.size()) != corners + 1)
         reader.fail(element + " has " + std::to_string(t.size() - 1) + " corners; " + advice);
@@ -53,9 +64,16 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
         raw.corners.push_back(static_cast<int>(index));
       }
       element_lines.push_back(reader.line_number());
+    } else if (!kIgnored.count(t[0])) {
+      auto [it, inserted] = unknown.try_emplace(std::string(t[0]), reader.line_number(), 0);
+      ++it->second.second;
     }
-    // vt, vn, vp, g, o, s, l, usemtl, mtllib and unknown records carry nothing we use.
   }
+  if (warnings)
+    for (const auto& [statement, where] : unknown)
+      warnings->push_back("line " + std::to_string(where.first) + " of " + file_name + ": unknown OBJ statement '" +
+                          statement + "' ignored (" + std::to_string(where.second) + " line" +
+                          (where.second == 1 ? "" : "s") + ")");
   const long long nv = static_cast<long long>(raw.coords.size() / 3);
   for (std::size_t e = 0; e < element_lines.size(); ++e)
     for (int k = 0; k < corners; ++k)

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "framework/mesh.h"
+
 namespace akvf {
 
 // Upper bound on what a header count may make a reader reserve before the
@@ -19,11 +21,14 @@ struct RawElements {
 };
 
 // The OBJ `v` / `f` records with exactly `corners` indices per `f`
-// (`a`, `a/b`, `a//c`, `a/b/c`, negative = relative); other records are
-// ignored. `element` names the elements in messages ("face", "tet");
-// `advice` follows a wrong corner count.
+// (`a`, `a/b`, `a//c`, `a/b/c`, negative = relative). A `v` has x y z, an
+// optional weight w, or x y z r g b (colour); other counts are refused. The
+// other statements OBJ allows (vt vn vp g o s usemtl mtllib l p) are skipped;
+// any other statement is skipped with one warning per kind. `element` names
+// the elements in messages ("face", "tet"); `advice` follows a wrong corner
+// count.
 RawElements read_obj_elements(std::istream& in, const std::string& file_name, int corners, const std::string& element,
-                              const std::string& advice);
+                              const std::string& advice, Warnings* warnings);
 
 // Row-major rows to an Eigen matrix with `Cols` columns.
 template <class Scalar, int Cols>

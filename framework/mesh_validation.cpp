@@ -11,18 +11,20 @@ namespace akvf {
 namespace {
 
 void check_finite_and_indices(const TriMesh& m, const std::string& name) {
+  const int b = m.index_base;
   for (int v = 0; v < m.num_vertices(); ++v)
     if (!m.V.row(v).allFinite())
-      throw ValidationError(name + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
+      throw ValidationError(name + ": vertex " + file_number(v, b) + " has a non-finite coordinate" +
+                            numbering_note(b));
   for (int f = 0; f < m.num_faces(); ++f) {
     for (int k = 0; k < 3; ++k)
       if (m.F(f, k) < 0 || m.F(f, k) >= m.num_vertices())
-        throw ValidationError(name + ": face " + std::to_string(f) + " has vertex index " + std::to_string(m.F(f, k)) +
-                              " out of range (" + std::to_string(m.num_vertices()) + " vertices)");
+        throw ValidationError(name + ": face " + file_number(f, b) + " has vertex index " + file_number(m.F(f, k), b) +
+                              " out of range (" + std::to_string(m.num_vertices()) + " vertices)" + numbering_note(b));
     if (m.F(f, 0) == m.F(f, 1) || m.F(f, 1) == m.F(f, 2) || m.F(f, 0) == m.F(f, 2))
-      throw ValidationError(name + ": face " + std::to_string(f) + " uses the same vertex twice (" +
-                            std::to_string(m.F(f, 0)) + ", " + std::to_string(m.F(f, 1)) + ", " +
-                            std::to_string(m.F(f, 2)) + ")");
+      throw ValidationError(name + ": face " + file_number(f, b) + " uses the same vertex twice (" +
+                            file_number(m.F(f, 0), b) + ", " + file_number(m.F(f, 1), b) + ", " +
+                            file_number(m.F(f, 2), b) + ")" + numbering_note(b));
   }
 }
 
@@ -44,13 +46,17 @@ DiskMesh compact(const TriMesh& input, const std::string& name) {
   out.mesh.V.resize(static_cast<Eigen::Index>(out.input_vertex.size()), 3);
   for (std::size_t i = 0; i < out.input_vertex.size(); ++i) out.mesh.V.row(i) = input.V.row(out.input_vertex[i]);
   out.mesh.F = input.F.unaryExpr([&](int v) { return new_index[v]; });
+  out.mesh.index_base = input.index_base;
   if (dropped > 0)
     out.warnings.push_back(name + ": dropped " + std::to_string(dropped) + " unreferenced vertices (first: " +
-                           std::to_string(first_dropped) + "); they get UV (0, 0) in the output");
+                           file_number(first_dropped, input.index_base) + numbering_note(input.index_base) +
+                           "); they get UV (0, 0) in the output");
   return out;
 }
 
-void check_face_areas(const TriMesh& m, const std::string& name) {
+void check_face_areas(const TriMesh& m, const std::string& name, const std::vector<int>& input_vertex) {
+  const int base = m.index_base;
+  auto at_input = [&](int v) { return file_number(input_vertex[v], base); };
   const double diagonal = (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm();
   // A face is degenerate when its area is zero to working precision relative
   // to the mesh's size: slivers are allowed, collapsed faces are not.
@@ -59,9 +65,9 @@ void check_face_areas(const TriMesh& m, const std::string& name) {
     const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
     const double area = 0.5 * (b - a).cross(c - a).norm();
     if (!(area > tolerance))
-      throw ValidationError(name + ": face " + std::to_string(f) + " (vertices " + std::to_string(m.F(f, 0)) + ", " +
-                            std::to_string(m.F(f, 1)) + ", " + std::to_string(m.F(f, 2)) +
-                            ") has zero area; remove degenerate faces first");
+      throw ValidationError(name + ": face " + file_number(f, base) + " (vertices " + at_input(m.F(f, 0)) + ", " +
+                            at_input(m.F(f, 1)) + ", " + at_input(m.F(f, 2)) + ") has zero area" +
+                            numbering_note(base) + "; remove degenerate faces first");
   }
 }
 
@@ -72,19 +78,21 @@ DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name) {
   check_finite_and_indices(input, name);
   DiskMesh out = compact(input, name);
   const TriMesh& m = out.mesh;
-  auto at_input = [&](int v) { return std::to_string(out.input_vertex[v]); };
-  check_face_areas(m, name);
+  const int b = m.index_base;
+  auto at_input = [&](int v) { return file_number(out.input_vertex[v], b); };
+  check_face_areas(m, name, out.input_vertex);
 
   const EdgeTopology topology = edge_topology(m.F);
   if (!topology.overused_edge.empty())
     throw ValidationError(name + ": edge (" + at_input(topology.overused_edge[0]) + ", " +
                           at_input(topology.overused_edge[1]) + ") is shared by " +
-                          std::to_string(topology.overused_edge[2]) + " faces; the mesh must be edge-manifold");
+                          std::to_string(topology.overused_edge[2]) + " faces" + numbering_note(b) +
+                          "; the mesh must be edge-manifold");
   if (!topology.misoriented_edge.empty())
-    throw ValidationError(name + ": faces " + std::to_string(topology.misoriented_edge[2]) + " and " +
-                          std::to_string(topology.misoriented_edge[3]) + " traverse edge (" +
+    throw ValidationError(name + ": faces " + file_number(topology.misoriented_edge[2], b) + " and " +
+                          file_number(topology.misoriented_edge[3], b) + " traverse edge (" +
                           at_input(topology.misoriented_edge[0]) + ", " + at_input(topology.misoriented_edge[1]) +
-                          ") in the same direction; faces must be consistently oriented");
+                          ") in the same direction" + numbering_note(b) + "; faces must be consistently oriented");
 
   const int components = count_components(m.F, m.num_vertices());
   if (components != 1)
@@ -93,9 +101,9 @@ DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name) {
 
   // A vertex where two boundary fans meet starts two boundary half-edges.
   std::vector<char> starts_boundary(m.num_vertices(), 0);
-  for (const auto& [a, b] : topology.boundary_half_edges)
-    if (starts_boundary[a]++)
-      throw ValidationError(name + ": vertex " + at_input(a) +
+  for (const auto& [from, to] : topology.boundary_half_edges)
+    if (starts_boundary[from]++)
+      throw ValidationError(name + ": vertex " + at_input(from) + numbering_note(b) +
                             " is non-manifold: two separate boundary fans meet there");
   const std::vector<std::vector<int>> loops = boundary_loops(topology, m.num_vertices());
   if (loops.empty())

@@ -47,7 +47,7 @@ long long read_count(TextReader& reader, const std::string& section) {
 }
 
 TetMesh checked_mesh(const std::string& file_name, const std::vector<double>& coords, const std::vector<int>& corners,
-                     const std::vector<long>& tet_lines) {
+                     const std::vector<long>& tet_lines, int index_base) {
   const long long nv = static_cast<long long>(coords.size() / 3);
   if (nv == 0) throw InputError(file_name, 0, "no vertices");
   if (corners.empty()) throw InputError(file_name, 0, "no tetrahedra");
@@ -55,9 +55,10 @@ TetMesh checked_mesh(const std::string& file_name, const std::vector<double>& co
     for (int k = 0; k < 4; ++k)
       if (corners[4 * t + k] >= nv)
         throw InputError(file_name, tet_lines[t],
-                         "tet " + std::to_string(t) + " uses vertex " + std::to_string(corners[4 * t + k]) +
-                             " (0-based), out of range (" + std::to_string(nv) + " vertices)");
-  return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 4>(corners)};
+                         "tet " + file_number(t, index_base) + " uses vertex " +
+                             file_number(corners[4 * t + k], index_base) + ", out of range (" + std::to_string(nv) +
+                             " vertices)" + numbering_note(index_base));
+  return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 4>(corners), index_base};
 }
 
 }  // namespace
@@ -93,16 +94,18 @@ TetMesh read_medit(std::istream& in, const std::string& file_name) {
           reader.fail("file ends after " + std::to_string(i) + " of " + std::to_string(count) + " " + key);
     }
   }
-  return checked_mesh(file_name, coords, corners, tet_lines);
+  return checked_mesh(file_name, coords, corners, tet_lines, 1);
 }
 
-TetMesh read_tet_obj(std::istream& in, const std::string& file_name) {
-  const RawElements raw = read_obj_elements(in, file_name, 4, "tet", "expected 4 (one tetrahedron per `f` line)");
-  return {rows_to_matrix<double, 3>(raw.coords), rows_to_matrix<int, 4>(raw.corners)};
+TetMesh read_tet_obj(std::istream& in, const std::string& file_name, Warnings* warnings) {
+  const RawElements raw =
+      read_obj_elements(in, file_name, 4, "tet", "expected 4 (one tetrahedron per `f` line)", warnings);
+  return {rows_to_matrix<double, 3>(raw.coords), rows_to_matrix<int, 4>(raw.corners), 1};
 }
 
 TetMesh read_tet_file(std::istream& in, const std::string& file_name) {
   // Two header lines the tokenizer would drop as comments.
+  skip_utf8_bom(in);
   long long counts[2] = {0, 0};
   const char* keys[2] = {"#num of vertex:", "#num of tetrahedra:"};
   std::string line;
@@ -123,16 +126,16 @@ TetMesh read_tet_file(std::istream& in, const std::string& file_name) {
   read_rows(reader, counts[0], "vertices", true, 0, &coords, nullptr);
   std::vector<long> tet_lines;
   read_rows(reader, counts[1], "tetrahedra", false, 0, nullptr, &corners, &tet_lines);
-  return checked_mesh(file_name, coords, corners, tet_lines);
+  return checked_mesh(file_name, coords, corners, tet_lines, 0);
 }
 
-TetMesh read_tet_mesh(const std::string& path) {
+TetMesh read_tet_mesh(const std::string& path, Warnings* warnings) {
   const std::string ext = lowercase_extension(path);
   if (ext != ".mesh" && ext != ".obj" && ext != ".tet")
     throw InputError(path, 0, "unsupported tet mesh format '" + ext + "' (expected .mesh, .obj or .tet)");
   std::ifstream in = open_mesh_file(path);
   if (ext == ".mesh") return read_medit(in, path);
-  if (ext == ".obj") return read_tet_obj(in, path);
+  if (ext == ".obj") return read_tet_obj(in, path, warnings);
   return read_tet_file(in, path);
 }
 

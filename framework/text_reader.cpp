@@ -8,7 +8,21 @@
 namespace akvf {
 
 TextReader::TextReader(std::istream& in, std::string file_name, long lines_already_read)
-    : in_(in), file_name_(std::move(file_name)), line_number_(lines_already_read) {}
+    : in_(in), file_name_(std::move(file_name)), line_number_(lines_already_read) {
+  if (lines_already_read == 0) skip_utf8_bom(in_);
+}
+
+void skip_utf8_bom(std::istream& in) {
+  static constexpr unsigned char kBom[3] = {0xEF, 0xBB, 0xBF};
+  for (int i = 0; i < 3; ++i) {
+    if (in.peek() != kBom[i]) {
+      // Not a mark: put back what was taken (at most two bytes).
+      for (int k = 0; k < i; ++k) in.unget();
+      return;
+    }
+    in.get();
+  }
+}
 
 bool TextReader::next_line() {
   while (std::getline(in_, line_)) {

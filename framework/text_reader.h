@@ -11,7 +11,8 @@ namespace akvf {
 
 class TextReader {
  public:
-  // lines_already_read: lines of `in` consumed before, for the line numbers.
+  // lines_already_read: lines of `in` consumed before, for the line numbers;
+  // when 0, a leading UTF-8 byte-order mark is skipped.
   TextReader(std::istream& in, std::string file_name, long lines_already_read = 0);
 
   // Advances to the next line that has at least one token. Returns false at
@@ -36,6 +37,10 @@ class TextReader {
   std::vector<std::string_view> tokens_;
   long line_number_ = 0;
 };
+
+// Consumes a UTF-8 byte-order mark at the current position of `in`, if there
+// is one (editors on Windows write it; it is not part of the first token).
+void skip_utf8_bom(std::istream& in);
 
 // Parses a whole token as a finite double / integer; returns false otherwise.
 bool parse_real(std::string_view token, double* value);

@@ -99,7 +99,7 @@ TEST_CASE("a missing output directory is reported before any work") {
   const Outcome r = akvf_run({"param", (dir / "tri.obj").string(), "--quiet", "--out", out.string()});
   CHECK(r.code == akvf::kExitOutputError);
   CHECK(r.err ==
-        "error: cannot write " + out.string() + ": directory " + (dir / "no-such-dir").string() + " does not exist\n");
+        "error: cannot write " + out.string() + ": folder " + (dir / "no-such-dir").string() + " does not exist\n");
   CHECK(r.out.empty());
   fs::remove_all(dir);
 }

@@ -54,7 +54,7 @@ TEST_CASE("MEDIT: malformed files name the line and the problem") {
   CHECK(error_message([] { medit("Vertices\n1\n0 x 0 0\n"); }) ==
         "line 3 of m.mesh: vertex coordinate 'x' is not a finite number");
   CHECK(error_message([] { medit("Vertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n1 2 3 9 0\n"); }) ==
-        "line 9 of m.mesh: tet 0 uses vertex 8 (0-based), out of range (4 vertices)");
+        "line 9 of m.mesh: tet 1 uses vertex 9, out of range (4 vertices) (numbered from 1, as in the file)");
   CHECK(error_message([] { medit("Vertices\n1\n0 0 0 0\nTetrahedra\n1\n1 2 3\n"); }) ==
         "line 6 of m.mesh: tetrahedra row has 3 numbers, expected 4");
   CHECK(error_message([] { medit("Vertices\n1\n0 0 0 0\nTetrahedra\n1\n0 1 1 1 0\n"); }) ==
@@ -90,7 +90,7 @@ TEST_CASE(".tet: header counts, then 0-based rows") {
         "line 6 of m.tet: file ends after 0 of 1000000000000 tetrahedra");
   CHECK(error_message([] {
           tet_file("#num of vertex: 4\n#num of tetrahedra: 1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 1 2 4\n");
-        }) == "line 7 of m.tet: tet 0 uses vertex 4 (0-based), out of range (4 vertices)");
+        }) == "line 7 of m.tet: tet 0 uses vertex 4, out of range (4 vertices) (numbered from 0)");
 }
 
 TEST_CASE("unknown tet formats and missing files are reported") {
@@ -120,13 +120,13 @@ TEST_CASE("writers round-trip through MEDIT and write a VTK unstructured grid") 
 
 TEST_CASE("tet validation: orientation, degeneracy, components, indices") {
   akvf::Warnings warnings;
-  const TetMesh ok = akvf::prepare_tet_mesh(two_tets(), "m", &warnings);
+  const TetMesh ok = akvf::prepare_tet_mesh(two_tets(), "m", &warnings).mesh;
   CHECK(warnings.empty());
   CHECK(akvf::signed_tet_volume(ok, 0) > 0);
 
   TetMesh inverted = two_tets();
   inverted.T.col(0).swap(inverted.T.col(1));
-  const TetMesh fixed = akvf::prepare_tet_mesh(inverted, "m", &warnings);
+  const TetMesh fixed = akvf::prepare_tet_mesh(inverted, "m", &warnings).mesh;
   REQUIRE(warnings.size() == 1);
   CHECK(warnings[0] == "m: every tet was negatively oriented; flipped them all");
   CHECK(akvf::signed_tet_volume(fixed, 0) > 0);
@@ -135,17 +135,18 @@ TEST_CASE("tet validation: orientation, degeneracy, components, indices") {
   TetMesh mixed = two_tets();
   mixed.T.row(1) = Eigen::RowVector4i(2, 1, 3, 4);
   CHECK(validation_error(mixed) ==
-        "m: inconsistent orientation: tet 0 is positively oriented but tet 1 negatively; every tet must have the same "
+        "m: inconsistent orientation: tet 1 is positively oriented but tet 2 negatively (numbered from 1, as in the file); "
+        "every tet must have the same "
         "orientation");
 
   TetMesh flat = two_tets();
   flat.V.row(4) << 0.5, 0.5, 0;  // in the plane of vertices 1, 2 and ... make tet 1 flat
   flat.V.row(3) << 0.25, 0.25, 0;
-  CHECK(validation_error(flat).find("m: tet 0 is degenerate (volume ") == 0);
+  CHECK(validation_error(flat).find("m: tet 1 is degenerate (volume ") == 0);
 
   TetMesh repeated = two_tets();
   repeated.T(1, 3) = 1;
-  CHECK(validation_error(repeated) == "m: tet 1 uses vertex 1 twice");
+  CHECK(validation_error(repeated) == "m: tet 2 uses vertex 2 twice (numbered from 1, as in the file)");
 
   TetMesh apart = two_tets();
   apart.V.conservativeResize(9, 3);
@@ -168,7 +169,7 @@ TEST_CASE("the shared tet meshes read and validate with their documented sizes")
     CHECK(mesh.num_vertices() == e.vertices);
     CHECK(mesh.num_tets() == e.tets);
     akvf::Warnings warnings;
-    const TetMesh valid = akvf::prepare_tet_mesh(mesh, e.file, &warnings);
+    const TetMesh valid = akvf::prepare_tet_mesh(mesh, e.file, &warnings).mesh;
     for (int t = 0; t < valid.num_tets(); ++t) REQUIRE(akvf::signed_tet_volume(valid, t) > 0);
   }
 }
