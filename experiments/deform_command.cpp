@@ -74,8 +74,7 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   config.optimizer.gradient_tolerance = cl.real("grad-tol", config.optimizer.gradient_tolerance);
   config.optimizer.time_limit = cl.real("time-limit", config.optimizer.time_limit);
   const std::string out_path = cl.text("out", ""), trace_path = cl.text("trace", "");
-  if (!out_path.empty() && lowercase_extension(out_path) != ".mesh" && lowercase_extension(out_path) != ".vtk")
-    throw OptionsError("option --out: expected a .mesh or .vtk file name, found '" + out_path + "'");
+  require_extension("--out", out_path, {".mesh", ".vtk"});
   const std::string& path = cl.positional()[0];
   check_file_arguments({{"the input mesh", path}, {"--constraints", cl.text("constraints", "")}},
                        {{"--out", out_path}, {"--trace", trace_path}});

@@ -66,7 +66,8 @@ DeformRun run_deformation(const TetMesh& input, const std::string& name, const P
   run.prepared = prepare_tet_mesh(input, name, &run.warnings);
   const TetMesh& mesh = run.prepared.mesh;
   const PositionConstraints constraints = in_mesh_numbering(input_constraints, run.prepared, name, &run.warnings);
-  const TetObjective energy(mesh.T, rest_tets(mesh), density, mesh.num_vertices());
+  TetObjective energy(mesh.T, rest_tets(mesh), density, mesh.num_vertices());
+  energy.set_file_numbering(run.prepared.input_vertex, input.index_base);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
   const Eigen::VectorXd rest = stack_rows(mesh.V);
   if (config.hard_constraints) {

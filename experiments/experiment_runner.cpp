@@ -135,12 +135,31 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
   return out;
 }
 
-CaseResult run_deform_case(const ExperimentCase& c, const std::string& mesh_path, const std::string& data_dir) {
+// data_dir/relative, refused (InputError naming the manifest's key) when
+// links lead it out of the data folder and the manifest does not allow it.
+std::string data_path(const Manifest& manifest, const std::string& data_dir, const std::string& relative,
+                      const std::string& key) {
+  const std::string path = join_path(data_dir, relative);
+  if (manifest.allow_outside_data_dir) return path;
+  std::error_code error;
+  const fs::path folder = fs::weakly_canonical(fs::absolute(data_dir), error);
+  const fs::path resolved = fs::weakly_canonical(fs::absolute(path), error);
+  const fs::path inside = resolved.lexically_relative(folder);
+  if (error || inside.empty() || *inside.begin() == "..")
+    throw InputError(key + ": " + path + " resolves to " + resolved.string() + ", outside the data folder " +
+                     folder.string() + " (set \"allow_outside_data_dir\": true in the manifest to allow it)");
+  return path;
+}
+
+CaseResult run_deform_case(const ExperimentCase& c, const std::string& mesh_path, const Manifest& manifest,
+                           const std::string& data_dir) {
   const CaseSettings& s = c.settings;
   const TetMesh mesh = read_tet_mesh(mesh_path);
   const PositionConstraints constraints =
-      s.preset.empty() ? read_constraints_file(join_path(data_dir, s.constraints), mesh.num_vertices())
-                       : slim_cube_constraints(mesh);
+      s.preset.empty()
+          ? read_constraints_file(data_path(manifest, data_dir, s.constraints, "constraints of " + c.id),
+                                  mesh.num_vertices())
+          : slim_cube_constraints(mesh);
   DeformConfig config;
   apply_common_settings(s, &config);
   config.weight = s.weight;
@@ -170,10 +189,10 @@ Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOpt
     return summary;
   }
   try {
-    const std::string path = join_path(options.data_dir, mesh.file);
+    const std::string path = data_path(manifest, options.data_dir, mesh.file, "meshes[" + std::to_string(c.mesh_index) + "].file");
     reset_peak_memory();
     const CaseResult r = c.settings.problem == "param" ? run_param_case(c, mesh, path, case_dir)
-                                                       : run_deform_case(c, path, options.data_dir);
+                                                       : run_deform_case(c, path, manifest, options.data_dir);
     const IterationSummary& last = r.result.trace.back();
     int max_flips = 0;
     for (const IterationSummary& row : r.result.trace) max_flips = std::max(max_flips, row.flips);

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "framework/error.h"
+#include "framework/mesh_text.h"
 #include "framework/output_file.h"
 
 namespace akvf {
@@ -25,6 +26,18 @@ bool same_file(const std::string& a, const std::string& b) {
   std::error_code error;
   if (fs::exists(a, error) && fs::exists(b, error)) return fs::equivalent(a, b, error) && !error;
   return normalized(a) == normalized(b);
+}
+
+void require_extension(const std::string& option, const std::string& path, const std::vector<std::string>& extensions) {
+  if (path.empty() || is_special_output(path) || fs::is_directory(resolve_output_path(path))) return;
+  const std::string found = lowercase_extension(path);
+  std::string list;
+  for (const std::string& e : extensions) {
+    if (e == found) return;
+    list += (list.empty() ? "" : ", ") + e;
+  }
+  throw OptionsError("option " + option + ": cannot write '" + path + "': no writer produces '" +
+                     (found.empty() ? "(no extension)" : found) + "' (formats: " + list + ")");
 }
 
 void check_file_arguments(const std::vector<FileArgument>& inputs, const std::vector<FileArgument>& outputs) {

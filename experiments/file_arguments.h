@@ -21,6 +21,11 @@ struct FileArgument {
 // naming the path when an output cannot be written (output_file.h).
 void check_file_arguments(const std::vector<FileArgument>& inputs, const std::vector<FileArgument>& outputs);
 
+// OptionsError unless `path` ends in one of `extensions` (".obj", ...), the
+// formats a writer produces. A character device or FIFO (/dev/stdout) or an
+// existing folder (refused later with its own message) is not checked.
+void require_extension(const std::string& option, const std::string& path, const std::vector<std::string>& extensions);
+
 // True when `a` and `b` name the same file in the sense above.
 bool same_file(const std::string& a, const std::string& b);
 

@@ -1,6 +1,7 @@
 #include "experiments/manifest.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -20,14 +21,29 @@ using Json = nlohmann::ordered_json;
 // Errors name the file and the key path.
 struct Context {
   std::string file;
+  bool allow_outside_data_dir = false;
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
     throw InputError(file + ": " + key + ": " + problem);
   }
+  // A file the manifest names is read from the data folder; one that would
+  // leave it (absolute, or "../" past its top) is refused unless the manifest
+  // says "allow_outside_data_dir": true.
+  std::string data_file(const Json& value, const std::string& key) const;
 };
 
 const std::set<std::string> kCaseKeys = {"problem",      "energy",   "exponent",  "precond",    "line_search",
                                          "acceleration", "grad_tol", "max_iters", "time_limit", "preset",
                                          "constraints",  "weight",   "cg_tol",    "snapshots"};
+
+std::string text_of(const Context& c, const Json& value, const std::string& key);
+
+std::string Context::data_file(const Json& value, const std::string& key) const {
+  const std::string path = text_of(*this, value, key);
+  if (!allow_outside_data_dir && !stays_inside_folder(path))
+    fail(key, "\"" + path + "\" leaves the data folder (absolute, or \"..\" past its top); give a path inside "
+              "--data-dir, or set \"allow_outside_data_dir\": true in the manifest");
+  return path;
+}
 
 std::string join(const std::set<std::string>& names) {
   std::string list;
@@ -73,7 +89,7 @@ void apply_case_keys(const Context& c, const Json& entry, const std::string& pat
     if (key == "max_iters") s->max_iters = integer_of(c, value, where);
     if (key == "time_limit") s->time_limit = number_of(c, value, where);
     if (key == "preset") s->preset = text_of(c, value, where);
-    if (key == "constraints") s->constraints = text_of(c, value, where);
+    if (key == "constraints") s->constraints = c.data_file(value, where);
     if (key == "weight") s->weight = number_of(c, value, where);
     if (key == "cg_tol") s->cg_tol = number_of(c, value, where);
     if (key == "snapshots") {
@@ -138,8 +154,10 @@ std::string slug(const std::string& label) {
   return out.empty() ? "unnamed" : out;
 }
 
-Manifest parse_manifest(const std::string& text, const std::string& file_name) {
-  const Context c{file_name};
+Manifest parse_manifest(const std::string& text_as_read, const std::string& file_name) {
+  Context c{file_name};
+  // A leading UTF-8 byte-order mark is not JSON.
+  const std::string text = text_as_read.rfind("\xEF\xBB\xBF", 0) == 0 ? text_as_read.substr(3) : text_as_read;
   Json root;
   try {
     root = Json::parse(text);
@@ -161,10 +179,15 @@ Manifest parse_manifest(const std::string& text, const std::string& file_name) {
   if (!root.is_object()) c.fail("(top level)", "expected an object with \"meshes\" and \"methods\"");
   for (const auto& [key, value] : root.items())
     if (key != "name" && key != "description" && key != "defaults" && key != "meshes" && key != "methods" &&
-        key != "table")
-      c.fail(key, "unknown key (valid: name, description, defaults, meshes, methods, table)");
+        key != "table" && key != "allow_outside_data_dir")
+      c.fail(key, "unknown key (valid: name, description, defaults, meshes, methods, table, allow_outside_data_dir)");
   Manifest m;
-  m.source_text = text;
+  m.source_text = text_as_read;
+  if (root.contains("allow_outside_data_dir")) {
+    if (!root["allow_outside_data_dir"].is_boolean())
+      c.fail("allow_outside_data_dir", "expected true or false, found " + root["allow_outside_data_dir"].dump());
+    c.allow_outside_data_dir = m.allow_outside_data_dir = root["allow_outside_data_dir"].get<bool>();
+  }
   m.name = root.contains("name") ? text_of(c, root["name"], "name") : "experiment";
   if (root.contains("description")) m.description = text_of(c, root["description"], "description");
   if (root.contains("table")) {
@@ -191,7 +214,7 @@ Manifest parse_manifest(const std::string& text, const std::string& file_name) {
     if (!entry.contains("label")) c.fail(path, "missing \"label\"");
     mesh.label = text_of(c, entry["label"], path + ".label");
     if (!mesh_slugs.insert(slug(mesh.label)).second) c.fail(path + ".label", "duplicate mesh label");
-    if (entry.contains("file")) mesh.file = text_of(c, entry["file"], path + ".file");
+    if (entry.contains("file")) mesh.file = c.data_file(entry["file"], path + ".file");
     if (entry.contains("missing")) mesh.missing = text_of(c, entry["missing"], path + ".missing");
     if (mesh.file.empty() == mesh.missing.empty())
       c.fail(path, "give exactly one of \"file\" and \"missing\" (the reason the mesh is not available)");
@@ -237,5 +260,12 @@ Manifest parse_manifest(const std::string& text, const std::string& file_name) {
 }
 
 Manifest read_manifest(const std::string& path) { return parse_manifest(read_text_file(path), path); }
+
+bool stays_inside_folder(const std::string& relative) {
+  const std::filesystem::path path(relative);
+  if (path.is_absolute() || path.has_root_name() || path.has_root_directory()) return false;
+  const std::filesystem::path normal = path.lexically_normal();
+  return normal.empty() || *normal.begin() != "..";
+}
 
 }  // namespace akvf

@@ -54,12 +54,17 @@ struct Manifest {
   std::vector<std::string> methods;   // labels, in order
   std::vector<ExperimentCase> cases;  // meshes x methods, mesh-major
   std::string source_text;            // the JSON as read (copied into result folders)
+  // Mesh and constraint files may lie outside --data-dir (absolute or "../").
+  bool allow_outside_data_dir = false;
 };
 
 // Throws InputError naming the file and the key path (or the line for a
 // JSON syntax error).
 Manifest read_manifest(const std::string& path);
 Manifest parse_manifest(const std::string& text, const std::string& file_name);
+
+// False for an absolute path or one whose "../" climbs above its start.
+bool stays_inside_folder(const std::string& relative);
 
 // "Camel Head" -> "camel-head": letters, digits and dashes only.
 std::string slug(const std::string& label);

@@ -38,6 +38,9 @@ std::vector<OptionSpec> optimization_options() {
       {"ls-rho", "X", "backtracking shrink factor (default 0.5; the paper's text says 0.9)"},
       {"init", "NAME", "initial map: tutte (uniform weights, default) or cotan"},
       {"flaps", "on|off", "flap optimization of Sec. 5.4 after the Tutte map (default on)"},
+      {"warm-start-iters", "N",
+       "iteration limit of the symmetric Dirichlet warm start of energies that are\n"
+       "                          infinite at the initial map (default 1000)"},
       {"grad-tol", "X", "stop when the gradient norm drops below X (default 1e-3)"},
       {"max-iters", "N", "stop after N iterations (default 1000)"},
       {"time-limit", "SECONDS", "stop after this much optimizer time (default none)"},
@@ -70,6 +73,8 @@ ParamConfig config_from(const CommandLine& cl) {
   config.optimizer.max_iterations = cl.integer("max-iters", config.optimizer.max_iterations);
   config.optimizer.time_limit = cl.real("time-limit", config.optimizer.time_limit);
   if (!config.optimizer.is_valid(&invalid)) throw OptionsError(invalid);
+  config.warm_start_max_iterations = cl.integer("warm-start-iters", config.warm_start_max_iterations);
+  if (config.warm_start_max_iterations < 0) throw OptionsError("option --warm-start-iters must be >= 0");
   cl.thread_count();  // validates --threads
   return config;
 }
@@ -124,9 +129,7 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   const ParamConfig config = config_from(cl);
   const std::string& path = cl.positional()[0];
   const Outputs outputs{cl.text("out", ""), cl.text("trace", ""), cl.text("svg", "")};
-  if (!outputs.obj.empty() && lowercase_extension(outputs.obj) != ".obj")
-    throw OptionsError("option --out: cannot write '" + outputs.obj + "': the UV map is written as .obj (found '" +
-                       lowercase_extension(outputs.obj) + "')");
+  require_extension("--out", outputs.obj, {".obj"});
   check_file_arguments({{"the input mesh", path}},
                        {{"--out", outputs.obj}, {"--trace", outputs.trace}, {"--svg", outputs.svg}});
   const ThreadLimit threads(cl.thread_count());

@@ -29,15 +29,22 @@ struct ParamConfig {
   // for the laplacian preconditioner only, as AQP pairs them.
   std::string acceleration = "auto";
   OptimizerOptions optimizer;
+  // Iteration limit of the warm start of energies that are infinite at the
+  // initial map (symmetric Dirichlet with AKVF to gradient 1e-3 first).
+  int warm_start_max_iterations = 1000;
 };
 
 // A validated, normalized problem with its initial map.
 struct ParamSetup {
-  DiskMesh disk;                              // the compacted input mesh (original scale)
-  Normalization normalization;                // to total area 1
+  double unit_scale = 1;                      // exact power of two: input * unit_scale has extent ~1
+  DiskMesh disk;                              // the compacted input mesh times unit_scale
+  Normalization normalization;                // of disk.mesh to total area 1
   std::shared_ptr<ParamObjective> objective;  // on the normalized mesh
   Eigen::VectorXd x0;                         // initial map, interleaved, area-1 units
   int flaps_moved = 0;
+  // The warm start's run when the energy is infinite at the initial map
+  // (empty trace otherwise); x0 is its end point when it succeeded.
+  OptimizerResult warm_start;
   Warnings warnings;
 };
 
@@ -50,6 +57,8 @@ struct ParamRun {
   std::string preconditioner_report;
 };
 
+// The run from setup.x0. A warm start's rows open the trace (warm_start set)
+// and its time is added to the seconds column.
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks = {});
 

@@ -47,9 +47,15 @@ int plot_command(const std::vector<std::string>& args, std::ostream& out, std::o
     const TraceTable table = read_trace_csv(path);
     PlotSeries line;
     line.label = equals == std::string::npos ? path.substr(path.find_last_of('/') + 1) : argument.substr(equals + 1);
-    line.x = table.column(x_name, path);
-    line.y = table.column(y_name, path);
-    for (double& v : line.y) v -= minus;
+    // The rows of a warm start (marked in the status column) belong to
+    // another energy: the line shows the run itself.
+    const std::vector<double>& x = table.column(x_name, path);
+    const std::vector<double>& y = table.column(y_name, path);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (i < table.status.size() && table.status[i] == "warm-start") continue;
+      line.x.push_back(x[i]);
+      line.y.push_back(y[i] - minus);
+    }
     series.push_back(std::move(line));
   }
   PlotSpec spec;

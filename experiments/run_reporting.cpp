@@ -28,10 +28,10 @@ IterationCallback progress_printer(std::ostream& err) {
 
 std::string summary_line(const OptimizerResult& result) {
   const IterationSummary& last = result.trace.back();
-  char summary[256];
+  char summary[1024];
   std::snprintf(
       summary, sizeof summary, "status %s after %d iterations, %.3f s: energy %.10g, gradient norm %.3e, %d inverted\n",
-      to_string(result.status).c_str(), last.iteration, last.seconds, last.energy, last.grad_norm, last.flips);
+      status_with_reason(result).c_str(), last.iteration, last.seconds, last.energy, last.grad_norm, last.flips);
   return summary;
 }
 

@@ -1,5 +1,6 @@
 #include "experiments/trace_csv.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -14,11 +15,13 @@ namespace akvf {
 void write_trace_csv(std::ostream& out, const OptimizerResult& result) {
   out << "iter,seconds,energy,grad_norm,step,ls_evals,flips,max_step,precond_seconds,line_search_seconds,status\n";
   out << std::setprecision(17);
+  std::string status_cell = status_with_reason(result);  // one CSV field: no commas
+  std::replace(status_cell.begin(), status_cell.end(), ',', ';');
   for (std::size_t i = 0; i < result.trace.size(); ++i) {
     const IterationSummary& s = result.trace[i];
     out << s.iteration << ',' << s.seconds << ',' << s.energy << ',' << s.grad_norm << ',' << s.step << ','
         << s.ls_evals << ',' << s.flips << ',' << s.max_step << ',' << s.precond_seconds << ',' << s.line_search_seconds
-        << ',' << (i + 1 == result.trace.size() ? to_string(result.status) : "") << '\n';
+        << ',' << (i + 1 == result.trace.size() ? status_cell : s.warm_start ? "warm-start" : "") << '\n';
   }
 }
 
@@ -48,6 +51,7 @@ const std::vector<double>& TraceTable::column(const std::string& name, const std
 TraceTable read_trace_csv(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the trace file");
+  skip_utf8_bom(in);
   std::string line;
   if (!std::getline(in, line)) throw InputError(path, 1, "empty file, expected a CSV header");
   const std::vector<std::string> header = split_commas(line);

@@ -111,6 +111,20 @@ int DistortionObjective<D>::count_inverted(const Eigen::VectorXd& x) const {
 
 template <int D>
 std::string DistortionObjective<D>::first_bad_element(const Eigen::VectorXd& x) const {
+  auto describe = [&](int e, const std::string& problem) {
+    std::ostringstream message;
+    message << (D == 2 ? "triangle " : "tet ") << e + index_base_ << " (vertices";
+    for (int k = 0; k < kCorners; ++k) {
+      const int v = elements_(e, k);
+      message << (k ? ", " : " ") << (vertex_number_.empty() ? v : vertex_number_[v]) + index_base_;
+    }
+    message << ")" << numbering_note(index_base_) << ": " << problem;
+    return message.str();
+  };
+  // Each element finite on its own, yet the sum or the gradient's norm may
+  // overflow: then the element with the largest distortion is named.
+  int largest = -1;
+  double largest_density = 0;
   for (int e = 0; e < elements_.rows(); ++e) {
     std::ostringstream problem;
     problem.precision(3);
@@ -127,15 +141,21 @@ std::string DistortionObjective<D>::first_bad_element(const Eigen::VectorXd& x) 
       problem << "distortion " << density;
     else if (!dD_dJ.allFinite())
       problem << "non-finite distortion gradient";
-    else
+    else {
+      if (largest < 0 || density > largest_density) {
+        largest = e;
+        largest_density = density;
+      }
       continue;
-    std::ostringstream message;
-    message << (D == 2 ? "triangle " : "tet ") << e << " (vertices";
-    for (int k = 0; k < kCorners; ++k) message << (k ? ", " : " ") << elements_(e, k);
-    message << "): " << problem.str();
-    return message.str();
+    }
+    return describe(e, problem.str());
   }
-  return Objective::first_bad_element(x);
+  const std::string base = Objective::first_bad_element(x);
+  if (!base.empty() || largest < 0) return base;
+  std::ostringstream problem;
+  problem.precision(3);
+  problem << "the largest distortion, " << largest_density << " (the energy or its gradient overflows)";
+  return describe(largest, problem.str());
 }
 
 template <int D>

@@ -43,6 +43,14 @@ class DistortionObjective final : public Objective {
   std::string first_bad_element(const Eigen::VectorXd& x) const override;
   double lower_bound() const override { return density_->lower_bound(); }
 
+  // How messages number vertices and elements: vertex v is called
+  // vertex_number[v] + index_base (the source's numbering after unused
+  // vertices were dropped; empty = v itself), element e is e + index_base.
+  void set_file_numbering(std::vector<int> vertex_number, int index_base) {
+    vertex_number_ = std::move(vertex_number);
+    index_base_ = index_base;
+  }
+
   // J_e = Ds Dm^-1 (§3) for element e at x.
   Matrix jacobian(const Eigen::VectorXd& x, int e) const;
   // D(J_e) per element; +infinity for inverted elements.
@@ -65,6 +73,8 @@ class DistortionObjective final : public Objective {
   int num_vertices_;
   Eigen::VectorXd weights_;
   VertexFaces incidence_;
+  std::vector<int> vertex_number_;
+  int index_base_ = 0;
   // Scratch reused across calls (so calls on one object must not overlap).
   mutable std::vector<double> element_value_;
   mutable std::vector<Matrix> element_gradient_;  // dE/dDs per element

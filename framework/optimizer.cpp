@@ -39,6 +39,11 @@ std::string bad_element_note(const Objective& objective, const Eigen::VectorXd& 
 
 }  // namespace
 
+std::string status_with_reason(const OptimizerResult& result) {
+  if (result.status != TerminationStatus::kStalled || result.message.empty()) return to_string(result.status);
+  return to_string(result.status) + " (" + result.message + ")";
+}
+
 bool OptimizerOptions::is_valid(std::string* error) const {
   auto fail = [&](const std::string& message) {
     if (error) *error = message;
@@ -106,11 +111,12 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
   };
 
   IterationSummary row;
-  row.energy = energy;
-  row.grad_norm = gradient.norm();
+  row.energy = finite_or_inf(energy);
+  row.grad_norm = finite_or_inf(gradient.norm());
   row.flips = objective.count_inverted(x);
   row.seconds = elapsed();
-  if (!std::isfinite(energy) || !gradient.allFinite()) {
+  // A gradient of finite entries whose norm overflows is as unusable.
+  if (!std::isfinite(energy) || !std::isfinite(row.grad_norm)) {
     result.trace.push_back(row);
     return finish(TerminationStatus::kNumericalFailure,
                   (row.flips > 0 ? "the initial map has " + std::to_string(row.flips) + " inverted elements"
@@ -169,7 +175,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     row.precond_seconds = precond_seconds;
     row.line_search_seconds = search.seconds;
     row.seconds = elapsed();
-    if (!std::isfinite(energy) || !gradient.allFinite() || row.flips > 0) {
+    if (!std::isfinite(energy) || !std::isfinite(row.grad_norm) || row.flips > 0) {
       // Never hand back a bad iterate: the result is the last accepted one,
       // whose row ends the trace.
       const std::string note = bad_element_note(objective, x);

@@ -3,6 +3,7 @@
 // the preconditioner and the line search:
 //   d_k = -P(x_k)^-1 grad E(x_k),  x_{k+1} = x_k + alpha_k d_k.
 #include <Eigen/Core>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <string>
@@ -52,8 +53,17 @@ std::string to_string(TerminationStatus status);
 // the others mean the result should not be trusted as a minimum.
 bool is_normal_termination(TerminationStatus status);
 
+// What a trace row records for a value that is not finite: +inf, so that a
+// trace never holds NaN (the run's message names the first bad element).
+inline double finite_or_inf(double value) {
+  return std::isfinite(value) ? value : std::numeric_limits<double>::infinity();
+}
+
 struct IterationSummary {
   int iteration = 0;
+  // A row of the symmetric Dirichlet run that starts the exponential energies
+  // (parameterization.h), not of the run itself.
+  bool warm_start = false;
   double seconds = 0;  // cumulative optimizer time at the end of this iteration
   double energy = 0;
   double grad_norm = 0;        // ||grad E||_2 at the new iterate
@@ -74,6 +84,11 @@ struct OptimizerResult {
   TerminationStatus status = TerminationStatus::kMaxIterations;
   std::string message;
 };
+
+// The status as the programs print it: "converged", or for a run that
+// stalled the reason too ("stalled (Ceres: Parameter tolerance reached ...)"),
+// since "stalled" alone does not say why.
+std::string status_with_reason(const OptimizerResult& result);
 
 OptimizerResult minimize(const Objective& objective, Preconditioner& preconditioner, const LineSearch& line_search,
                          Eigen::VectorXd x, const OptimizerOptions& options,

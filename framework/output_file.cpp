@@ -71,6 +71,10 @@ void write_in_place(const std::string& path, const std::function<void(std::ostre
 }  // namespace
 
 std::string resolve_output_path(const std::string& path) {
+  // A device, FIFO, folder or socket is used as given: /dev/stdout is a
+  // chain of links ending in a name like "pipe:[1234]" that only the kernel
+  // can open through the link.
+  if (const mode_t type = file_type(path, true); type != 0 && type != S_IFREG) return path;
   fs::path current = path;
   for (int hops = 0; file_type(current.string(), false) == S_IFLNK; ++hops) {
     if (hops == 40) throw OutputError("cannot write " + path + ": too many levels of symbolic links");

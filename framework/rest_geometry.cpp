@@ -3,6 +3,10 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "framework/error.h"
 
 namespace akvf {
 
@@ -49,6 +53,22 @@ Normalization normalize_to_unit_area(TriMesh* mesh) {
   n.center = mesh->V.colwise().mean();
   mesh->V = (mesh->V.rowwise() - n.center) * n.scale;
   return n;
+}
+
+double power_of_two_unit_scale(const Eigen::MatrixXd& V, const std::string& name) {
+  if (V.rows() == 0) return 1;
+  double extent = (V.colwise().maxCoeff() - V.colwise().minCoeff()).maxCoeff();
+  if (!std::isfinite(extent)) extent = V.cwiseAbs().maxCoeff();  // spans beyond double's range
+  if (!(extent >= std::numeric_limits<double>::min())) {
+    if (extent == 0) throw ValidationError(name + ": every vertex is at the same position; the mesh has no area");
+    std::ostringstream text;
+    text << name << ": coordinates too small to normalize: the mesh's extent " << extent
+         << " is below the smallest normal double, so its area underflows";
+    throw ValidationError(text.str());
+  }
+  int exponent = 0;
+  std::frexp(extent, &exponent);  // extent = m 2^exponent, m in [0.5, 1)
+  return std::ldexp(1.0, -exponent);
 }
 
 }  // namespace akvf

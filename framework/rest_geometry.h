@@ -2,6 +2,7 @@
 // Per-triangle rest geometry of a 3D triangle mesh, the data the distortion
 // energy (Eq. 1) and the preconditioners need.
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
 #include "framework/mesh.h"
@@ -43,9 +44,17 @@ double surface_area(const TriMesh& mesh);
 struct Normalization {
   double scale = 1;
   Eigen::RowVector3d center = Eigen::RowVector3d::Zero();
-  double input_area = 0;
+  double input_area = 0;  // of the mesh given to normalize_to_unit_area
 };
 
 Normalization normalize_to_unit_area(TriMesh* mesh);
+
+// The power of two 2^k that brings the largest extent of the bounding box of
+// V (#V by 3) into [0.5, 1). Multiplying by it is exact, so a mesh scaled by
+// it normalizes to the same bits, while areas and squared lengths of meshes
+// at scales like 1e-100 or 1e+100 no longer underflow or overflow. Throws
+// ValidationError naming `name` when the extent is zero or subnormal (too
+// small to normalize).
+double power_of_two_unit_scale(const Eigen::MatrixXd& V, const std::string& name);
 
 }  // namespace akvf

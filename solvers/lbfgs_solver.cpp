@@ -97,13 +97,14 @@ OptimizerResult minimize_lbfgs(const Objective& objective, Eigen::VectorXd x, co
   OptimizerResult result;
   if (const double energy = objective.value(x); !std::isfinite(energy)) {
     IterationSummary row;  // row 0 still describes the initial map
-    row.energy = energy;
-    row.grad_norm = std::numeric_limits<double>::quiet_NaN();
+    row.energy = finite_or_inf(energy);
+    row.grad_norm = std::numeric_limits<double>::infinity();
     row.flips = objective.count_inverted(x);
     result.trace.push_back(row);
     result.x = std::move(x);
     result.status = TerminationStatus::kNumericalFailure;
-    result.message = "the initial energy is not finite";
+    const std::string bad = objective.first_bad_element(x);
+    result.message = "the initial energy is not finite" + (bad.empty() ? "" : "; first bad element: " + bad);
     return result;
   }
   ceres::GradientProblem problem(new ObjectiveFunction(objective));

@@ -107,7 +107,8 @@ TEST_CASE("the written UVs have the input's 3D area and its vertex numbering") {
     uv_area += 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
   }
   CHECK(uv_area == doctest::Approx(akvf::surface_area(mesh)).epsilon(1e-12));
-  CHECK(setup.normalization.input_area == doctest::Approx(akvf::surface_area(mesh)).epsilon(1e-14));
+  CHECK(setup.normalization.input_area ==
+        doctest::Approx(akvf::surface_area(mesh) * setup.unit_scale * setup.unit_scale).epsilon(1e-14));
 }
 
 TEST_CASE("the energy never increases and row 0 is the initial map") {
