@@ -152,6 +152,8 @@ std::string DistortionObjective<D>::first_bad_element(const Eigen::VectorXd& x) 
   }
   const std::string base = Objective::first_bad_element(x);
   if (!base.empty() || largest < 0) return base;
+  Eigen::VectorXd gradient;
+  if (std::isfinite(value_and_gradient(x, &gradient)) && std::isfinite(gradient.norm())) return "";
   std::ostringstream problem;
   problem.precision(3);
   problem << "the largest distortion, " << largest_density << " (the energy or its gradient overflows)";

@@ -101,10 +101,10 @@ OptimizerResult minimize_lbfgs(const Objective& objective, Eigen::VectorXd x, co
     row.grad_norm = std::numeric_limits<double>::infinity();
     row.flips = objective.count_inverted(x);
     result.trace.push_back(row);
-    result.x = std::move(x);
-    result.status = TerminationStatus::kNumericalFailure;
     const std::string bad = objective.first_bad_element(x);
     result.message = "the initial energy is not finite" + (bad.empty() ? "" : "; first bad element: " + bad);
+    result.x = std::move(x);
+    result.status = TerminationStatus::kNumericalFailure;
     return result;
   }
   ceres::GradientProblem problem(new ObjectiveFunction(objective));
