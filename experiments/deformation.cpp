@@ -1,7 +1,10 @@
 #include "experiments/deformation.h"
 
+#include <cmath>
+
 #include "framework/distortion_objective.h"
 #include "framework/error.h"
+#include "framework/rest_geometry.h"
 #include "preconditioners/fixed_vertices_preconditioner.h"
 
 namespace akvf {
@@ -51,10 +54,21 @@ PositionConstraints in_mesh_numbering(const PositionConstraints& constraints, co
   return out;
 }
 
+// Callbacks see the iterate at the input's scale, as the result gives it.
+std::vector<IterationCallback> at_input_scale(const std::vector<IterationCallback>& callbacks, double scale) {
+  if (scale == 1) return callbacks;
+  std::vector<IterationCallback> wrapped;
+  for (const IterationCallback& callback : callbacks)
+    wrapped.push_back([callback, scale](const IterationSummary& row, const Eigen::VectorXd& x) {
+      return callback(row, x / scale);
+    });
+  return wrapped;
+}
+
 }  // namespace
 
 DeformRun run_deformation(const TetMesh& input, const std::string& name, const PositionConstraints& input_constraints,
-                          const DeformConfig& config, const std::vector<IterationCallback>& callbacks) {
+                          const DeformConfig& config, const std::vector<IterationCallback>& user_callbacks) {
   std::string invalid;
   if (!config.optimizer.is_valid(&invalid) || !config.line_search_settings.is_valid(&invalid))
     throw OptionsError(invalid);
@@ -63,9 +77,20 @@ DeformRun run_deformation(const TetMesh& input, const std::string& name, const P
   OptimizerOptions optimizer = config.optimizer;
   optimizer.acceleration_eta = acceleration_eta(config.acceleration, config.preconditioner);
   DeformRun run;
-  run.prepared = prepare_tet_mesh(input, name, &run.warnings);
-  const TetMesh& mesh = run.prepared.mesh;
-  const PositionConstraints constraints = in_mesh_numbering(input_constraints, run.prepared, name, &run.warnings);
+  // An exact power of two first (extents like 1e-100 or 1e+100 would under-
+  // or overflow volumes), then the rest volume is brought to 1, so that the
+  // energy, the penalty and the gradient do not depend on the input's units.
+  const double unit = power_of_two_unit_scale(input.V, name);
+  TetMesh unit_input = input;
+  unit_input.V *= unit;
+  run.prepared = prepare_tet_mesh(unit_input, name, &run.warnings);
+  TetMesh& mesh = run.prepared.mesh;
+  const double to_unit_volume = 1 / std::cbrt(rest_tets(mesh).total_volume);
+  mesh.V *= to_unit_volume;
+  run.scale = unit * to_unit_volume;
+  PositionConstraints constraints = in_mesh_numbering(input_constraints, run.prepared, name, &run.warnings);
+  constraints.targets *= run.scale;
+  const std::vector<IterationCallback> callbacks = at_input_scale(user_callbacks, run.scale);
   TetObjective energy(mesh.T, rest_tets(mesh), density, mesh.num_vertices());
   energy.set_file_numbering(run.prepared.input_vertex, input.index_base);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
@@ -84,6 +109,7 @@ DeformRun run_deformation(const TetMesh& input, const std::string& name, const P
         objective.free_mask());
     run.result = minimize(objective, preconditioner, *line_search, start, optimizer, callbacks);
     run.preconditioner_report = preconditioner.report();
+    run.result.x /= run.scale;
     return run;
   }
   const SoftConstrainedObjective objective(energy, 3, constraints, config.weight);
@@ -91,6 +117,7 @@ DeformRun run_deformation(const TetMesh& input, const std::string& name, const P
                                                     with_constraint_diagonal(config, objective.hessian_diagonal()));
   run.result = minimize(objective, *preconditioner, *line_search, rest, optimizer, callbacks);
   run.preconditioner_report = preconditioner->report();
+  run.result.x /= run.scale;
   return run;
 }
 

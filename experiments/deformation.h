@@ -1,6 +1,8 @@
 #pragma once
 // Volumetric deformation (§6.2): minimize sum_t V_t D(J_t) / sum_t V_t +
-// w sum_i |x_i - p_i|^2 over the vertex positions of a tet mesh, starting
+// w sum_i |x_i - p_i|^2 over the vertex positions of a tet mesh scaled to
+// rest volume 1 (targets p_i scaled alike, so w does not depend on the
+// mesh's units), starting
 // from the rest shape, with a flip-free preconditioned descent; or, with hard
 // constraints, the distortion alone with the constrained vertices fixed at
 // their targets.
@@ -37,7 +39,12 @@ struct DeformConfig {
 };
 
 struct DeformRun {
-  PreparedTetMesh prepared;  // validated rest mesh (orientation fixed, unreferenced vertices dropped)
+  // The validated rest mesh (orientation fixed, unreferenced vertices
+  // dropped), in the optimizer's units: the input's coordinates times
+  // `scale`, which brings the rest volume to 1. The trace's energies and
+  // gradient norms are in these units; result.x is at the input's scale.
+  PreparedTetMesh prepared;
+  double scale = 1;
   OptimizerResult result;
   std::string preconditioner_report;
   Warnings warnings;
