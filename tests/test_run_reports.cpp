@@ -1,0 +1,139 @@
+// What a run reports: a warm start with its own limit, time and trace rows;
+// traces that never hold NaN; the reason of a stalled run; manifests that
+// cannot read outside the data folder unless they say so.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "experiments/akvf_cli.h"
+#include "experiments/exit_codes.h"
+#include "experiments/manifest.h"
+#include "experiments/parameterization.h"
+#include "experiments/run_reporting.h"
+#include "experiments/trace_csv.h"
+#include "tests/test_support.h"
+
+namespace fs = std::filesystem;
+using akvf::ParamConfig;
+using akvf::TerminationStatus;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("akvf_run_reports_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string trace_text(const akvf::OptimizerResult& result) {
+  std::ostringstream out;
+  akvf::write_trace_csv(out, result);
+  return out.str();
+}
+
+}  // namespace
+
+TEST_CASE("the exponential energies' warm start has its own limit, counts its time and opens the trace") {
+  ParamConfig config;
+  config.energy = "exp-symmetric-dirichlet";
+  config.energy_settings.exponent = 60;  // exp(60 D) overflows at the Tutte map's worst triangles
+  config.optimizer.max_iterations = 2;  // the run's limit no longer caps the warm start
+  config.warm_start_max_iterations = 1000;
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(9, 9);
+  akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "b.obj", config);
+  REQUIRE(setup.warm_start.trace.size() >= 2);
+  CHECK(setup.warm_start.status == TerminationStatus::kConverged);
+  REQUIRE(setup.warnings.size() == 1);
+  CHECK(setup.warnings[0].find("starting from the symmetric Dirichlet minimizer instead (warm start: ") !=
+        std::string::npos);
+  const akvf::OptimizerResult result = akvf::run_parameterization(setup, config).result;
+  const std::size_t warm_rows = setup.warm_start.trace.size();
+  REQUIRE(result.trace.size() == warm_rows + 3);  // the run's rows 0, 1, 2
+  for (std::size_t i = 0; i < warm_rows; ++i) CHECK(result.trace[i].warm_start);
+  CHECK(result.trace[warm_rows].iteration == 0);
+  CHECK(result.trace[warm_rows].seconds >= setup.warm_start.trace.back().seconds);
+  const std::string csv = trace_text(result);
+  CHECK(csv.find(",warm-start\n") != std::string::npos);
+  CHECK(csv.find(",max-iterations\n") != std::string::npos);
+
+  // A warm start stopped by its own limit is not called a minimizer.
+  config.warm_start_max_iterations = 1;
+  setup = akvf::prepare_parameterization(mesh, "b.obj", config);
+  REQUIRE(setup.warnings.size() == 1);
+  CHECK(setup.warnings[0].find("the symmetric Dirichlet map reached") != std::string::npos);
+  CHECK(setup.warnings[0].find("minimizer") == std::string::npos);
+  CHECK(setup.warm_start.trace.back().iteration == 1);
+}
+
+TEST_CASE("a trace never holds NaN: overflowing energies end as numerical-failure naming an element") {
+  for (const char* energy : {"amips", "exp-symmetric-dirichlet"})
+    for (const char* method : {"akvf", "newton", "lbfgs"}) {
+      CAPTURE(energy);
+      CAPTURE(method);
+      ParamConfig config;
+      config.energy = energy;
+      config.preconditioner = method;
+      config.energy_settings.exponent = 1000;
+      config.optimizer.max_iterations = 20;
+      const akvf::ParamSetup setup = akvf::prepare_parameterization(akvf::test::bumpy_disk(7, 7), "b.obj", config);
+      const akvf::OptimizerResult result = akvf::run_parameterization(setup, config).result;
+      const std::string csv = trace_text(result);
+      CHECK(csv.find("nan") == std::string::npos);
+      if (!akvf::is_normal_termination(result.status)) {
+        CHECK(result.status == TerminationStatus::kNumericalFailure);
+        CHECK(result.message.find("first bad element: triangle ") != std::string::npos);
+      }
+    }
+}
+
+TEST_CASE("a stalled run says why in the status line and the trace") {
+  akvf::OptimizerResult result;
+  result.trace.resize(1);
+  result.status = TerminationStatus::kStalled;
+  result.message = "Ceres: Parameter tolerance reached. Relative step_norm: 0, epsilon: 0";
+  CHECK(akvf::summary_line(result).find(
+            "status stalled (Ceres: Parameter tolerance reached. Relative step_norm: 0, epsilon: 0) after 0 "
+            "iterations") == 0);
+  const std::string csv = trace_text(result);
+  CHECK(csv.find(",stalled (Ceres: Parameter tolerance reached. Relative step_norm: 0; epsilon: 0)\n") !=
+        std::string::npos);
+  result.status = TerminationStatus::kConverged;
+  CHECK(akvf::summary_line(result).find("status converged after") == 0);
+}
+
+TEST_CASE("a manifest cannot read outside --data-dir unless it says so") {
+  auto error_of = [](const std::string& text) {
+    return akvf::test::error_message([&] { akvf::parse_manifest(text, "m.json"); });
+  };
+  const std::string methods = R"("methods": [{"label": "X"}])";
+  CHECK(error_of(R"({"meshes": [{"label": "A", "file": "../../x.obj"}], )" + methods + "}") ==
+        "m.json: meshes[0].file: \"../../x.obj\" leaves the data folder (absolute, or \"..\" past its top); give a "
+        "path inside --data-dir, or set \"allow_outside_data_dir\": true in the manifest");
+  CHECK(error_of(R"({"meshes": [{"label": "A", "file": "/etc/x.obj"}], )" + methods + "}").find(
+            "m.json: meshes[0].file: \"/etc/x.obj\" leaves the data folder") == 0);
+  CHECK(error_of(R"({"meshes": [{"label": "A", "file": "tet/a.mesh"}], "methods": [{"label": "X", "problem": )"
+                 R"("deform", "constraints": "../c.txt"}]})")
+            .find("m.json: methods[0].constraints: \"../c.txt\" leaves the data folder") == 0);
+  CHECK(error_of(R"({"meshes": [{"label": "A", "file": "a/../b.obj"}], )" + methods + "}").empty());
+  CHECK(error_of(R"({"allow_outside_data_dir": true, "meshes": [{"label": "A", "file": "../x.obj"}], )" + methods +
+                 "}")
+            .empty());
+
+  // A link inside the data folder that leads out of it is refused when the case runs.
+  const fs::path dir = scratch("outside");
+  fs::create_directories(dir / "data");
+  std::ofstream(dir / "secret.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  fs::create_symlink(dir / "secret.obj", dir / "data" / "link.obj");
+  std::ofstream(dir / "m.json") << R"({"meshes": [{"label": "A", "file": "link.obj"}], )" + methods + "}";
+  std::ostringstream out, err;
+  const int code = akvf::run_akvf({"experiment", (dir / "m.json").string(), "--data-dir", (dir / "data").string(),
+                                   "--out-dir", (dir / "r").string()},
+                                  out, err);
+  CHECK(code == akvf::kExitOptimizerFailure);
+  CHECK(err.str().find("meshes[0].file: ") != std::string::npos);
+  CHECK(err.str().find("outside the data folder") != std::string::npos);
+  fs::remove_all(dir);
+}
