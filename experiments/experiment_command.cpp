@@ -5,7 +5,6 @@
 
 #include "experiments/command_line.h"
 #include "experiments/exit_codes.h"
-#include "experiments/file_arguments.h"
 #include "experiments/run_reporting.h"
 #include "experiments/experiment_report.h"
 #include "experiments/experiment_runner.h"
@@ -108,8 +107,7 @@ int experiment_command(const std::vector<std::string>& args, std::ostream& out, 
         << " is empty: the manifest has " << manifest.cases.size() << " cases; nothing to run\n";
     return kExitOk;
   }
-  check_file_arguments({{"the manifest", positional[0]}}, {});
-  create_output_folder(options.out_dir);
+  create_output_folder(options.out_dir);  // before any case runs: exit 4 if it cannot be made
   err << manifest.name << ": " << manifest.cases.size() << " cases";
   if (options.shard_count > 1) err << ", shard " << options.shard_index << "/" << options.shard_count;
   err << ", results in " << options.out_dir << '\n';
