@@ -13,6 +13,15 @@ struct OptimizationState {
   int iteration;
 };
 
+// The work a preconditioner did, as numbers (all zero for those that do no
+// linear algebra of their own).
+struct PreconditionerStatistics {
+  int factorizations = 0;  // numeric Cholesky factorizations
+  int cg_solves = 0;       // directions from plain (Jacobi) CG
+  int reused_solves = 0;   // directions from CG with an older factorization
+  int cg_iterations = 0;   // over both kinds of CG solve
+};
+
 class Preconditioner {
  public:
   virtual ~Preconditioner() = default;
@@ -23,6 +32,7 @@ class Preconditioner {
   virtual void apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) = 0;
   // A line for reports on the work done so far ("12 factorizations"), or "".
   virtual std::string report() const { return ""; }
+  virtual PreconditionerStatistics statistics() const { return {}; }
 };
 
 }  // namespace akvf

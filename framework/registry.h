@@ -19,7 +19,10 @@ class Registry {
 
   explicit Registry(std::string kind) : kind_(std::move(kind)) {}
 
+  // OptionsError when `name` is taken or empty.
   void add(const std::string& name, const std::string& description, Factory factory) {
+    if (name.empty()) throw OptionsError("a " + kind_ + " needs a name");
+    if (contains(name)) throw OptionsError(kind_ + " '" + name + "' is already registered");
     entries_.push_back({name, description});
     factories_[name] = std::move(factory);
   }

@@ -54,12 +54,7 @@ inline FactorOptions shifted_factor_options(double absolute_shift) {
   return options;
 }
 
-struct FactorStatistics {
-  int factorizations = 0;
-  int cg_solves = 0;      // directions from plain (Jacobi) CG, cg_tolerance > 0
-  int reused_solves = 0;  // directions from CG with an older factorization
-  int cg_iterations = 0;
-};
+using FactorStatistics = PreconditionerStatistics;
 
 template <int D>
 class FactoredPreconditioner : public Preconditioner {
@@ -70,7 +65,7 @@ class FactoredPreconditioner : public Preconditioner {
 
   using Matrix = ElementMatrix<D, D + 1>;
   const Matrix& matrix() const { return matrix_; }
-  const FactorStatistics& statistics() const { return statistics_; }
+  PreconditionerStatistics statistics() const final { return statistics_; }
 
  protected:
   //   elements  #E by D + 1 (faces or tets)

@@ -23,6 +23,7 @@ class FixedVerticesPreconditioner final : public Preconditioner {
     result->array() *= free_mask_.array();
   }
   std::string report() const override { return inner_->report(); }
+  PreconditionerStatistics statistics() const override { return inner_->statistics(); }
 
  private:
   std::unique_ptr<Preconditioner> inner_;

@@ -3,7 +3,7 @@
 # tests: builds everything with clang under AddressSanitizer and
 # UndefinedBehaviorSanitizer in ./build-sanitize, runs the whole test suite
 # there, then runs each libFuzzer target for FUZZ_SECONDS (default 20) from
-# its seed corpus in tests/fuzz/seeds (plus experiments/*.json for the
+# its seed corpus in tests/fuzz/seeds (plus experiments/manifests/*.json for the
 # manifest target). Any sanitizer report or fuzzer finding
 # fails the script; a finding's input is kept in build-sanitize/fuzz-findings.
 # Usage: bash scripts/sanitize.sh            (after scripts/setup.sh)
@@ -36,7 +36,7 @@ if [ -z "${SKIP_FUZZ:-}" ]; then
     corpus=$build/fuzz-corpus/$name  # grows across runs; the committed seeds stay as they are
     mkdir -p "$corpus" "$findings/$name"
     # The project's own manifests seed the manifest target too.
-    if [ "$name" = manifest ]; then cp experiments/*.json "$corpus"/; fi
+    if [ "$name" = manifest ]; then cp experiments/manifests/*.json "$corpus"/; fi
     echo "fuzz_$name: ${fuzz_seconds} s from $(ls "$seeds" | wc -l) seeds"
     "$build/fuzz/fuzz_$name" "$corpus" "$seeds" -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 \
       -malloc_limit_mb=1024 -max_len=16384 -print_final_stats=1 -artifact_prefix="$findings/$name/" \

@@ -8,10 +8,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "experiments/deformation.h"
-#include "experiments/manifest.h"
-#include "experiments/parameterization.h"
-#include "experiments/trace_csv.h"
+#include "akvf/deformation.h"
+#include "experiments/runner/manifest.h"
+#include "akvf/parameterization.h"
+#include "experiments/report/trace_csv.h"
 #include "framework/constraints_io.h"
 #include "framework/mesh_io.h"
 #include "framework/tet_mesh_io.h"

@@ -7,8 +7,8 @@
 #include <sstream>
 #include <vector>
 
-#include "experiments/akvf_cli.h"
-#include "experiments/exit_codes.h"
+#include "experiments/cli/akvf_cli.h"
+#include "experiments/cli/exit_codes.h"
 
 namespace fs = std::filesystem;
 

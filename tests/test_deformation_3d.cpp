@@ -7,9 +7,9 @@
 #include <random>
 
 #include "energies/distortion_energies_3d.h"
-#include "experiments/catalog.h"
-#include "experiments/deformation.h"
-#include "experiments/threads.h"
+#include "akvf/catalog.h"
+#include "akvf/deformation.h"
+#include "akvf/threads.h"
 #include "framework/constrained_objective.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "preconditioners/energy_scale.h"

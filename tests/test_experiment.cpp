@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "experiments/akvf_cli.h"
-#include "experiments/exit_codes.h"
-#include "experiments/manifest.h"
-#include "experiments/text_utilities.h"
+#include "experiments/cli/akvf_cli.h"
+#include "experiments/cli/exit_codes.h"
+#include "experiments/runner/manifest.h"
+#include "experiments/report/text_utilities.h"
 #include "tests/test_support.h"
 
 namespace fs = std::filesystem;

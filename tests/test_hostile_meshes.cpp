@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "experiments/parameterization.h"
+#include "akvf/parameterization.h"
 #include "tests/test_support.h"
 
 namespace {

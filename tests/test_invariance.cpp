@@ -10,8 +10,8 @@
 #include <numeric>
 #include <random>
 
-#include "experiments/deformation.h"
-#include "experiments/parameterization.h"
+#include "akvf/deformation.h"
+#include "akvf/parameterization.h"
 #include "tests/test_support.h"
 
 namespace {

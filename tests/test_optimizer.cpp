@@ -7,9 +7,9 @@
 #include <cmath>
 #include <limits>
 
-#include "experiments/catalog.h"
-#include "experiments/demo_mesh.h"
-#include "experiments/parameterization.h"
+#include "akvf/catalog.h"
+#include "akvf/demo_mesh.h"
+#include "akvf/parameterization.h"
 #include "framework/error.h"
 #include "framework/interrupt.h"
 #include "framework/rest_geometry.h"

@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "experiments/catalog.h"
-#include "experiments/deformation.h"
-#include "experiments/parameterization.h"
+#include "akvf/catalog.h"
+#include "akvf/deformation.h"
+#include "akvf/parameterization.h"
 #include "framework/constraints_io.h"
 #include "framework/mesh_io.h"
 #include "framework/tet_mesh_io.h"

@@ -7,12 +7,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "experiments/akvf_cli.h"
-#include "experiments/exit_codes.h"
-#include "experiments/manifest.h"
-#include "experiments/parameterization.h"
-#include "experiments/run_reporting.h"
-#include "experiments/trace_csv.h"
+#include "experiments/cli/akvf_cli.h"
+#include "experiments/cli/exit_codes.h"
+#include "experiments/runner/manifest.h"
+#include "akvf/parameterization.h"
+#include "experiments/cli/run_reporting.h"
+#include "experiments/report/trace_csv.h"
 #include "tests/test_support.h"
 
 namespace fs = std::filesystem;

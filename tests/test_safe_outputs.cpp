@@ -11,9 +11,9 @@
 #include <sstream>
 #include <thread>
 
-#include "experiments/akvf_cli.h"
-#include "experiments/exit_codes.h"
-#include "experiments/file_arguments.h"
+#include "experiments/cli/akvf_cli.h"
+#include "experiments/cli/exit_codes.h"
+#include "experiments/cli/file_arguments.h"
 #include "framework/error.h"
 #include "framework/output_file.h"
 #include "tests/test_support.h"

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "energies/invariant_density_3d.h"
-#include "experiments/deformation.h"
+#include "akvf/deformation.h"
 #include "framework/constrained_objective.h"
 #include "framework/constraints_io.h"
 #include "framework/distortion_objective.h"

@@ -1,0 +1,82 @@
+#pragma once
+// The registries of everything a user can pick by name: energies,
+// preconditioners and line searches. This is the one place that knows all
+// built-in implementations (the composition root); the libraries know only
+// interfaces. User code adds its own through the mutable_ accessors.
+#include <memory>
+
+#include "framework/distortion_density.h"
+#include "framework/distortion_objective.h"
+#include "framework/line_search.h"
+#include "framework/preconditioner.h"
+#include "framework/registry.h"
+#include "preconditioners/akvf_preconditioner.h"
+#include "preconditioners/akvf_preconditioner_3d.h"
+
+namespace akvf {
+
+// Options of the energies that have them.
+struct EnergySettings {
+  double exponent = 1.0;  // k of the exponential energies
+};
+
+using DensityRegistry = Registry<DistortionDensity2, const EnergySettings&>;
+// Options of the preconditioners that have them, set from the command line.
+struct PreconditionerSettings {
+  AkvfOptions akvf;
+  FactorOptions newton;     // factored every iteration unless reuse is set
+  FactorOptions laplacian;  // constant: factored once
+  FactorOptions slim;       // factored every iteration unless reuse is set
+};
+
+using PreconditionerRegistry = Registry<Preconditioner, const ParamObjective&, const PreconditionerSettings&>;
+using LineSearchRegistry = Registry<LineSearch, const LineSearchSettings&>;
+
+// `--precond lbfgs` selects L-BFGS through Ceres, a solver of its own rather
+// than a preconditioner of our descent loop.
+inline constexpr const char* kLbfgsMethod = "lbfgs";
+inline constexpr const char* kLbfgsDescription =
+    "L-BFGS through Ceres' GradientProblemSolver (Smith & Schaefer 2015 style)";
+
+// Throws OptionsError listing every valid --precond name when `name` is none.
+void require_method(const std::string& name);
+
+// OptimizerOptions::acceleration_eta for an --acceleration mode: "auto" turns
+// AQP's momentum (eta = 100) on for the laplacian preconditioner only, "on"
+// and "off" force it. Throws OptionsError for any other mode.
+double acceleration_eta(const std::string& mode, const std::string& preconditioner);
+
+using DensityRegistry3D = Registry<DistortionDensity<3>, const EnergySettings&>;
+// Options of the 3D preconditioners. In deformation, newton, laplacian and
+// slim carry the constraint term's Hessian in their extra_diagonal.
+struct Preconditioner3DSettings {
+  Akvf3DOptions akvf;
+  FactorOptions newton = shifted_factor_options(1e-4);
+  FactorOptions laplacian = shifted_factor_options(1e-4);
+  FactorOptions slim = shifted_factor_options(1e-4);
+
+  // Jacobi-CG to this relative residual instead of factoring, for every
+  // matrix that changes per iteration (akvf, newton, slim; the Laplacian is
+  // factored once). 0 = factor.
+  void set_cg_tolerance(double tolerance) {
+    for (FactorOptions* options : {&akvf.factor, &newton, &slim}) options->cg_tolerance = tolerance;
+  }
+};
+using PreconditionerRegistry3D = Registry<Preconditioner, const TetObjective&, const Preconditioner3DSettings&>;
+
+const DensityRegistry& energies_2d();
+const DensityRegistry3D& energies_3d();
+const PreconditionerRegistry3D& preconditioners_3d();
+const PreconditionerRegistry& preconditioners_2d();
+const LineSearchRegistry& line_searches();
+
+// The same registries for adding user-defined parts by name (registry.h:
+// add() refuses a name that is taken). Register before runs start: a
+// registry is not guarded against concurrent registration and use.
+DensityRegistry& mutable_energies_2d();
+DensityRegistry3D& mutable_energies_3d();
+PreconditionerRegistry3D& mutable_preconditioners_3d();
+PreconditionerRegistry& mutable_preconditioners_2d();
+LineSearchRegistry& mutable_line_searches();
+
+}  // namespace akvf

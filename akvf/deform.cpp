@@ -1,0 +1,50 @@
+#include "akvf/deform.h"
+
+#include "akvf/deformation.h"
+#include "akvf/options.h"
+#include "framework/distortion_objective.h"
+#include "framework/error.h"
+
+namespace akvf {
+
+bool DeformOptions::is_valid(std::string* error) const {
+  try {
+    validate(deform_config(*this));
+    return true;
+  } catch (const OptionsError& e) {
+    if (error) *error = e.what();
+    return false;
+  }
+}
+
+DeformResult deform(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const PositionConstraints& constraints,
+                    const DeformOptions& options) {
+  if (V.cols() != 3) throw InputError("V must have 3 columns (x, y, z), found " + std::to_string(V.cols()));
+  if (T.cols() != 4) throw InputError("T must have 4 columns (tetrahedra), found " + std::to_string(T.cols()));
+  if (constraints.targets.rows() != static_cast<Eigen::Index>(constraints.vertices.size()) ||
+      (constraints.targets.size() > 0 && constraints.targets.cols() != 3))
+    throw InputError("constraints: " + std::to_string(constraints.vertices.size()) + " indices but targets of " +
+                     std::to_string(constraints.targets.rows()) + " by " + std::to_string(constraints.targets.cols()) +
+                     " (expected #C by 3)");
+  for (std::size_t c = 0; c < constraints.vertices.size(); ++c)
+    if (constraints.vertices[c] < 0 || constraints.vertices[c] >= V.rows())
+      throw InputError("constraint " + std::to_string(c) + ": vertex index " + std::to_string(constraints.vertices[c]) +
+                       " out of range (" + std::to_string(V.rows()) + " vertices, 0-based)");
+  const DeformConfig config = deform_config(options);
+  validate(config);
+  TetMesh mesh;
+  mesh.V = V;
+  mesh.T = T;
+  const DeformRun run = run_deformation(mesh, "mesh", constraints, config, options.callbacks);
+  DeformResult result;
+  result.x = run.prepared.in_input_numbering(unstack_rows(run.result.x, 3), mesh).V;
+  result.status = run.result.status;
+  result.message = run.result.message;
+  result.trace = run.result.trace;
+  result.statistics = run_statistics(run.result, run.preconditioner_statistics);
+  result.preconditioner_report = run.preconditioner_report;
+  result.warnings = run.warnings;
+  return result;
+}
+
+}  // namespace akvf

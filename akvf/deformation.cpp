@@ -1,0 +1,128 @@
+#include "akvf/deformation.h"
+
+#include <cmath>
+
+#include "akvf/threads.h"
+#include "framework/distortion_objective.h"
+#include "framework/error.h"
+#include "framework/rest_geometry.h"
+#include "preconditioners/fixed_vertices_preconditioner.h"
+
+namespace akvf {
+
+namespace {
+
+// The settings with the constraints on the preconditioners' diagonals:
+// the penalty's Hessian (soft), or a large pin that restricts P to the free
+// coordinates (hard, see fixed_vertices_preconditioner.h).
+Preconditioner3DSettings with_constraint_diagonal(const DeformConfig& config, const Eigen::VectorXd& diagonal) {
+  Preconditioner3DSettings settings = config.preconditioner_settings;
+  for (FactorOptions* options : {&settings.akvf.factor, &settings.newton, &settings.laplacian, &settings.slim})
+    options->extra_diagonal = diagonal;
+  if (config.akvf_as_written && !config.hard_constraints) {
+    settings.akvf.factor.extra_diagonal.resize(0);
+    settings.akvf.secant_scaling = false;
+  }
+  return settings;
+}
+
+// The constraints with the vertices renumbered as in the prepared mesh; a
+// constraint on a dropped vertex (in no tet) is left out with a warning.
+PositionConstraints in_mesh_numbering(const PositionConstraints& constraints, const PreparedTetMesh& prepared,
+                                      const std::string& name, Warnings* warnings) {
+  std::vector<int> new_index(prepared.num_input_vertices, -1);
+  for (std::size_t i = 0; i < prepared.input_vertex.size(); ++i)
+    new_index[prepared.input_vertex[i]] = static_cast<int>(i);
+  PositionConstraints out;
+  std::vector<int> kept;
+  int ignored = 0, first_ignored = -1;
+  for (std::size_t c = 0; c < constraints.vertices.size(); ++c) {
+    const int v = constraints.vertices[c];
+    if (v >= 0 && v < prepared.num_input_vertices && new_index[v] >= 0) {
+      out.vertices.push_back(new_index[v]);
+      kept.push_back(static_cast<int>(c));
+    } else if (ignored++ == 0) {
+      first_ignored = v;
+    }
+  }
+  out.targets.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t k = 0; k < kept.size(); ++k) out.targets.row(k) = constraints.targets.row(kept[k]);
+  if (ignored > 0)
+    warnings->push_back(name + ": " + std::to_string(ignored) + " constraints are on vertices in no tet (first: " +
+                        std::to_string(first_ignored) + ", 0-based); they are ignored");
+  if (out.vertices.empty() && !constraints.vertices.empty())
+    throw ValidationError(name + ": every constrained vertex is in no tet; nothing to deform");
+  return out;
+}
+
+// Callbacks see the iterate at the input's scale, as the result gives it.
+std::vector<IterationCallback> at_input_scale(const std::vector<IterationCallback>& callbacks, double scale) {
+  if (scale == 1) return callbacks;
+  std::vector<IterationCallback> wrapped;
+  for (const IterationCallback& callback : callbacks)
+    wrapped.push_back([callback, scale](const IterationSummary& row, const Eigen::VectorXd& x) {
+      return callback(row, x / scale);
+    });
+  return wrapped;
+}
+
+}  // namespace
+
+DeformRun run_deformation(const TetMesh& input, const std::string& name, const PositionConstraints& input_constraints,
+                          const DeformConfig& config, const std::vector<IterationCallback>& user_callbacks) {
+  std::string invalid;
+  if (!config.optimizer.is_valid(&invalid) || !config.line_search_settings.is_valid(&invalid))
+    throw OptionsError(invalid);
+  std::shared_ptr<const DistortionDensity<3>> density = energies_3d().create(config.energy, config.energy_settings);
+  preconditioners_3d().require(config.preconditioner);
+  OptimizerOptions optimizer = config.optimizer;
+  optimizer.acceleration_eta = acceleration_eta(config.acceleration, config.preconditioner);
+  const ThreadLimit threads(config.threads);
+  DeformRun run;
+  // An exact power of two first (extents like 1e-100 or 1e+100 would under-
+  // or overflow volumes), then the rest volume is brought to 1, so that the
+  // energy, the penalty and the gradient do not depend on the input's units.
+  const double unit = power_of_two_unit_scale(input.V, name);
+  TetMesh unit_input = input;
+  unit_input.V *= unit;
+  run.prepared = prepare_tet_mesh(unit_input, name, &run.warnings);
+  TetMesh& mesh = run.prepared.mesh;
+  const double to_unit_volume = 1 / std::cbrt(rest_tets(mesh).total_volume);
+  mesh.V *= to_unit_volume;
+  run.scale = unit * to_unit_volume;
+  PositionConstraints constraints = in_mesh_numbering(input_constraints, run.prepared, name, &run.warnings);
+  constraints.targets *= run.scale;
+  const std::vector<IterationCallback> callbacks = at_input_scale(user_callbacks, run.scale);
+  TetObjective energy(mesh.T, rest_tets(mesh), density, mesh.num_vertices());
+  energy.set_file_numbering(run.prepared.input_vertex, input.index_base);
+  auto line_search = line_searches().create(config.line_search, config.line_search_settings);
+  const Eigen::VectorXd rest = stack_rows(mesh.V);
+  if (config.hard_constraints) {
+    const FixedVerticesObjective objective(energy, 3, constraints.vertices);
+    const Eigen::VectorXd start = place_at_targets(rest, 3, constraints);
+    if (const int inverted = energy.count_inverted(start); inverted > 0)
+      throw ValidationError(name + ": placing the " + std::to_string(constraints.vertices.size()) +
+                            " constrained vertices at their targets inverts " + std::to_string(inverted) +
+                            " tets; hard constraints need a start without inverted tets (use soft constraints, "
+                            "the default, or smaller displacements)");
+    const Eigen::VectorXd pin = 1e10 * (Eigen::VectorXd::Ones(rest.size()) - objective.free_mask());
+    FixedVerticesPreconditioner preconditioner(
+        preconditioners_3d().create(config.preconditioner, energy, with_constraint_diagonal(config, pin)),
+        objective.free_mask());
+    run.result = minimize(objective, preconditioner, *line_search, start, optimizer, callbacks);
+    run.preconditioner_report = preconditioner.report();
+    run.preconditioner_statistics = preconditioner.statistics();
+    run.result.x /= run.scale;
+    return run;
+  }
+  const SoftConstrainedObjective objective(energy, 3, constraints, config.weight);
+  auto preconditioner = preconditioners_3d().create(config.preconditioner, energy,
+                                                    with_constraint_diagonal(config, objective.hessian_diagonal()));
+  run.result = minimize(objective, *preconditioner, *line_search, rest, optimizer, callbacks);
+  run.preconditioner_report = preconditioner->report();
+  run.preconditioner_statistics = preconditioner->statistics();
+  run.result.x /= run.scale;
+  return run;
+}
+
+}  // namespace akvf

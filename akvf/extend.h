@@ -1,0 +1,55 @@
+#pragma once
+// User-defined parts, registered by name at run time and then used
+// everywhere the built-in ones are: ParameterizeOptions::energy and
+// ::preconditioner, DeformOptions, experiment manifests run in the same
+// process, akvf::energies_2d().entries() listings. Register before runs
+// start (registries are not guarded against concurrent use); a name that is
+// taken is an OptionsError. docs/extending.md has worked examples.
+#include <memory>
+#include <string>
+
+#include "akvf/catalog.h"
+#include "energies/autodiff_density.h"
+
+namespace akvf {
+
+// An energy from its density alone: `functor` maps J (Dim x Dim, scalar
+// type T, det J > 0) to D(J), written once as a template over T (see
+// energies/autodiff_density.h); gradient, Hessian, PSD projection and the
+// singular-value derivative SLIM needs come from automatic differentiation.
+// `lower_bound` is inf_J D(J) (the value at J = I for isometric energies),
+// reported as the energy's lower bound.
+template <int Dim, class Functor>
+void register_autodiff_energy(const std::string& name, const std::string& description, double lower_bound,
+                              Functor functor) {
+  static_assert(Dim == 2 || Dim == 3, "densities are 2D (parameterization) or 3D (deformation)");
+  auto factory = [name, lower_bound, functor](const EnergySettings&) {
+    return std::make_unique<AutodiffDensity<Dim, Functor>>(name, lower_bound, functor);
+  };
+  if constexpr (Dim == 2)
+    mutable_energies_2d().add(name, description, factory);
+  else
+    mutable_energies_3d().add(name, description, factory);
+}
+
+// Any DistortionDensity (hand-written derivatives), or any Preconditioner,
+// through its factory. A 2D preconditioner is built from the objective and
+// the settings: (const ParamObjective&, const PreconditionerSettings&).
+inline void register_energy_2d(const std::string& name, const std::string& description,
+                               DensityRegistry::Factory factory) {
+  mutable_energies_2d().add(name, description, std::move(factory));
+}
+inline void register_energy_3d(const std::string& name, const std::string& description,
+                               DensityRegistry3D::Factory factory) {
+  mutable_energies_3d().add(name, description, std::move(factory));
+}
+inline void register_preconditioner_2d(const std::string& name, const std::string& description,
+                                       PreconditionerRegistry::Factory factory) {
+  mutable_preconditioners_2d().add(name, description, std::move(factory));
+}
+inline void register_preconditioner_3d(const std::string& name, const std::string& description,
+                                       PreconditionerRegistry3D::Factory factory) {
+  mutable_preconditioners_3d().add(name, description, std::move(factory));
+}
+
+}  // namespace akvf

@@ -1,0 +1,154 @@
+#include "akvf/parameterization.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "akvf/catalog.h"
+#include "akvf/threads.h"
+#include "framework/error.h"
+#include "solvers/lbfgs_solver.h"
+
+namespace akvf {
+
+namespace {
+// The energy whose minimizer starts energies that are infinite at the Tutte map.
+constexpr const char* kWarmStartEnergy = "symmetric-dirichlet";
+
+void warm_start(const ParamConfig& config, ParamSetup* setup);
+
+// A start the optimizer can use: finite energy and gradient norm (the
+// exponential energies overflow one or the other at the Tutte map).
+bool usable_start(const Objective& objective, const Eigen::VectorXd& x) {
+  Eigen::VectorXd gradient;
+  const double energy = objective.value_and_gradient(x, &gradient);
+  return std::isfinite(energy) && std::isfinite(gradient.norm());
+}
+ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
+                        const std::vector<IterationCallback>& callbacks);
+}  // namespace
+
+ParamSetup prepare_parameterization(const TriMesh& input, const std::string& name, const ParamConfig& config) {
+  std::string invalid;
+  if (!config.optimizer.is_valid(&invalid)) throw OptionsError(invalid);
+  if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
+  // Resolve names first so a typo fails before any work.
+  std::shared_ptr<const DistortionDensity2> density = energies_2d().create(config.energy, config.energy_settings);
+  require_method(config.preconditioner);
+  acceleration_eta(config.acceleration, config.preconditioner);  // validates the mode
+  line_searches().require(config.line_search);
+
+  ParamSetup setup;
+  // An exact power-of-two scale first, so that the checks and the Tutte solve
+  // see a mesh of extent about 1 whatever the input's units (1e-100 to 1e+100).
+  setup.unit_scale = power_of_two_unit_scale(input.V, name);
+  TriMesh unit_input = input;
+  unit_input.V *= setup.unit_scale;
+  setup.disk = prepare_disk_mesh(unit_input, name);
+  setup.warnings = setup.disk.warnings;
+  TriMesh normalized = setup.disk.mesh;
+  setup.normalization = normalize_to_unit_area(&normalized);
+
+  Eigen::MatrixXd UV = tutte_embedding(normalized, setup.disk.boundary_loop, config.init, &setup.warnings);
+  if (config.optimize_flaps) setup.flaps_moved = optimize_flaps(normalized, &UV);
+  setup.x0 = stack_uv(UV);
+  setup.objective =
+      std::make_shared<ParamObjective>(normalized.F, rest_triangles(normalized), density, normalized.num_vertices());
+  setup.objective->set_file_numbering(setup.disk.input_vertex, input.index_base);
+  if (!usable_start(*setup.objective, setup.x0) && config.energy != kWarmStartEnergy) warm_start(config, &setup);
+  return setup;
+}
+
+namespace {
+
+// The warm start's rows ahead of the run's, and its time added to the run's
+// clock (the run's seconds column is cumulative).
+void prepend_warm_start(const OptimizerResult& warm, OptimizerResult* result) {
+  if (warm.trace.empty()) return;
+  const double warm_seconds = warm.trace.back().seconds;
+  for (IterationSummary& row : result->trace) row.seconds += warm_seconds;
+  result->trace.insert(result->trace.begin(), warm.trace.begin(), warm.trace.end());
+}
+
+}  // namespace
+
+ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
+                              const std::vector<IterationCallback>& callbacks) {
+  const ThreadLimit threads(config.threads);
+  ParamRun run = run_from_start(setup, config, callbacks);
+  prepend_warm_start(setup.warm_start, &run.result);
+  return run;
+}
+
+namespace {
+
+ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
+                        const std::vector<IterationCallback>& callbacks) {
+  ParamRun run;
+  OptimizerOptions optimizer = config.optimizer;
+  optimizer.acceleration_eta = acceleration_eta(config.acceleration, config.preconditioner);
+  if (config.preconditioner == kLbfgsMethod) {
+    run.preconditioner_name = kLbfgsMethod;
+    run.result = minimize_lbfgs(*setup.objective, setup.x0, config.optimizer, {}, callbacks);  // no momentum
+    return run;
+  }
+  auto preconditioner =
+      preconditioners_2d().create(config.preconditioner, *setup.objective, config.preconditioner_settings);
+  auto line_search = line_searches().create(config.line_search, config.line_search_settings);
+  run.preconditioner_name = preconditioner->name();
+  run.result = minimize(*setup.objective, *preconditioner, *line_search, setup.x0, optimizer, callbacks);
+  run.preconditioner_report = preconditioner->report();
+  run.preconditioner_statistics = preconditioner->statistics();
+  return run;
+}
+
+}  // namespace
+
+Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
+  const Eigen::MatrixXd UV = unstack_uv(x);
+  const Eigen::MatrixXi& F = setup.objective->faces();
+  double uv_area = 0;
+  for (int f = 0; f < F.rows(); ++f) {
+    const Eigen::RowVector2d e1 = UV.row(F(f, 1)) - UV.row(F(f, 0)), e2 = UV.row(F(f, 2)) - UV.row(F(f, 0));
+    uv_area += 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
+  }
+  const double scale = std::sqrt(setup.normalization.input_area / uv_area) / setup.unit_scale;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(setup.disk.num_input_vertices, 2);
+  for (int v = 0; v < UV.rows(); ++v) out.row(setup.disk.input_vertex[v]) = scale * UV.row(v);
+  return out;
+}
+
+namespace {
+
+void warm_start(const ParamConfig& config, ParamSetup* setup) {
+  // The exponential energies overflow at the Tutte map's slivers. Start them
+  // instead from the symmetric Dirichlet map reached by AKVF (gradient 1e-3,
+  // its own iteration limit), which is finite for every energy here.
+  ParamConfig sd_config;
+  sd_config.energy = kWarmStartEnergy;
+  sd_config.optimizer.max_iterations = config.warm_start_max_iterations;
+  ParamSetup sd_setup = *setup;
+  sd_setup.objective =
+      std::make_shared<ParamObjective>(setup->objective->faces(), setup->objective->rest(),
+                                       energies_2d().create(kWarmStartEnergy, {}), setup->objective->num_vertices());
+  OptimizerResult warm = run_from_start(sd_setup, sd_config, {}).result;
+  const IterationSummary& last = warm.trace.back();
+  char reached[200];
+  std::snprintf(reached, sizeof reached, "%d AKVF iterations, status %s, energy %.10g, gradient norm %.3e",
+                last.iteration, to_string(warm.status).c_str(), last.energy, last.grad_norm);
+  const std::string map = warm.status == TerminationStatus::kConverged ? "the symmetric Dirichlet minimizer"
+                                                                        : "the symmetric Dirichlet map reached";
+  for (IterationSummary& row : warm.trace) row.warm_start = true;
+  setup->warm_start = std::move(warm);
+  if (!is_normal_termination(setup->warm_start.status) || !usable_start(*setup->objective, setup->warm_start.x)) {
+    setup->warnings.push_back(config.energy + " overflows (energy or gradient not finite) at the initial map and at " +
+                              map + " (" + reached + "); the run will stop at once");
+    return;
+  }
+  setup->x0 = setup->warm_start.x;
+  setup->warnings.push_back(config.energy + " overflows (energy or gradient not finite) at the initial map; starting from " +
+                            map + " instead (warm start: " + reached +
+                            "; its rows open the trace, marked warm-start, and its time is counted)");
+}
+
+}  // namespace
+}  // namespace akvf

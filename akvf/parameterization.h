@@ -1,0 +1,72 @@
+#pragma once
+// The 2D parameterization pipeline, from a mesh to a UV map:
+// validate -> normalize (area 1) -> Tutte (+ flaps) -> optimize -> rescale.
+#include <memory>
+#include <string>
+
+#include "akvf/catalog.h"
+#include "framework/distortion_objective.h"
+#include "framework/initialization.h"
+#include "framework/mesh.h"
+#include "framework/mesh_validation.h"
+#include "framework/optimizer.h"
+#include "framework/rest_geometry.h"
+
+namespace akvf {
+
+struct ParamConfig {
+  std::string energy = "symmetric-dirichlet";
+  EnergySettings energy_settings;
+  std::string preconditioner = "akvf";
+  std::string line_search = "backtracking";
+  LineSearchSettings line_search_settings;
+  PreconditionerSettings preconditioner_settings;
+  TutteWeights init = TutteWeights::kUniform;
+  // §5.4 flap optimization after the Tutte map (see docs/performance.md for
+  // the measurement behind the default).
+  bool optimize_flaps = true;
+  // AQP's momentum (OptimizerOptions::acceleration_eta): "auto" turns it on
+  // for the laplacian preconditioner only, as AQP pairs them.
+  std::string acceleration = "auto";
+  OptimizerOptions optimizer;
+  // Iteration limit of the warm start of energies that are infinite at the
+  // initial map (symmetric Dirichlet with AKVF to gradient 1e-3 first).
+  int warm_start_max_iterations = 1000;
+  // Worker threads (TBB and OpenBLAS) during the run; 0 = all cores.
+  int threads = 0;
+};
+
+// A validated, normalized problem with its initial map.
+struct ParamSetup {
+  double unit_scale = 1;                      // exact power of two: input * unit_scale has extent ~1
+  DiskMesh disk;                              // the compacted input mesh times unit_scale
+  Normalization normalization;                // of disk.mesh to total area 1
+  std::shared_ptr<ParamObjective> objective;  // on the normalized mesh
+  Eigen::VectorXd x0;                         // initial map, interleaved, area-1 units
+  int flaps_moved = 0;
+  // The warm start's run when the energy is infinite at the initial map
+  // (empty trace otherwise); x0 is its end point when it succeeded.
+  OptimizerResult warm_start;
+  Warnings warnings;
+};
+
+// Throws ValidationError / OptionsError with a message naming `name`.
+ParamSetup prepare_parameterization(const TriMesh& input, const std::string& name, const ParamConfig& config);
+
+struct ParamRun {
+  OptimizerResult result;
+  std::string preconditioner_name;
+  std::string preconditioner_report;
+  PreconditionerStatistics preconditioner_statistics;
+};
+
+// The run from setup.x0. A warm start's rows open the trace (warm_start set)
+// and its time is added to the seconds column.
+ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
+                              const std::vector<IterationCallback>& callbacks = {});
+
+// The UV map in the input's numbering (#input V by 2), scaled so that the
+// UV area equals the input mesh's 3D area. Unreferenced vertices get (0, 0).
+Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x);
+
+}  // namespace akvf

@@ -1,0 +1,116 @@
+#pragma once
+// The public 2D API: parameterize a triangle mesh with disk topology.
+//
+//   Eigen::MatrixXd V;  // #V by 3 vertex positions
+//   Eigen::MatrixXi F;  // #F by 3 vertex indices, 0-based
+//   akvf::ParameterizeResult r = akvf::parameterize(V, F);
+//   r.uv;               // #V by 2, at the input's scale (UV area = 3D area)
+//
+// Errors are the typed exceptions of <framework/error.h>: InputError and
+// ValidationError for the mesh (messages name the element as the arrays
+// number it, from 0), OptionsError for options, NumericalError. Nothing is
+// printed; progress goes through options.callbacks. A run that ends early
+// (line search or numerical failure) is not an exception: see result.status.
+#include <Eigen/Core>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "framework/mesh.h"
+#include "framework/optimizer.h"
+#include "framework/preconditioner.h"
+
+namespace akvf {
+
+// Every option of `akvf param`, with the command line's defaults
+// (docs/api.md lists the flag of each field).
+struct ParameterizeOptions {
+  std::string energy = "symmetric-dirichlet";  // a name of energies_2d(), built in or registered
+  double exponent = 1;                         // k of exp-symmetric-dirichlet and amips; > 0
+  std::string preconditioner = "akvf";         // a name of preconditioners_2d(), or the solver "lbfgs"
+  std::string line_search = "backtracking";    // or "wolfe-bisection"
+  std::string acceleration = "auto";           // AQP momentum: auto (laplacian only), on, off
+  double akvf_reuse = 0.03;                    // AKVF: reuse the last factor through CG to this residual; 0 = never
+  double ls_rho = 0.5;                         // backtracking shrink factor in (0, 1)
+  std::string init = "tutte";                  // initial map: tutte (uniform weights) or cotan
+  bool flaps = true;                           // flap optimization of §5.4 after the Tutte map
+  double grad_tol = 1e-3;                      // converged when ||grad E|| < grad_tol (area-1 units)
+  int max_iters = 1000;                        // >= 0
+  double time_limit = std::numeric_limits<double>::infinity();  // optimizer seconds, > 0
+  int warm_start_iters = 1000;  // limit of the symmetric Dirichlet warm start of overflowing energies
+  int threads = 0;              // worker threads for this call; 0 = all cores
+  // Called after every iteration (row 0 = the initial map) with the summary
+  // and the current map (interleaved u0 v0 u1 v1 ..., area-1 units; use
+  // Parameterizer::uv_of to get #V by 2 at the input's scale). Returning
+  // CallbackAction::kStop ends the run with status kUserStopped.
+  std::vector<IterationCallback> callbacks;
+
+  // True if every value is in range and every name is known; otherwise
+  // *error (if given) says which is not, as the command line would.
+  bool is_valid(std::string* error = nullptr) const;
+};
+
+// What a run did, as numbers.
+struct RunStatistics {
+  int iterations = 0;
+  double seconds = 0;                 // optimizer time, warm start included
+  double preconditioner_seconds = 0;  // update + apply, summed over iterations
+  double line_search_seconds = 0;
+  PreconditionerStatistics preconditioner;  // factorizations, reused solves, CG iterations
+};
+
+struct ParameterizeResult {
+  Eigen::MatrixXd uv;  // #V by 2 at the input's scale; vertices in no face get (0, 0)
+  TerminationStatus status = TerminationStatus::kMaxIterations;
+  std::string message;                  // why it ended, e.g. "gradient norm below 0.001"
+  std::vector<IterationSummary> trace;  // row 0 = the initial map (warm-start rows first, if any)
+  RunStatistics statistics;
+  std::string preconditioner_report;  // the command line's one-line report
+  Warnings warnings;                  // e.g. dropped unreferenced vertices
+
+  double energy() const { return trace.empty() ? 0 : trace.back().energy; }
+  double grad_norm() const { return trace.empty() ? 0 : trace.back().grad_norm; }
+  int iterations() const { return trace.empty() ? 0 : trace.back().iteration; }
+};
+
+// Validates, normalizes, computes the initial map and optimizes.
+//   V  #V by 3, F  #F by 3 (0-based)
+ParameterizeResult parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                const ParameterizeOptions& options = {});
+
+// Repeated solves on one mesh: validation, normalization and the initial map
+// are done once, at construction; then solve, change the options or the
+// start map, and solve again. Each solve builds its preconditioner anew, so
+// it gives the bits parameterize() gives for the same options and start.
+class Parameterizer {
+ public:
+  //   V  #V by 3, F  #F by 3 (0-based). Throws as parameterize() does.
+  Parameterizer(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ParameterizeOptions& options = {});
+  ~Parameterizer();
+  Parameterizer(Parameterizer&&) noexcept;
+  Parameterizer& operator=(Parameterizer&&) noexcept;
+
+  // From the initial map (Tutte + flaps, or the warm start of energies that
+  // overflow there).
+  ParameterizeResult solve();
+  // From `uv0` (#V by 2, any scale and placement): OptionsError if it is
+  // not of that shape, ValidationError naming the first inverted triangle.
+  ParameterizeResult solve(const Eigen::MatrixXd& uv0);
+
+  // New options for the next solves; the initial map is recomputed only if
+  // init, flaps, energy or exponent changed.
+  void set_options(const ParameterizeOptions& options);
+  const ParameterizeOptions& options() const;
+
+  // The initial map (#V by 2, at the input's scale) and a callback's x as
+  // #V by 2 at the input's scale.
+  Eigen::MatrixXd initial_uv() const;
+  Eigen::MatrixXd uv_of(const Eigen::VectorXd& x) const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace akvf

@@ -1,0 +1,181 @@
+// Google Benchmark micro-benchmarks of one AKVF iteration's parts on the
+// paper's meshes (read from $AKVF_DATA_DIR or ../shared/meshes):
+//   K assembly (Eq. 5), energy + gradient, numeric factorization, solve, one
+//   whole iteration with a factorization (update, solve, flip-free line
+//   search, gradient).
+// Run: ./build/akvf_benchmarks [--benchmark_filter=horse]
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include "experiments/cli/native_runtime.h"
+#include "akvf/parameterization.h"
+#include "framework/mesh_io.h"
+#include "preconditioners/akvf_preconditioner.h"
+#include "solvers/backtracking_line_search.h"
+#include "solvers/sparse_cholesky.h"
+
+namespace {
+
+std::string data_dir() {
+  if (const char* dir = std::getenv("AKVF_DATA_DIR")) return dir;
+  for (const char* candidate : {"../shared/meshes", "../../shared/meshes", "../../../shared/meshes"})
+    if (std::filesystem::is_directory(candidate)) return candidate;
+  return "";
+}
+
+// The problem after a few iterations, so K and the energy are in a typical
+// state (not the Tutte start).
+struct Fixture {
+  akvf::ParamSetup setup;
+  Eigen::VectorXd x;
+};
+
+Fixture* fixture(const std::string& mesh) {
+  static std::map<std::string, std::unique_ptr<Fixture>> cache;
+  auto& slot = cache[mesh];
+  if (!slot) {
+    const std::string dir = data_dir();
+    if (dir.empty()) return nullptr;
+    const std::string path = dir + "/tri/" + mesh;
+    akvf::ParamConfig config;
+    config.optimizer.max_iterations = 5;
+    auto f = std::make_unique<Fixture>();
+    f->setup = akvf::prepare_parameterization(akvf::read_triangle_mesh(path), path, config);
+    f->x = akvf::run_parameterization(f->setup, config).result.x;
+    slot = std::move(f);
+  }
+  return slot.get();
+}
+
+#define REQUIRE_FIXTURE(state, mesh)                            \
+  Fixture* f = fixture(mesh);                                   \
+  if (!f) {                                                     \
+    state.SkipWithError("meshes not found: set AKVF_DATA_DIR"); \
+    return;                                                     \
+  }
+
+void BM_KillingAssembly(benchmark::State& state, const std::string& mesh) {
+  REQUIRE_FIXTURE(state, mesh);
+  const akvf::ParamObjective& objective = *f->setup.objective;
+  akvf::ElementMatrix2D K(objective.faces(), objective.num_vertices());
+  for (auto _ : state) {
+    akvf::assemble_killing_operator(objective.faces(), f->x, objective.rest().area, true, &K);
+    benchmark::DoNotOptimize(K.upper().valuePtr());
+  }
+}
+
+void BM_EnergyGradient(benchmark::State& state, const std::string& mesh) {
+  REQUIRE_FIXTURE(state, mesh);
+  Eigen::VectorXd g;
+  for (auto _ : state) benchmark::DoNotOptimize(f->setup.objective->value_and_gradient(f->x, &g));
+}
+
+void BM_Energy(benchmark::State& state, const std::string& mesh) {
+  REQUIRE_FIXTURE(state, mesh);
+  for (auto _ : state) benchmark::DoNotOptimize(f->setup.objective->value(f->x));
+}
+
+// K(x) + eps I of the fixture's iterate, as the AKVF preconditioner factors it.
+akvf::ElementMatrix2D shifted_killing_operator(const Fixture& f) {
+  const akvf::ParamObjective& objective = *f.setup.objective;
+  akvf::ElementMatrix2D K(objective.faces(), objective.num_vertices());
+  akvf::assemble_killing_operator(objective.faces(), f.x, objective.rest().area, true, &K);
+  K.add_to_diagonal(1e-8 * K.mean_diagonal());
+  return K;
+}
+
+void BM_NumericFactorization(benchmark::State& state, const std::string& mesh) {
+  REQUIRE_FIXTURE(state, mesh);
+  const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
+  akvf::SparseCholesky cholesky;
+  cholesky.analyze(K.upper(), 2);
+  for (auto _ : state) cholesky.factorize(K.upper());
+  state.counters["nnz(L)"] = cholesky.factor_nonzeros();
+  state.counters["flops"] = benchmark::Counter(cholesky.factor_flops(), benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void BM_SymbolicAnalysis(benchmark::State& state, const std::string& mesh) {
+  REQUIRE_FIXTURE(state, mesh);
+  const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
+  for (auto _ : state) {
+    akvf::SparseCholesky cholesky;
+    cholesky.analyze(K.upper(), 2);
+  }
+}
+
+void BM_Solve(benchmark::State& state, const std::string& mesh) {
+  REQUIRE_FIXTURE(state, mesh);
+  const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
+  akvf::SparseCholesky cholesky;
+  cholesky.analyze(K.upper(), 2);  // as the AKVF preconditioner does
+  cholesky.factorize(K.upper());
+  Eigen::VectorXd g, d;
+  f->setup.objective->value_and_gradient(f->x, &g);
+  for (auto _ : state) {
+    cholesky.solve(g, &d);
+    benchmark::DoNotOptimize(d.data());
+  }
+  state.counters["serial_share"] = cholesky.serial_solve_share();
+}
+
+void BM_SymmetricProduct(benchmark::State& state, const std::string& mesh) {
+  REQUIRE_FIXTURE(state, mesh);
+  const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
+  const Eigen::VectorXd x = f->x;
+  Eigen::VectorXd y(x.size());
+  for (auto _ : state) {
+    y.noalias() = K.upper().selfadjointView<Eigen::Upper>() * x;
+    benchmark::DoNotOptimize(y.data());
+  }
+}
+
+void BM_WholeIteration(benchmark::State& state, const std::string& mesh) {
+  REQUIRE_FIXTURE(state, mesh);
+  const akvf::ParamObjective& objective = *f->setup.objective;
+  akvf::AkvfOptions options;
+  options.factor.reuse_tolerance = 0;  // Algorithm 1: a numeric factorization every iteration
+  akvf::AkvfPreconditioner2D preconditioner(objective, options);
+  const akvf::BacktrackingLineSearch line_search;  // default settings
+  Eigen::VectorXd g, d;
+  for (auto _ : state) {
+    const double energy = objective.value_and_gradient(f->x, &g);
+    preconditioner.update({f->x, g, energy, 1});
+    preconditioner.apply(g, &d);
+    d = -d;
+    benchmark::DoNotOptimize(line_search.search(objective, f->x, energy, g, d));
+  }
+}
+
+void register_all() {
+  for (const std::string mesh : {"camelhead.off", "horse_b.obj"}) {
+    benchmark::RegisterBenchmark(("KillingAssembly/" + mesh).c_str(), BM_KillingAssembly, mesh)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("EnergyGradient/" + mesh).c_str(), BM_EnergyGradient, mesh)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Energy/" + mesh).c_str(), BM_Energy, mesh)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("SymbolicAnalysis/" + mesh).c_str(), BM_SymbolicAnalysis, mesh)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("SymmetricProduct/" + mesh).c_str(), BM_SymmetricProduct, mesh)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("WholeIteration/" + mesh).c_str(), BM_WholeIteration, mesh)
+        ->Unit(benchmark::kMillisecond);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  akvf::configure_native_runtime(argv);
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,105 @@
+#include "experiments/cli/akvf_cli.h"
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "akvf/catalog.h"
+#include "akvf/version.h"
+#include "experiments/cli/command_line.h"
+#include "experiments/cli/deform_command.h"
+#include "experiments/cli/exit_codes.h"
+#include "experiments/cli/experiment_command.h"
+#include "experiments/cli/param_command.h"
+#include "experiments/cli/plot_command.h"
+#include "framework/error.h"
+
+namespace {
+
+const char* kUsage =
+    "usage: akvf COMMAND [options]\n"
+    "\n"
+    "commands:\n"
+    "  param MESH   parameterize a disk-topology triangle mesh (.obj or .off)\n"
+    "  demo         parameterize a built-in mesh and write its outputs (no input files)\n"
+    "  deform TETS  deform a tet mesh with positional constraints (.mesh, .obj or .tet)\n"
+    "  plot TRACES  SVG line plot of trace CSV files (energy against iterations or seconds)\n"
+    "  experiment MANIFEST  run a manifest of cases (shard, resume, merge); tables and plots\n"
+    "  list         list energies, preconditioners and line searches\n"
+    "  help         show this help (also -h, --help)\n"
+    "  --version    print the version\n"
+    "\n"
+    "`akvf COMMAND --help` describes each command's options.\n";
+
+template <class RegistryType>
+void print_entries(std::ostream& out, const char* title, const RegistryType& registry) {
+  out << title << ":\n";
+  for (const auto& [name, description] : registry.entries()) {
+    std::string left = "  " + name;
+    left.resize(std::max<std::size_t>(left.size() + 2, 24), ' ');
+    out << left << description << '\n';
+  }
+}
+
+int list_command(const std::vector<std::string>& args, std::ostream& out) {
+  akvf::CommandLine cl("akvf list\n\nLists the energies, preconditioners, solvers and line searches by name.",
+                       {{"help", "", "show this help"}});
+  cl.parse(args);
+  if (cl.has("help")) {
+    out << cl.help();
+    return akvf::kExitOk;
+  }
+  if (!cl.positional().empty()) throw akvf::OptionsError("list takes no arguments (see --help)");
+  print_entries(out, "energies (--energy)", akvf::energies_2d());
+  print_entries(out, "preconditioners (--precond)", akvf::preconditioners_2d());
+  out << "solvers (--precond):\n  " << akvf::kLbfgsMethod
+      << std::string(22 - std::string(akvf::kLbfgsMethod).size(), ' ') << akvf::kLbfgsDescription << '\n';
+  print_entries(out, "line searches (--line-search)", akvf::line_searches());
+  print_entries(out, "3D energies (akvf deform --energy)", akvf::energies_3d());
+  print_entries(out, "3D preconditioners (akvf deform --precond)", akvf::preconditioners_3d());
+  return akvf::kExitOk;
+}
+
+}  // namespace
+
+namespace akvf {
+
+int run_akvf(std::vector<std::string> args, std::ostream& out, std::ostream& err) {
+  if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
+    out << kUsage;
+    return args.empty() ? kExitUsageError : kExitOk;
+  }
+  if (args[0] == "--version" || args[0] == "version") {
+    out << "akvf " << kVersion << '\n';
+    return kExitOk;
+  }
+  const std::string command = args[0];
+  args.erase(args.begin());
+  try {
+    if (command == "param") return param_command(args, out, err);
+    if (command == "demo") return demo_command(args, out, err);
+    if (command == "deform") return deform_command(args, out, err);
+    if (command == "plot") return plot_command(args, out, err);
+    if (command == "experiment") return experiment_command(args, out, err);
+    if (command == "list") return list_command(args, out);
+    err << "akvf: unknown command '" << command << "'\n\n" << kUsage;
+    return kExitUsageError;
+  } catch (const InputError& e) {
+    err << "error: " << e.what() << '\n';
+    return kExitInputError;
+  } catch (const ValidationError& e) {
+    err << "error: " << e.what() << '\n';
+    return kExitInputError;
+  } catch (const OptionsError& e) {
+    err << "error: " << e.what() << '\n';
+    return kExitUsageError;
+  } catch (const OutputError& e) {
+    err << "error: " << e.what() << '\n';
+    return kExitOutputError;
+  } catch (const std::exception& e) {
+    err << "error: " << e.what() << '\n';
+    return kExitOptimizerFailure;
+  }
+}
+
+}  // namespace akvf

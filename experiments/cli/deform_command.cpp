@@ -1,0 +1,112 @@
+#include "experiments/cli/deform_command.h"
+
+#include "experiments/cli/command_line.h"
+#include "akvf/deformation.h"
+#include "experiments/cli/exit_codes.h"
+#include "experiments/cli/file_arguments.h"
+#include "experiments/cli/run_reporting.h"
+#include "akvf/slim_cube.h"
+#include "akvf/threads.h"
+#include "experiments/report/trace_csv.h"
+#include "framework/constraints_io.h"
+#include "framework/error.h"
+#include "framework/mesh_text.h"
+#include "framework/tet_mesh_io.h"
+
+namespace akvf {
+
+int deform_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CommandLine cl(
+      "akvf deform TETMESH.{mesh,obj,tet} (--constraints FILE | --preset slim-cube) [options]\n\n"
+      "Deforms a tet mesh by minimizing a distortion energy plus soft positional constraints\n"
+      "w sum |x_i - p_i|^2 from the rest shape, with a flip-free preconditioned descent (Sec. 6.2).",
+      {
+          {"constraints", "FILE", "one `vertex_index x y z` per line (0-based), # comments"},
+          {"preset", "NAME", "slim-cube: the SLIM paper's twisted cube (Figure 8)"},
+          {"weight", "W", "soft constraint weight w (default 1e5)"},
+          {"hard", "",
+           "hard constraints: constrained vertices start at their targets and stay\n"
+           "                          (refused when that inverts a tet)"},
+          {"energy", "NAME", "symmetric-dirichlet (default), exp-symmetric-dirichlet, arap, mips, amips"},
+          {"exponent", "K", "exponent of exp-symmetric-dirichlet and amips (default 1)"},
+          {"precond", "NAME", "akvf (default: K + 1e-4 I), newton, laplacian, slim, identity"},
+          {"akvf-as-written", "",
+           "AKVF as Sec. 6.2 states it: K + c I without the constraints' Hessian or\n"
+           "                          the energy scale (slow; for comparison, docs/design.md)"},
+          {"acceleration", "auto|on|off", "AQP momentum (default auto: on for --precond laplacian only)"},
+          {"cg-tol", "X",
+           "solve with Jacobi-preconditioned CG to relative residual X instead of\n"
+           "                          factoring (the paper uses 0.01; default 0 = factor)"},
+          {"max-iters", "N", "iterations (default 100, as in Figure 8)"},
+          {"grad-tol", "X", "stop when the gradient norm drops below X (default 1e-3)"},
+          {"time-limit", "SECONDS", "stop after this much optimizer time"},
+          {"out", "OUT.mesh", "write the deformed mesh (.mesh MEDIT or .vtk VTK legacy)"},
+          {"trace", "TRACE.csv", "one CSV row per iteration; flips counts inverted tets"},
+          {"threads", "N", "worker threads for the parallel assembly (default 0 = all cores)"},
+          {"quiet", "", "no per-iteration progress on stderr"},
+          {"help", "", "show this help"},
+      });
+  cl.parse(args);
+  if (cl.has("help")) {
+    out << cl.help();
+    return kExitOk;
+  }
+  if (cl.positional().size() != 1) throw OptionsError("expected exactly one tet mesh file (see --help)");
+  if (cl.has("constraints") == cl.has("preset")) throw OptionsError("give exactly one of --constraints and --preset");
+  const std::string preset = cl.text("preset", "");
+  if (cl.has("preset") && preset != "slim-cube")
+    throw OptionsError("unknown preset '" + preset + "' (valid: slim-cube)");
+  DeformConfig config;
+  config.energy = cl.text("energy", config.energy);
+  config.energy_settings.exponent = cl.real("exponent", config.energy_settings.exponent);
+  if (!(config.energy_settings.exponent > 0)) throw OptionsError("option --exponent must be > 0");
+  config.preconditioner = cl.text("precond", config.preconditioner);
+  const double cg_tolerance = cl.real("cg-tol", 0);
+  if (!(cg_tolerance >= 0 && cg_tolerance < 1)) throw OptionsError("option --cg-tol must be in [0, 1)");
+  config.preconditioner_settings.set_cg_tolerance(cg_tolerance);
+  config.hard_constraints = cl.has("hard");
+  config.akvf_as_written = cl.has("akvf-as-written");
+  config.acceleration = cl.text("acceleration", config.acceleration);
+  if (config.hard_constraints && cl.has("weight")) throw OptionsError("option --weight has no effect with --hard");
+  config.weight = cl.real("weight", config.weight);
+  if (!(config.weight > 0)) throw OptionsError("option --weight must be > 0");
+  config.optimizer.max_iterations = cl.integer("max-iters", config.optimizer.max_iterations);
+  config.optimizer.gradient_tolerance = cl.real("grad-tol", config.optimizer.gradient_tolerance);
+  config.optimizer.time_limit = cl.real("time-limit", config.optimizer.time_limit);
+  const std::string out_path = cl.text("out", ""), trace_path = cl.text("trace", "");
+  require_extension("--out", out_path, {".mesh", ".vtk"});
+  const std::string& path = cl.positional()[0];
+  check_file_arguments({{"the input mesh", path}, {"--constraints", cl.text("constraints", "")}},
+                       {{"--out", out_path}, {"--trace", trace_path}});
+  const ThreadLimit threads(cl.thread_count());
+
+  Warnings read_warnings;
+  const TetMesh input = read_tet_mesh(path, &read_warnings);
+  for (const auto& warning : read_warnings) err << "warning: " << warning << '\n';
+  const PositionConstraints constraints = cl.has("preset")
+                                              ? slim_cube_constraints(input)
+                                              : read_constraints_file(cl.text("constraints", ""), input.num_vertices());
+  std::vector<IterationCallback> callbacks;
+  if (!cl.has("quiet")) callbacks.push_back(progress_printer(err));
+  const DeformRun run = run_deformation(input, path, constraints, config, callbacks);
+  for (const auto& warning : run.warnings) err << "warning: " << warning << '\n';
+  const TetMesh& mesh = run.prepared.mesh;
+  out << path << ": " << mesh.num_vertices() << " vertices, " << mesh.num_tets() << " tets, "
+      << constraints.vertices.size() << " constrained vertices; energy " << config.energy << ", preconditioner "
+      << config.preconditioner << '\n'
+      << summary_line(run.result);
+  if (!run.preconditioner_report.empty()) out << config.preconditioner << ": " << run.preconditioner_report << '\n';
+  if (!is_normal_termination(run.result.status)) err << "error: " << run.result.message << '\n';
+
+  if (!out_path.empty()) {
+    const TetMesh deformed = run.prepared.in_input_numbering(unstack_rows(run.result.x, 3), input);
+    if (lowercase_extension(out_path) == ".vtk")
+      write_vtk(out_path, deformed);
+    else
+      write_medit(out_path, deformed);
+  }
+  if (!trace_path.empty()) write_trace_csv(trace_path, run.result);
+  return exit_code_of(run.result);
+}
+
+}  // namespace akvf

@@ -1,0 +1,170 @@
+#include "experiments/cli/param_command.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "akvf/catalog.h"
+#include "experiments/cli/command_line.h"
+#include "akvf/demo_mesh.h"
+#include "experiments/cli/exit_codes.h"
+#include "experiments/cli/file_arguments.h"
+#include "akvf/parameterization.h"
+#include "experiments/cli/run_reporting.h"
+#include "akvf/threads.h"
+#include "experiments/report/trace_csv.h"
+#include "experiments/report/uv_svg.h"
+#include "framework/error.h"
+#include "framework/mesh_io.h"
+#include "framework/mesh_text.h"
+
+namespace akvf {
+
+namespace {
+
+struct Outputs {
+  std::string obj, trace, svg;
+};
+
+std::vector<OptionSpec> optimization_options() {
+  return {
+      {"energy", "NAME", "distortion energy (default symmetric-dirichlet; see `akvf list`)"},
+      {"exponent", "K", "exponent of exp-symmetric-dirichlet and amips (default 1)"},
+      {"precond", "NAME", "akvf (default), newton, laplacian, slim, identity, or the solver lbfgs"},
+      {"line-search", "NAME", "backtracking (default) or wolfe-bisection"},
+      {"acceleration", "auto|on|off", "AQP momentum (default auto: on for --precond laplacian only)"},
+      {"akvf-reuse", "TAU",
+       "AKVF: reuse the last factorization through CG to relative residual TAU\n"
+       "                          (default 0.03; 0 = factor K every iteration, as in Algorithm 1)"},
+      {"ls-rho", "X", "backtracking shrink factor (default 0.5; the paper's text says 0.9)"},
+      {"init", "NAME", "initial map: tutte (uniform weights, default) or cotan"},
+      {"flaps", "on|off", "flap optimization of Sec. 5.4 after the Tutte map (default on)"},
+      {"warm-start-iters", "N",
+       "iteration limit of the symmetric Dirichlet warm start of energies that are\n"
+       "                          infinite at the initial map (default 1000)"},
+      {"grad-tol", "X", "stop when the gradient norm drops below X (default 1e-3)"},
+      {"max-iters", "N", "stop after N iterations (default 1000)"},
+      {"time-limit", "SECONDS", "stop after this much optimizer time (default none)"},
+      {"threads", "N", "worker threads for the parallel assembly (default 0 = all cores)"},
+      {"quiet", "", "no per-iteration progress on stderr"},
+      {"help", "", "show this help"},
+  };
+}
+
+ParamConfig config_from(const CommandLine& cl) {
+  ParamConfig config;
+  std::string invalid;
+  config.energy = cl.text("energy", config.energy);
+  config.energy_settings.exponent = cl.real("exponent", config.energy_settings.exponent);
+  if (!(config.energy_settings.exponent > 0)) throw OptionsError("option --exponent must be > 0");
+  config.preconditioner = cl.text("precond", config.preconditioner);
+  config.line_search = cl.text("line-search", config.line_search);
+  config.preconditioner_settings.akvf.factor.reuse_tolerance =
+      cl.real("akvf-reuse", config.preconditioner_settings.akvf.factor.reuse_tolerance);
+  const double tau = config.preconditioner_settings.akvf.factor.reuse_tolerance;
+  if (!(tau >= 0 && tau < 1)) throw OptionsError("option --akvf-reuse must be in [0, 1)");
+  config.acceleration = cl.text("acceleration", config.acceleration);
+  config.line_search_settings.rho = cl.real("ls-rho", config.line_search_settings.rho);
+  if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
+  config.init = parse_tutte_weights(cl.text("init", "tutte"));
+  const std::string flaps = cl.text("flaps", "on");
+  if (flaps != "on" && flaps != "off") throw OptionsError("option --flaps: expected on or off, found '" + flaps + "'");
+  config.optimize_flaps = flaps == "on";
+  config.optimizer.gradient_tolerance = cl.real("grad-tol", config.optimizer.gradient_tolerance);
+  config.optimizer.max_iterations = cl.integer("max-iters", config.optimizer.max_iterations);
+  config.optimizer.time_limit = cl.real("time-limit", config.optimizer.time_limit);
+  if (!config.optimizer.is_valid(&invalid)) throw OptionsError(invalid);
+  config.warm_start_max_iterations = cl.integer("warm-start-iters", config.warm_start_max_iterations);
+  if (config.warm_start_max_iterations < 0) throw OptionsError("option --warm-start-iters must be >= 0");
+  cl.thread_count();  // validates --threads
+  return config;
+}
+
+int run_and_write(const TriMesh& input, const std::string& name, const ParamConfig& config, const Outputs& outputs,
+                  bool quiet, std::ostream& out, std::ostream& err) {
+  const ParamSetup setup = prepare_parameterization(input, name, config);
+  for (const auto& warning : setup.warnings) err << "warning: " << warning << '\n';
+  const TriMesh& mesh = setup.disk.mesh;
+  out << name << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces; energy " << config.energy
+      << ", preconditioner " << config.preconditioner << ", " << setup.flaps_moved << " flap vertices moved\n";
+
+  std::vector<IterationCallback> callbacks;
+  if (!quiet) callbacks.push_back(progress_printer(err));
+  const ParamRun run = run_parameterization(setup, config, callbacks);
+  const OptimizerResult& result = run.result;
+  const IterationSummary& last = result.trace.back();
+  out << summary_line(result);
+  if (!run.preconditioner_report.empty()) out << run.preconditioner_name << ": " << run.preconditioner_report << '\n';
+  if (!is_normal_termination(result.status)) err << "error: " << result.message << '\n';
+
+  const Eigen::MatrixXd UV = output_uv(setup, result.x);
+  if (!outputs.obj.empty()) write_obj_with_uv(outputs.obj, input, UV);
+  if (!outputs.trace.empty()) write_trace_csv(outputs.trace, result);
+  if (!outputs.svg.empty())
+    write_layout_svg(outputs.svg, setup, result.x,
+                     name + " - " + run.preconditioner_name + ", " + std::to_string(last.iteration) +
+                         " iterations, E = " + std::to_string(last.energy));
+  return exit_code_of(result);
+}
+
+}  // namespace
+
+int param_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  std::vector<OptionSpec> specs = {
+      {"out", "UV.obj", "write the input mesh with one `vt` per vertex"},
+      {"trace", "TRACE.csv", "write one CSV row per iteration (row 0 = initial map)"},
+      {"svg", "LAYOUT.svg", "write the UV layout shaded by distortion"},
+  };
+  for (auto& spec : optimization_options()) specs.push_back(spec);
+  CommandLine cl(
+      "akvf param MESH.{obj,off} [options]\n\n"
+      "Parameterizes a disk-topology triangle mesh by minimizing a distortion energy\n"
+      "with a preconditioned, flip-free descent (Claici et al. 2017, Algorithm 1).",
+      specs);
+  cl.parse(args);
+  if (cl.has("help")) {
+    out << cl.help();
+    return kExitOk;
+  }
+  if (cl.positional().size() != 1) throw OptionsError("expected exactly one mesh file (see --help)");
+  const ParamConfig config = config_from(cl);
+  const std::string& path = cl.positional()[0];
+  const Outputs outputs{cl.text("out", ""), cl.text("trace", ""), cl.text("svg", "")};
+  require_extension("--out", outputs.obj, {".obj"});
+  check_file_arguments({{"the input mesh", path}},
+                       {{"--out", outputs.obj}, {"--trace", outputs.trace}, {"--svg", outputs.svg}});
+  const ThreadLimit threads(cl.thread_count());
+  Warnings warnings;
+  const TriMesh input = read_triangle_mesh(path, &warnings);
+  for (const auto& warning : warnings) err << "warning: " << warning << '\n';
+  return run_and_write(input, path, config, outputs, cl.has("quiet"), out, err);
+}
+
+int demo_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  std::vector<OptionSpec> specs = {{"out-dir", "DIR", "where to write the outputs (default akvf-demo)"}};
+  for (auto& spec : optimization_options()) specs.push_back(spec);
+  CommandLine cl(
+      "akvf demo [--out-dir DIR] [options]\n\n"
+      "Builds the bent bar of the paper's Figure 2 in code (a developable strip rolled\n"
+      "onto a cylinder), parameterizes it, and writes demo_uv.obj, demo_trace.csv and\n"
+      "demo_layout.svg. The optimum energy is exactly the lower bound 4.",
+      specs);
+  cl.parse(args);
+  if (cl.has("help")) {
+    out << cl.help();
+    return kExitOk;
+  }
+  if (!cl.positional().empty()) throw OptionsError("demo takes no mesh file (see --help)");
+  const ParamConfig config = config_from(cl);
+  const std::filesystem::path dir = cl.text("out-dir", "akvf-demo");
+  create_output_folder(dir.string());
+  const Outputs outputs{(dir / "demo_uv.obj").string(), (dir / "demo_trace.csv").string(),
+                        (dir / "demo_layout.svg").string()};
+  check_file_arguments({}, {{"the UV OBJ", outputs.obj}, {"the trace", outputs.trace}, {"the layout", outputs.svg}});
+  const ThreadLimit threads(cl.thread_count());
+  const int code = run_and_write(bent_bar(), "bent-bar", config, outputs, cl.has("quiet"), out, err);
+  out << "wrote " << (dir / "demo_uv.obj").string() << ", " << (dir / "demo_trace.csv").string() << ", "
+      << (dir / "demo_layout.svg").string() << '\n';
+  return code;
+}
+
+}  // namespace akvf

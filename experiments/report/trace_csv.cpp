@@ -1,0 +1,81 @@
+#include "experiments/report/trace_csv.h"
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+#include "framework/error.h"
+#include "framework/output_file.h"
+#include "framework/text_reader.h"
+
+namespace akvf {
+
+void write_trace_csv(std::ostream& out, const OptimizerResult& result) {
+  out << "iter,seconds,energy,grad_norm,step,ls_evals,flips,max_step,precond_seconds,line_search_seconds,status\n";
+  out << std::setprecision(17);
+  std::string status_cell = status_with_reason(result);  // one CSV field: no commas
+  std::replace(status_cell.begin(), status_cell.end(), ',', ';');
+  for (std::size_t i = 0; i < result.trace.size(); ++i) {
+    const IterationSummary& s = result.trace[i];
+    out << s.iteration << ',' << s.seconds << ',' << s.energy << ',' << s.grad_norm << ',' << s.step << ','
+        << s.ls_evals << ',' << s.flips << ',' << s.max_step << ',' << s.precond_seconds << ',' << s.line_search_seconds
+        << ',' << (i + 1 == result.trace.size() ? status_cell : s.warm_start ? "warm-start" : "") << '\n';
+  }
+}
+
+void write_trace_csv(const std::string& path, const OptimizerResult& result) {
+  write_file_atomically(path, [&](std::ostream& out) { write_trace_csv(out, result); });
+}
+
+namespace {
+
+std::vector<std::string> split_commas(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream stream(line);
+  std::string field;
+  while (std::getline(stream, field, ',')) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.emplace_back();
+  return fields;
+}
+
+}  // namespace
+
+const std::vector<double>& TraceTable::column(const std::string& name, const std::string& file) const {
+  const auto found = columns.find(name);
+  if (found == columns.end()) throw InputError(file + ": no column '" + name + "' in the trace");
+  return found->second;
+}
+
+TraceTable read_trace_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the trace file");
+  skip_utf8_bom(in);
+  std::string line;
+  if (!std::getline(in, line)) throw InputError(path, 1, "empty file, expected a CSV header");
+  const std::vector<std::string> header = split_commas(line);
+  TraceTable table;
+  for (long number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    const std::vector<std::string> fields = split_commas(line);
+    if (fields.size() != header.size())
+      throw InputError(path, number,
+                       "expected " + std::to_string(header.size()) + " fields, found " + std::to_string(fields.size()));
+    for (std::size_t c = 0; c < header.size(); ++c) {
+      if (header[c] == "status") {
+        table.status.push_back(fields[c]);
+        continue;
+      }
+      double value = 0;
+      if (!parse_real(fields[c], &value) && fields[c] != "inf" && fields[c] != "nan")
+        throw InputError(path, number, "column " + header[c] + ": '" + fields[c] + "' is not a number");
+      if (fields[c] == "inf") value = std::numeric_limits<double>::infinity();
+      if (fields[c] == "nan") value = std::numeric_limits<double>::quiet_NaN();
+      table.columns[header[c]].push_back(value);
+    }
+  }
+  return table;
+}
+
+}  // namespace akvf

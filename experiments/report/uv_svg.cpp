@@ -1,0 +1,65 @@
+#include "experiments/report/uv_svg.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "experiments/report/text_utilities.h"
+#include "framework/output_file.h"
+
+namespace akvf {
+
+namespace {
+
+// White (0) through orange to dark red (>= 10), on log10(1 + d).
+std::string color_for(double excess) {
+  const double t =
+      std::isfinite(excess) ? std::clamp(std::log10(1 + std::max(excess, 0.0)) / std::log10(11.0), 0.0, 1.0) : 1.0;
+  const int r = static_cast<int>(255 - 115 * t * t);
+  const int g = static_cast<int>(255 * (1 - t));
+  const int b = static_cast<int>(255 * (1 - t) * (1 - t));
+  char buffer[8];
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", r, g, b);
+  return buffer;
+}
+
+}  // namespace
+
+void write_uv_svg(const std::string& path, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F,
+                  const Eigen::VectorXd& distortion, const std::string& title) {
+  const Eigen::RowVector2d lo = UV.colwise().minCoeff(), hi = UV.colwise().maxCoeff();
+  const double extent = std::max((hi - lo).maxCoeff(), 1e-300);
+  const double size = 800, margin = 20;
+  const double scale = (size - 2 * margin) / extent;
+  const double width = (hi - lo).x() * scale + 2 * margin, height = (hi - lo).y() * scale + 2 * margin + 24;
+  // y grows downwards in SVG: flip so the picture has the UV orientation.
+  auto px = [&](int v) { return margin + (UV(v, 0) - lo.x()) * scale; };
+  auto py = [&](int v) { return height - margin - (UV(v, 1) - lo.y()) * scale; };
+  write_file_atomically(path, [&](std::ostream& out) {
+    char buffer[160];
+    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+        << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n";
+    out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    out << "<text x=\"" << margin << "\" y=\"18\" font-family=\"sans-serif\" font-size=\"14\">" << xml_escape(title)
+        << "</text>\n";
+    out << "<g stroke=\"#333\" stroke-width=\"0.3\" stroke-linejoin=\"round\">\n";
+    for (int f = 0; f < F.rows(); ++f) {
+      std::snprintf(buffer, sizeof buffer, "<path d=\"M%.1f %.1fL%.1f %.1fL%.1f %.1fZ\" fill=\"", px(F(f, 0)),
+                    py(F(f, 0)), px(F(f, 1)), py(F(f, 1)), px(F(f, 2)), py(F(f, 2)));
+      out << buffer << color_for(distortion[f]) << "\"/>\n";
+    }
+    out << "</g>\n</svg>\n";
+  });
+}
+
+void write_layout_svg(const std::string& path, const ParamSetup& setup, const Eigen::VectorXd& x,
+                      const std::string& title) {
+  const Eigen::VectorXd excess = setup.objective->face_distortion(x).array() - setup.objective->density().lower_bound();
+  const Eigen::MatrixXd UV = output_uv(setup, x);
+  const TriMesh& mesh = setup.disk.mesh;
+  Eigen::MatrixXd compact_uv(mesh.num_vertices(), 2);
+  for (int v = 0; v < mesh.num_vertices(); ++v) compact_uv.row(v) = UV.row(setup.disk.input_vertex[v]);
+  write_uv_svg(path, compact_uv, mesh.F, excess, title);
+}
+
+}  // namespace akvf

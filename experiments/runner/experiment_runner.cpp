@@ -1,0 +1,330 @@
+#include "experiments/runner/experiment_runner.h"
+
+#include <tbb/global_control.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "akvf/deformation.h"
+#include "akvf/parameterization.h"
+#include "experiments/report/uv_svg.h"
+#include "experiments/cli/run_reporting.h"
+#include "akvf/slim_cube.h"
+#include "experiments/report/text_utilities.h"
+#include "experiments/report/trace_csv.h"
+#include "framework/constraints_io.h"
+#include "framework/error.h"
+#include "framework/mesh_io.h"
+#include "framework/mesh_subdivision.h"
+#include "framework/output_file.h"
+#include "framework/tet_mesh_io.h"
+#include "solvers/sparse_cholesky.h"
+
+#ifndef AKVF_VERSION
+#define AKVF_VERSION "unknown"
+#endif
+
+namespace akvf {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown";
+}
+
+// Linux: resets the process's peak resident set size (VmHWM) so that the
+// value read after a case is that case's peak (writing 5 to clear_refs).
+void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+// VmHWM of /proc/self/status in MiB (0 where unavailable).
+double peak_memory_mb() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // reported in kB
+  return 0;
+}
+
+// Where and with what the case ran: the same for every case of a run.
+Json machine_record() {
+  Json machine;
+  machine["cpu"] = cpu_model();
+  machine["cores"] = std::thread::hardware_concurrency();
+  machine["threads"] = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+  machine["versions"] = {{"akvf", AKVF_VERSION},
+                         {"eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) +
+                                       "." + std::to_string(EIGEN_MINOR_VERSION)},
+                         {"cholmod", cholmod_version()},
+                         {"compiler", __VERSION__}};
+  return machine;
+}
+
+Json settings_record(const CaseSettings& s) {
+  Json j = {{"problem", s.problem},   {"energy", s.energy},           {"exponent", s.exponent},
+            {"precond", s.precond},   {"line_search", s.line_search}, {"acceleration", s.acceleration},
+            {"grad_tol", s.grad_tol}, {"max_iters", s.max_iters},     {"time_limit", s.time_limit}};
+  if (s.problem == "deform") {
+    j["preset"] = s.preset;
+    j["constraints"] = s.constraints;
+    j["weight"] = s.weight;
+    j["cg_tol"] = s.cg_tol;
+  }
+  return j;
+}
+
+OptimizerOptions stopping_rule(const CaseSettings& s) {
+  OptimizerOptions o;
+  o.gradient_tolerance = s.grad_tol;
+  o.max_iterations = s.max_iters;
+  o.time_limit = s.time_limit;
+  return o;
+}
+
+// The settings param and deform configs share (same member names in both).
+template <class Config>
+void apply_common_settings(const CaseSettings& s, Config* config) {
+  config->energy = s.energy;
+  config->energy_settings.exponent = s.exponent;
+  config->preconditioner = s.precond;
+  config->line_search = s.line_search;
+  config->acceleration = s.acceleration;
+  config->optimizer = stopping_rule(s);
+}
+
+struct CaseResult {
+  OptimizerResult result;
+  double lower_bound = 0;
+  int vertices = 0, elements = 0;
+};
+
+CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, const std::string& mesh_path,
+                          const std::string& case_dir) {
+  const CaseSettings& s = c.settings;
+  ParamConfig config;
+  apply_common_settings(s, &config);
+  const ParamSetup setup =
+      prepare_parameterization(subdivide_midpoint(read_triangle_mesh(mesh_path), mesh.subdivide), mesh_path, config);
+  std::vector<IterationCallback> callbacks;
+  callbacks.push_back([&](const IterationSummary& row, const Eigen::VectorXd& x) {
+    for (int k : s.snapshots)
+      if (row.iteration == k)
+        write_layout_svg(join_path(case_dir, "iter-" + std::to_string(k) + ".svg"), setup, x,
+                         c.mesh_label + " - " + c.method_label + ", iteration " + std::to_string(k));
+    return CallbackAction::kContinue;
+  });
+  CaseResult out;
+  out.result = run_parameterization(setup, config, callbacks).result;
+  if (!s.snapshots.empty())  // also the layout where the run stopped (it may stop before a snapshot)
+    write_layout_svg(join_path(case_dir, "final.svg"), setup, out.result.x,
+                     c.mesh_label + " - " + c.method_label + ", final (iteration " +
+                         std::to_string(out.result.trace.back().iteration) + ")");
+  out.lower_bound = setup.objective->lower_bound();
+  out.vertices = setup.disk.mesh.num_vertices();
+  out.elements = setup.disk.mesh.num_faces();
+  return out;
+}
+
+// data_dir/relative, refused (InputError naming the manifest's key) when
+// links lead it out of the data folder and the manifest does not allow it.
+std::string data_path(const Manifest& manifest, const std::string& data_dir, const std::string& relative,
+                      const std::string& key) {
+  const std::string path = join_path(data_dir, relative);
+  if (manifest.allow_outside_data_dir) return path;
+  std::error_code error;
+  const fs::path folder = fs::weakly_canonical(fs::absolute(data_dir), error);
+  const fs::path resolved = fs::weakly_canonical(fs::absolute(path), error);
+  const fs::path inside = resolved.lexically_relative(folder);
+  if (error || inside.empty() || *inside.begin() == "..")
+    throw InputError(key + ": " + path + " resolves to " + resolved.string() + ", outside the data folder " +
+                     folder.string() + " (set \"allow_outside_data_dir\": true in the manifest to allow it)");
+  return path;
+}
+
+CaseResult run_deform_case(const ExperimentCase& c, const std::string& mesh_path, const Manifest& manifest,
+                           const std::string& data_dir) {
+  const CaseSettings& s = c.settings;
+  const TetMesh mesh = read_tet_mesh(mesh_path);
+  const PositionConstraints constraints =
+      s.preset.empty()
+          ? read_constraints_file(data_path(manifest, data_dir, s.constraints, "constraints of " + c.id),
+                                  mesh.num_vertices())
+          : slim_cube_constraints(mesh);
+  DeformConfig config;
+  apply_common_settings(s, &config);
+  config.weight = s.weight;
+  config.preconditioner_settings.set_cg_tolerance(s.cg_tol);
+  const DeformRun run = run_deformation(mesh, mesh_path, constraints, config);
+  CaseResult out;
+  out.result = run.result;
+  out.lower_bound = energies_3d().create(s.energy, {s.exponent})->lower_bound();
+  out.vertices = run.prepared.mesh.num_vertices();
+  out.elements = run.prepared.mesh.num_tets();
+  return out;
+}
+
+// Runs one case and returns its summary record (also for a missing mesh or a case that failed to start).
+Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOptions& options,
+              const std::string& case_dir) {
+  const ManifestMesh& mesh = manifest.meshes[c.mesh_index];
+  Json summary;
+  summary["id"] = c.id;
+  summary["mesh"] = c.mesh_label;
+  summary["method"] = c.method_label;
+  summary["mesh_file"] = mesh.file;
+  summary["settings"] = settings_record(c.settings);
+  if (!mesh.missing.empty()) {
+    summary["status"] = "missing";
+    summary["message"] = mesh.missing;
+    return summary;
+  }
+  try {
+    const std::string path = data_path(manifest, options.data_dir, mesh.file, "meshes[" + std::to_string(c.mesh_index) + "].file");
+    reset_peak_memory();
+    const CaseResult r = c.settings.problem == "param" ? run_param_case(c, mesh, path, case_dir)
+                                                       : run_deform_case(c, path, manifest, options.data_dir);
+    const IterationSummary& last = r.result.trace.back();
+    int max_flips = 0;
+    for (const IterationSummary& row : r.result.trace) max_flips = std::max(max_flips, row.flips);
+    write_trace_csv(join_path(case_dir, "trace.csv"), r.result);
+    summary["status"] = to_string(r.result.status);
+    summary["message"] = r.result.message;
+    summary["reached"] = r.result.status == TerminationStatus::kConverged;
+    summary["iterations"] = last.iteration;
+    summary["seconds"] = last.seconds;
+    summary["final_energy"] = last.energy;
+    summary["lower_bound"] = r.lower_bound;
+    summary["grad_norm"] = last.grad_norm;
+    summary["max_flips"] = max_flips;
+    summary["vertices"] = r.vertices;
+    summary["elements"] = r.elements;
+    summary["peak_memory_mb"] = peak_memory_mb();
+  } catch (const Error& e) {
+    summary["status"] = "error";
+    summary["message"] = e.what();
+  }
+  summary["machine"] = machine_record();
+  return summary;
+}
+
+std::string format_seconds(double seconds) {
+  std::ostringstream text;
+  text << std::setprecision(seconds < 100 ? 2 : 3) << seconds << " s";
+  return text.str();
+}
+
+// Writes the manifest into out_dir, or checks that the one there is the same.
+void claim_folder(const Manifest& manifest, const std::string& out_dir) {
+  create_output_folder(join_path(out_dir, "cases"));
+  const std::string path = join_path(out_dir, "manifest.json");
+  if (fs::exists(path)) {
+    if (read_text_file(path) != manifest.source_text)
+      throw OutputError(out_dir + ": holds the results of a different manifest (" + path +
+                        "); choose another --out-dir or remove it");
+    return;
+  }
+  write_file_atomically(path, [&](std::ostream& out) { out << manifest.source_text; });
+}
+
+}  // namespace
+
+std::string join_path(const std::string& folder, const std::string& name) {
+  return folder.empty() ? name : (fs::path(folder) / name).string();
+}
+
+RunnerOutcome run_experiment(const Manifest& manifest, const RunnerOptions& options, std::ostream& progress) {
+  if (options.shard_count < 1 || options.shard_index < 1 || options.shard_index > options.shard_count)
+    throw OptionsError("shard must be I/N with 1 <= I <= N");
+  claim_folder(manifest, options.out_dir);
+  std::vector<const ExperimentCase*> mine;
+  for (const ExperimentCase& c : manifest.cases)
+    if (c.index % options.shard_count == options.shard_index - 1) mine.push_back(&c);
+  RunnerOutcome outcome;
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  double ran_seconds = 0;
+  for (std::size_t k = 0; k < mine.size(); ++k) {
+    const ExperimentCase& c = *mine[k];
+    const std::string case_dir = join_path(join_path(options.out_dir, "cases"), c.id);
+    const std::string summary_path = join_path(case_dir, "summary.json");
+    progress << "[" << k + 1 << "/" << mine.size() << "] " << c.mesh_label << " / " << c.method_label << ": ";
+    if (options.resume && fs::exists(summary_path)) {
+      ++outcome.skipped;
+      progress << "done earlier, skipped\n";
+      continue;
+    }
+    create_output_folder(case_dir);
+    const auto case_start = Clock::now();
+    const Json summary = run_case(manifest, c, options, case_dir);
+    if (summary["status"] == "interrupted") {  // no summary: --resume runs the case again
+      progress << "interrupted; run again with --resume to finish the remaining cases\n";
+      outcome.interrupted = true;
+      break;
+    }
+    write_file_atomically(summary_path, [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+    ran_seconds += std::chrono::duration<double>(Clock::now() - case_start).count();
+    ++outcome.ran;
+    if (summary["status"] == "error") ++outcome.failed;
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    const double left = ran_seconds / outcome.ran * static_cast<double>(mine.size() - k - 1);
+    progress << summary["status"].get<std::string>();
+    if (summary.contains("iterations"))
+      progress << ", " << summary["iterations"].get<int>() << " iterations, "
+               << format_seconds(summary["seconds"].get<double>());
+    if (summary["status"] == "error" || summary["status"] == "missing")
+      progress << " (" << summary["message"].get<std::string>() << ")";
+    progress << "; elapsed " << format_seconds(elapsed) << ", about " << format_seconds(left) << " left\n";
+  }
+  return outcome;
+}
+
+void merge_experiments(const std::vector<std::string>& sources, const std::string& out_dir, std::ostream& progress) {
+  if (sources.empty()) throw OptionsError("merge needs at least one results folder");
+  std::string manifest_text;
+  for (const std::string& source : sources) {
+    const std::string path = join_path(source, "manifest.json");
+    if (!fs::exists(path)) throw InputError(source + ": not a results folder (no manifest.json)");
+    const std::string text = read_text_file(path);
+    if (manifest_text.empty()) manifest_text = text;
+    if (text != manifest_text) throw InputError(source + ": holds results of a different manifest than " + sources[0]);
+  }
+  Manifest manifest = parse_manifest(manifest_text, join_path(sources[0], "manifest.json"));
+  claim_folder(manifest, out_dir);
+  int copied = 0;
+  for (const std::string& source : sources) {
+    const fs::path cases = fs::path(source) / "cases";
+    if (!fs::exists(cases)) continue;
+    for (const auto& entry : fs::directory_iterator(cases)) {
+      const fs::path summary = entry.path() / "summary.json";
+      if (!fs::exists(summary)) continue;  // an unfinished case
+      const fs::path target = fs::path(out_dir) / "cases" / entry.path().filename();
+      if (fs::exists(target) && fs::equivalent(entry.path(), target)) continue;  // merging into a source
+      if (fs::exists(target / "summary.json")) {
+        const Json a = Json::parse(read_text_file(summary.string())),
+                   b = Json::parse(read_text_file((target / "summary.json").string()));
+        if (a["status"] != b["status"] || a.value("iterations", -1) != b.value("iterations", -1))
+          throw InputError(source + ": case " + entry.path().filename().string() +
+                           " is also in another folder with a different result");
+        continue;
+      }
+      create_output_folder(target.string());
+      for (const auto& file : fs::directory_iterator(entry.path()))
+        fs::copy_file(file.path(), target / file.path().filename(), fs::copy_options::overwrite_existing);
+      ++copied;
+    }
+  }
+  progress << "merged " << copied << " cases into " << out_dir << '\n';
+}
+
+}  // namespace akvf
