@@ -26,9 +26,9 @@ struct DeformOptions {
   std::string preconditioner = "akvf";         // a name of preconditioners_3d()
   std::string line_search = "backtracking";
   std::string acceleration = "auto";
-  double weight = 1e5;          // w of the soft constraints (unit rest volume); > 0
-  bool hard = false;            // hard constraints instead of the penalty
-  double cg_tol = 0;            // > 0: Jacobi-CG to this relative residual instead of factoring
+  double weight = 1e5;           // w of the soft constraints (unit rest volume); > 0
+  bool hard = false;             // hard constraints instead of the penalty
+  double cg_tol = 0;             // > 0: Jacobi-CG to this relative residual instead of factoring
   bool akvf_as_written = false;  // AKVF as §6.2 states it (K + c I only), for comparison
   double grad_tol = 1e-3;
   int max_iters = 100;  // Figure 8 runs 100 iterations

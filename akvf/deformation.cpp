@@ -60,9 +60,8 @@ std::vector<IterationCallback> at_input_scale(const std::vector<IterationCallbac
   if (scale == 1) return callbacks;
   std::vector<IterationCallback> wrapped;
   for (const IterationCallback& callback : callbacks)
-    wrapped.push_back([callback, scale](const IterationSummary& row, const Eigen::VectorXd& x) {
-      return callback(row, x / scale);
-    });
+    wrapped.push_back(
+        [callback, scale](const IterationSummary& row, const Eigen::VectorXd& x) { return callback(row, x / scale); });
   return wrapped;
 }
 

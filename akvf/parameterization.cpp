@@ -136,7 +136,7 @@ void warm_start(const ParamConfig& config, ParamSetup* setup) {
   std::snprintf(reached, sizeof reached, "%d AKVF iterations, status %s, energy %.10g, gradient norm %.3e",
                 last.iteration, to_string(warm.status).c_str(), last.energy, last.grad_norm);
   const std::string map = warm.status == TerminationStatus::kConverged ? "the symmetric Dirichlet minimizer"
-                                                                        : "the symmetric Dirichlet map reached";
+                                                                       : "the symmetric Dirichlet map reached";
   for (IterationSummary& row : warm.trace) row.warm_start = true;
   setup->warm_start = std::move(warm);
   if (!is_normal_termination(setup->warm_start.status) || !usable_start(*setup->objective, setup->warm_start.x)) {
@@ -145,9 +145,9 @@ void warm_start(const ParamConfig& config, ParamSetup* setup) {
     return;
   }
   setup->x0 = setup->warm_start.x;
-  setup->warnings.push_back(config.energy + " overflows (energy or gradient not finite) at the initial map; starting from " +
-                            map + " instead (warm start: " + reached +
-                            "; its rows open the trace, marked warm-start, and its time is counted)");
+  setup->warnings.push_back(
+      config.energy + " overflows (energy or gradient not finite) at the initial map; starting from " + map +
+      " instead (warm start: " + reached + "; its rows open the trace, marked warm-start, and its time is counted)");
 }
 
 }  // namespace

@@ -13,6 +13,8 @@
 //   };
 //   akvf::register_autodiff_energy<2>("conformal", "...", 1.0, Conformal{});
 //
+// Use exp, log, sqrt, pow(x, number) and the arithmetic operators: the
+// functor is instantiated with double, ceres::Jet and Eigen::AutoDiffScalar.
 // The functor is called only for det J > 0 (value() returns +infinity
 // otherwise, so line searches back off as for the built-in energies). It must
 // be rotation-invariant, D(R J) = D(J) = D(J R) for rotations R, as every
@@ -22,12 +24,30 @@
 
 #include <Eigen/Core>
 #include <Eigen/LU>
-#include <unsupported/Eigen/AutoDiff>
 #include <limits>
 #include <string>
+#include <unsupported/Eigen/AutoDiff>
 #include <utility>
 
 #include "framework/distortion_density.h"
+
+// Eigen's pow(AutoDiffScalar, exponent) takes the exponent as the scalar of
+// the derivatives, which for nested AutoDiffScalars is itself an
+// AutoDiffScalar, so pow(x, 2.0 / 3) does not compile there. This overload
+// takes a plain exponent at the nested level (found by argument-dependent
+// lookup, preferred for a double or int exponent): d x^y = y x^(y-1) dx.
+namespace Eigen {
+template <typename InnerDerivatives, int N>
+inline AutoDiffScalar<Matrix<AutoDiffScalar<InnerDerivatives>, N, 1>> pow(
+    const AutoDiffScalar<Matrix<AutoDiffScalar<InnerDerivatives>, N, 1>>& x, double y) {
+  using Inner = AutoDiffScalar<InnerDerivatives>;
+  const Inner value = pow(x.value(), y);
+  const Inner slope = y * pow(x.value(), y - 1);
+  Matrix<Inner, N, 1> derivatives = x.derivatives();
+  for (int i = 0; i < N; ++i) derivatives[i] = derivatives[i] * slope;
+  return AutoDiffScalar<Matrix<Inner, N, 1>>(value, derivatives);
+}
+}  // namespace Eigen
 
 namespace akvf {
 
@@ -72,7 +92,8 @@ class AutodiffDensity final : public DistortionDensity<Dim>, public SingularValu
     for (int k = 0; k < kEntries; ++k) {
       const Inner entry(J(k % Dim, k / Dim), kEntries, k);
       Eigen::Matrix<Inner, kEntries, 1> seed;
-      for (int i = 0; i < kEntries; ++i) seed[i] = Inner(i == k ? 1.0 : 0.0, Eigen::Matrix<double, kEntries, 1>::Zero());
+      for (int i = 0; i < kEntries; ++i)
+        seed[i] = Inner(i == k ? 1.0 : 0.0, Eigen::Matrix<double, kEntries, 1>::Zero());
       X(k % Dim, k / Dim) = Outer(entry, seed);
     }
     const Outer d = functor_(X);

@@ -37,7 +37,7 @@ long long obj_corner_index(const TextReader& reader, std::string_view token, lon
 RawElements read_obj_elements(std::istream& in, const std::string& file_name, int corners, const std::string& element,
                               const std::string& advice, Warnings* warnings) {
   // Statements of the OBJ format that carry nothing a distortion energy uses.
-  static const std::set<std::string, std::less<>> kIgnored = {"vt", "vn", "vp", "g",  "o",
+  static const std::set<std::string, std::less<>> kIgnored = {"vt", "vn",     "vp",     "g", "o",
                                                               "s",  "usemtl", "mtllib", "l", "p"};
   TextReader reader(in, file_name);
   RawElements raw;

@@ -48,9 +48,9 @@ DiskMesh compact(const TriMesh& input, const std::string& name) {
   out.mesh.F = input.F.unaryExpr([&](int v) { return new_index[v]; });
   out.mesh.index_base = input.index_base;
   if (dropped > 0)
-    out.warnings.push_back(name + ": dropped " + std::to_string(dropped) + " unreferenced vertices (first: " +
-                           file_number(first_dropped, input.index_base) + numbering_note(input.index_base) +
-                           "); they get UV (0, 0) in the output");
+    out.warnings.push_back(name + ": dropped " + std::to_string(dropped) +
+                           " unreferenced vertices (first: " + file_number(first_dropped, input.index_base) +
+                           numbering_note(input.index_base) + "); they get UV (0, 0) in the output");
   return out;
 }
 

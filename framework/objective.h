@@ -14,7 +14,9 @@ inline std::string first_non_finite_entry(const Eigen::VectorXd& v, const std::s
   for (Eigen::Index i = 0; i < v.size(); ++i)
     if (!std::isfinite(v[i]))
       return what + " " + std::to_string(i) + " of " + std::to_string(v.size()) + " is " +
-             (std::isnan(v[i]) ? "NaN" : v[i] > 0 ? "+inf" : "-inf");
+             (std::isnan(v[i]) ? "NaN"
+              : v[i] > 0       ? "+inf"
+                               : "-inf");
   return "";
 }
 

@@ -181,7 +181,8 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
       const std::string note = bad_element_note(objective, x);
       x.swap(previous);
       return finish(TerminationStatus::kNumericalFailure,
-                    "iteration " + std::to_string(k) + " produced a non-finite energy or gradient or an inverted element (" +
+                    "iteration " + std::to_string(k) +
+                        " produced a non-finite energy or gradient or an inverted element (" +
                         std::to_string(row.flips) + " inverted)" + note + "; the previous iterate is kept");
     }
     if (notify(row)) return finish(TerminationStatus::kUserStopped, "stopped by a callback");

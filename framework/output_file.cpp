@@ -102,8 +102,7 @@ void check_output_writable(const std::string& path) {
                       (type == S_IFBLK ? std::string("block device") : std::string("socket")) +
                       "; give a regular file, a FIFO or a character device");
   if (type != 0 && type != S_IFREG) {  // character device or FIFO: written in place
-    if (::access(target.c_str(), W_OK) != 0)
-      throw OutputError("cannot write " + shown + ": " + std::strerror(errno));
+    if (::access(target.c_str(), W_OK) != 0) throw OutputError("cannot write " + shown + ": " + std::strerror(errno));
     return;
   }
   const std::string folder = folder_of(target);

@@ -84,8 +84,8 @@ PreparedTetMesh prepare_tet_mesh(const TetMesh& input, const std::string& name, 
     for (int k = 0; k < 4; ++k) {
       if (input.T(t, k) < 0 || input.T(t, k) >= input.num_vertices())
         throw ValidationError(name + ": tet " + file_number(t, b) + " has vertex index " +
-                              file_number(input.T(t, k), b) + " out of range (" +
-                              std::to_string(input.num_vertices()) + " vertices)" + note);
+                              file_number(input.T(t, k), b) + " out of range (" + std::to_string(input.num_vertices()) +
+                              " vertices)" + note);
       used[input.T(t, k)] = 1;
       for (int l = 0; l < k; ++l)
         if (input.T(t, k) == input.T(t, l))

@@ -173,7 +173,9 @@ TEST_CASE("plot draws trace files as SVG lines; a malformed trace names its line
   fs::remove_all(dir);
 }
 
-TEST_CASE("the same run twice, with 1 and with 2 threads: byte-identical UV OBJ and SVG, identical traces but for the clocks") {
+TEST_CASE(
+    "the same run twice, with 1 and with 2 threads: byte-identical UV OBJ and SVG, identical traces but for the "
+    "clocks") {
   const fs::path dir = scratch_dir("determinism");
   // A 24 x 24 bumpy grid written as OBJ.
   std::ostringstream obj;
@@ -181,7 +183,8 @@ TEST_CASE("the same run twice, with 1 and with 2 threads: byte-identical UV OBJ 
   const int n = 24;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
-      obj << "v " << i / double(n - 1) << ' ' << j / double(n - 1) << ' ' << 0.2 * std::sin(5.0 * i / n) * std::cos(4.0 * j / n) << '\n';
+      obj << "v " << i / double(n - 1) << ' ' << j / double(n - 1) << ' '
+          << 0.2 * std::sin(5.0 * i / n) * std::cos(4.0 * j / n) << '\n';
   for (int j = 0; j + 1 < n; ++j)
     for (int i = 0; i + 1 < n; ++i) {
       const int a = j * n + i + 1, b = a + 1, c = a + n, d = c + 1;

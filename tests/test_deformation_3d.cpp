@@ -6,10 +6,10 @@
 #include <Eigen/Geometry>
 #include <random>
 
-#include "energies/distortion_energies_3d.h"
 #include "akvf/catalog.h"
 #include "akvf/deformation.h"
 #include "akvf/threads.h"
+#include "energies/distortion_energies_3d.h"
 #include "framework/constrained_objective.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "preconditioners/energy_scale.h"

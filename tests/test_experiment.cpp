@@ -9,8 +9,8 @@
 
 #include "experiments/cli/akvf_cli.h"
 #include "experiments/cli/exit_codes.h"
-#include "experiments/runner/manifest.h"
 #include "experiments/report/text_utilities.h"
+#include "experiments/runner/manifest.h"
 #include "tests/test_support.h"
 
 namespace fs = std::filesystem;

@@ -21,8 +21,8 @@ namespace {
 // order (element e of the output is element order[e] of the input).
 struct Transform {
   std::string name;
-  std::vector<int> vertex_to;      // empty = identity
-  std::vector<int> element_from;   // empty = identity
+  std::vector<int> vertex_to;                            // empty = identity
+  std::vector<int> element_from;                         // empty = identity
   Eigen::Matrix3d linear = Eigen::Matrix3d::Identity();  // rotation times scale
   Eigen::RowVector3d shift = Eigen::RowVector3d::Zero();
 };
@@ -35,8 +35,7 @@ std::vector<int> random_permutation(int n, unsigned seed) {
 }
 
 std::vector<Transform> transforms(int vertices, int elements) {
-  const Eigen::Matrix3d rotation =
-      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -0.5).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -0.5).normalized()).toRotationMatrix();
   std::vector<Transform> list(6);
   list[0].name = "identity";
   list[1].name = "permuted vertices";
@@ -177,6 +176,7 @@ TEST_CASE("uniform scales from 1e-100 to 1e+100 give the energies and iterations
   }
   akvf::TriMesh tiny = mesh;
   tiny.V *= 1e-320;
-  CHECK(akvf::test::error_message([&] { akvf::prepare_parameterization(tiny, "tiny.obj", config); })
-            .find("tiny.obj: coordinates too small to normalize: the mesh's extent ") == 0);
+  CHECK(akvf::test::error_message([&] {
+          akvf::prepare_parameterization(tiny, "tiny.obj", config);
+        }).find("tiny.obj: coordinates too small to normalize: the mesh's extent ") == 0);
 }

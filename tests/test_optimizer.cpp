@@ -155,9 +155,8 @@ TEST_CASE("a non-finite direction or gradient ends the run with a status naming 
   PoisoningPreconditioner poisoning(3);
   const auto poisoned = akvf::minimize(*setup.objective, poisoning, search, setup.x0, config.optimizer);
   CHECK(poisoned.status == TerminationStatus::kNumericalFailure);
-  CHECK(poisoned.message ==
-        "the preconditioner returned a non-finite direction at iteration 4 (entry 7 of " +
-            std::to_string(setup.x0.size()) + " is NaN); the last finite iterate is kept");
+  CHECK(poisoned.message == "the preconditioner returned a non-finite direction at iteration 4 (entry 7 of " +
+                                std::to_string(setup.x0.size()) + " is NaN); the last finite iterate is kept");
   CHECK(poisoned.trace.back().iteration == 3);
   CHECK(poisoned.x.allFinite());
   CHECK(setup.objective->value(poisoned.x) == poisoned.trace.back().energy);
@@ -183,7 +182,8 @@ TEST_CASE("the distortion objective names the first bad element of an iterate") 
   const Eigen::MatrixXi& F = setup.disk.mesh.F;
   CHECK(objective.first_bad_element(setup.x0).empty());
   auto vertices = [&](int f) {
-    return "(vertices " + std::to_string(F(f, 0)) + ", " + std::to_string(F(f, 1)) + ", " + std::to_string(F(f, 2)) + ")";
+    return "(vertices " + std::to_string(F(f, 0)) + ", " + std::to_string(F(f, 1)) + ", " + std::to_string(F(f, 2)) +
+           ")";
   };
   // The first face (in order) that uses vertex v.
   auto first_face_of = [&](int v) {
@@ -194,9 +194,9 @@ TEST_CASE("the distortion objective names the first bad element of an iterate") 
   Eigen::VectorXd x = setup.x0;
   const int v = F(5, 1);
   x[2 * v + 1] = std::numeric_limits<double>::infinity();
-  CHECK(objective.first_bad_element(x) ==
-        "triangle " + std::to_string(first_face_of(v)) + " " + vertices(first_face_of(v)) +
-            " (numbered from 0): a corner has a non-finite coordinate");
+  CHECK(objective.first_bad_element(x) == "triangle " + std::to_string(first_face_of(v)) + " " +
+                                              vertices(first_face_of(v)) +
+                                              " (numbered from 0): a corner has a non-finite coordinate");
   // Collapse triangle 0 onto its first corner: det = 0.
   x = setup.x0;
   for (int k = 1; k < 3; ++k) x.segment<2>(2 * F(0, k)) = x.segment<2>(2 * F(0, 0));

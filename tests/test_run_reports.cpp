@@ -7,12 +7,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "akvf/parameterization.h"
 #include "experiments/cli/akvf_cli.h"
 #include "experiments/cli/exit_codes.h"
-#include "experiments/runner/manifest.h"
-#include "akvf/parameterization.h"
 #include "experiments/cli/run_reporting.h"
 #include "experiments/report/trace_csv.h"
+#include "experiments/runner/manifest.h"
 #include "tests/test_support.h"
 
 namespace fs = std::filesystem;
@@ -40,7 +40,7 @@ TEST_CASE("the exponential energies' warm start has its own limit, counts its ti
   ParamConfig config;
   config.energy = "exp-symmetric-dirichlet";
   config.energy_settings.exponent = 60;  // exp(60 D) overflows at the Tutte map's worst triangles
-  config.optimizer.max_iterations = 2;  // the run's limit no longer caps the warm start
+  config.optimizer.max_iterations = 2;   // the run's limit no longer caps the warm start
   config.warm_start_max_iterations = 1000;
   const akvf::TriMesh mesh = akvf::test::bumpy_disk(9, 9);
   akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "b.obj", config);
@@ -112,14 +112,13 @@ TEST_CASE("a manifest cannot read outside --data-dir unless it says so") {
   CHECK(error_of(R"({"meshes": [{"label": "A", "file": "../../x.obj"}], )" + methods + "}") ==
         "m.json: meshes[0].file: \"../../x.obj\" leaves the data folder (absolute, or \"..\" past its top); give a "
         "path inside --data-dir, or set \"allow_outside_data_dir\": true in the manifest");
-  CHECK(error_of(R"({"meshes": [{"label": "A", "file": "/etc/x.obj"}], )" + methods + "}").find(
-            "m.json: meshes[0].file: \"/etc/x.obj\" leaves the data folder") == 0);
+  CHECK(error_of(R"({"meshes": [{"label": "A", "file": "/etc/x.obj"}], )" + methods + "}")
+            .find("m.json: meshes[0].file: \"/etc/x.obj\" leaves the data folder") == 0);
   CHECK(error_of(R"({"meshes": [{"label": "A", "file": "tet/a.mesh"}], "methods": [{"label": "X", "problem": )"
                  R"("deform", "constraints": "../c.txt"}]})")
             .find("m.json: methods[0].constraints: \"../c.txt\" leaves the data folder") == 0);
   CHECK(error_of(R"({"meshes": [{"label": "A", "file": "a/../b.obj"}], )" + methods + "}").empty());
-  CHECK(error_of(R"({"allow_outside_data_dir": true, "meshes": [{"label": "A", "file": "../x.obj"}], )" + methods +
-                 "}")
+  CHECK(error_of(R"({"allow_outside_data_dir": true, "meshes": [{"label": "A", "file": "../x.obj"}], )" + methods + "}")
             .empty());
 
   // A link inside the data folder that leads out of it is refused when the case runs.

@@ -86,8 +86,9 @@ TEST_CASE(".tet: header counts, then 0-based rows") {
         "line 1 of m.tet: expected '#num of vertex: N', found '#vertices 4'");
   CHECK(error_message([] { tet_file("#num of vertex: 4\n#num of tetrahedra: 1\n0 0 0\n"); }) ==
         "line 3 of m.tet: file ends after 1 of 4 vertices");
-  CHECK(error_message([] { tet_file("#num of vertex: 4\n#num of tetrahedra: 1000000000000\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"); }) ==
-        "line 6 of m.tet: file ends after 0 of 1000000000000 tetrahedra");
+  CHECK(error_message([] {
+          tet_file("#num of vertex: 4\n#num of tetrahedra: 1000000000000\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+        }) == "line 6 of m.tet: file ends after 0 of 1000000000000 tetrahedra");
   CHECK(error_message([] {
           tet_file("#num of vertex: 4\n#num of tetrahedra: 1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 1 2 4\n");
         }) == "line 7 of m.tet: tet 0 uses vertex 4, out of range (4 vertices) (numbered from 0)");
@@ -135,7 +136,8 @@ TEST_CASE("tet validation: orientation, degeneracy, components, indices") {
   TetMesh mixed = two_tets();
   mixed.T.row(1) = Eigen::RowVector4i(2, 1, 3, 4);
   CHECK(validation_error(mixed) ==
-        "m: inconsistent orientation: tet 1 is positively oriented but tet 2 negatively (numbered from 1, as in the file); "
+        "m: inconsistent orientation: tet 1 is positively oriented but tet 2 negatively (numbered from 1, as in the "
+        "file); "
         "every tet must have the same "
         "orientation");
 

@@ -6,8 +6,8 @@
 #include <random>
 #include <sstream>
 
-#include "energies/invariant_density_3d.h"
 #include "akvf/deformation.h"
+#include "energies/invariant_density_3d.h"
 #include "framework/constrained_objective.h"
 #include "framework/constraints_io.h"
 #include "framework/distortion_objective.h"

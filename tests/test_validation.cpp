@@ -97,14 +97,16 @@ TEST_CASE("an edge shared by three faces is non-manifold") {
   m.V.row(m.num_vertices() - 1) << 0.5, 0.5, 1;
   m.F.conservativeResize(m.num_faces() + 1, 3);
   m.F.row(m.num_faces() - 1) << 0, 4, m.num_vertices() - 1;  // edge (0, 4) is a diagonal of two faces
-  CHECK(validation_error(m) == "m.obj: edge (0, 4) is shared by 3 faces (numbered from 0); the mesh must be edge-manifold");
+  CHECK(validation_error(m) ==
+        "m.obj: edge (0, 4) is shared by 3 faces (numbered from 0); the mesh must be edge-manifold");
 }
 
 TEST_CASE("inconsistent orientation is rejected") {
   TriMesh m = akvf::test::grid_disk(3, 3);
   m.F.row(1) = Eigen::RowVector3i(m.F(1, 0), m.F(1, 2), m.F(1, 1));
   CHECK(validation_error(m) ==
-        "m.obj: faces 0 and 1 traverse edge (0, 4) in the same direction (numbered from 0); faces must be consistently oriented");
+        "m.obj: faces 0 and 1 traverse edge (0, 4) in the same direction (numbered from 0); faces must be consistently "
+        "oriented");
 }
 
 TEST_CASE("two fans meeting at a vertex are non-manifold") {
@@ -115,14 +117,16 @@ TEST_CASE("two fans meeting at a vertex are non-manifold") {
   m.F.resize(2, 3);
   m.F << 0, 1, 2, 0, 3, 4;
   // They form one component only through vertex 0.
-  CHECK(validation_error(m) == "m.obj: vertex 0 (numbered from 0) is non-manifold: two separate boundary fans meet there");
+  CHECK(validation_error(m) ==
+        "m.obj: vertex 0 (numbered from 0) is non-manifold: two separate boundary fans meet there");
   // Messages use the input's numbering even when unreferenced vertices are dropped.
   TriMesh padded = m;
   padded.V.conservativeResize(6, 3);
   padded.V.bottomRows(5) = m.V;
   padded.V.row(0) << 9, 9, 9;
   padded.F = m.F.array() + 1;
-  CHECK(validation_error(padded) == "m.obj: vertex 1 (numbered from 0) is non-manifold: two separate boundary fans meet there");
+  CHECK(validation_error(padded) ==
+        "m.obj: vertex 1 (numbered from 0) is non-manifold: two separate boundary fans meet there");
 }
 
 TEST_CASE("a zero-area face is rejected with its vertices") {
@@ -156,7 +160,8 @@ TEST_CASE("unreferenced vertices are dropped with a warning and mapped back") {
   CHECK(disk.input_vertex.front() == 1);
   CHECK(disk.input_vertex.back() == 9);
   REQUIRE(disk.warnings.size() == 1);
-  CHECK(disk.warnings[0] == "p.obj: dropped 2 unreferenced vertices (first: 0 (numbered from 0)); they get UV (0, 0) in the output");
+  CHECK(disk.warnings[0] ==
+        "p.obj: dropped 2 unreferenced vertices (first: 0 (numbered from 0)); they get UV (0, 0) in the output");
 }
 
 TEST_CASE("midpoint subdivision keeps a disk a disk and multiplies the faces by 4 per round") {

@@ -62,7 +62,8 @@ int main() try {
     });
     const akvf::ParameterizeResult result = akvf::parameterize(V, F, options);
     std::cout << name << ": " << akvf::to_string(result.status) << " after " << result.iterations()
-              << " iterations, energy " << result.energy() << ", grad " << result.grad_norm() << ", " << max_flips << " inverted at any iterate\n";
+              << " iterations, energy " << result.energy() << ", grad " << result.grad_norm() << ", " << max_flips
+              << " inverted at any iterate\n";
     ok &= result.status == akvf::TerminationStatus::kConverged && max_flips == 0;
   }
   return ok ? 0 : 1;

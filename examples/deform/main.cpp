@@ -60,8 +60,9 @@ int main() try {
   int max_flips = 0;
   for (const akvf::IterationSummary& row : result.trace) max_flips = std::max(max_flips, row.flips);
   std::cout << akvf::to_string(result.status) << " after " << result.iterations() << " iterations: energy "
-            << result.trace.front().energy << " -> " << result.energy() << ", top centre at z = "
-            << result.x.col(2).maxCoeff() << ", " << max_flips << " inverted tets at any iterate\n";
+            << result.trace.front().energy << " -> " << result.energy()
+            << ", top centre at z = " << result.x.col(2).maxCoeff() << ", " << max_flips
+            << " inverted tets at any iterate\n";
   return akvf::is_normal_termination(result.status) && max_flips == 0 && result.energy() < result.trace.front().energy
              ? 0
              : 1;

@@ -51,8 +51,8 @@ int main(int argc, char** argv) try {
   const akvf::ParameterizeResult result = akvf::parameterize(V, F);
   std::cout << "akvf " << akvf::kVersion << ": " << akvf::to_string(result.status) << " after " << result.iterations()
             << " iterations, energy " << result.energy() << ", " << result.statistics.preconditioner.factorizations
-            << " factorizations; uv " << result.uv.rows() << " x " << result.uv.cols() << ", "
-            << inverted(result.uv, F) << " inverted\n";
+            << " factorizations; uv " << result.uv.rows() << " x " << result.uv.cols() << ", " << inverted(result.uv, F)
+            << " inverted\n";
   const bool ok = result.status == akvf::TerminationStatus::kConverged && result.uv.rows() == V.rows() &&
                   result.uv.cols() == 2 && inverted(result.uv, F) == 0;
   return ok ? 0 : 1;

@@ -11,8 +11,8 @@
 #include <map>
 #include <memory>
 
-#include "experiments/cli/native_runtime.h"
 #include "akvf/parameterization.h"
+#include "experiments/cli/native_runtime.h"
 #include "framework/mesh_io.h"
 #include "preconditioners/akvf_preconditioner.h"
 #include "solvers/backtracking_line_search.h"

@@ -1,12 +1,13 @@
 #include "experiments/cli/deform_command.h"
 
-#include "experiments/cli/command_line.h"
 #include "akvf/deformation.h"
+#include "akvf/options.h"
+#include "akvf/slim_cube.h"
+#include "akvf/threads.h"
+#include "experiments/cli/command_line.h"
 #include "experiments/cli/exit_codes.h"
 #include "experiments/cli/file_arguments.h"
 #include "experiments/cli/run_reporting.h"
-#include "akvf/slim_cube.h"
-#include "akvf/threads.h"
 #include "experiments/report/trace_csv.h"
 #include "framework/constraints_io.h"
 #include "framework/error.h"
@@ -56,29 +57,28 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   const std::string preset = cl.text("preset", "");
   if (cl.has("preset") && preset != "slim-cube")
     throw OptionsError("unknown preset '" + preset + "' (valid: slim-cube)");
-  DeformConfig config;
-  config.energy = cl.text("energy", config.energy);
-  config.energy_settings.exponent = cl.real("exponent", config.energy_settings.exponent);
-  if (!(config.energy_settings.exponent > 0)) throw OptionsError("option --exponent must be > 0");
-  config.preconditioner = cl.text("precond", config.preconditioner);
-  const double cg_tolerance = cl.real("cg-tol", 0);
-  if (!(cg_tolerance >= 0 && cg_tolerance < 1)) throw OptionsError("option --cg-tol must be in [0, 1)");
-  config.preconditioner_settings.set_cg_tolerance(cg_tolerance);
-  config.hard_constraints = cl.has("hard");
-  config.akvf_as_written = cl.has("akvf-as-written");
-  config.acceleration = cl.text("acceleration", config.acceleration);
-  if (config.hard_constraints && cl.has("weight")) throw OptionsError("option --weight has no effect with --hard");
-  config.weight = cl.real("weight", config.weight);
-  if (!(config.weight > 0)) throw OptionsError("option --weight must be > 0");
-  config.optimizer.max_iterations = cl.integer("max-iters", config.optimizer.max_iterations);
-  config.optimizer.gradient_tolerance = cl.real("grad-tol", config.optimizer.gradient_tolerance);
-  config.optimizer.time_limit = cl.real("time-limit", config.optimizer.time_limit);
+  DeformOptions o;
+  o.energy = cl.text("energy", o.energy);
+  o.exponent = cl.real("exponent", o.exponent);
+  o.preconditioner = cl.text("precond", o.preconditioner);
+  o.cg_tol = cl.real("cg-tol", o.cg_tol);
+  o.hard = cl.has("hard");
+  o.akvf_as_written = cl.has("akvf-as-written");
+  o.acceleration = cl.text("acceleration", o.acceleration);
+  if (o.hard && cl.has("weight")) throw OptionsError("option --weight has no effect with --hard");
+  o.weight = cl.real("weight", o.weight);
+  o.max_iters = cl.integer("max-iters", o.max_iters);
+  o.grad_tol = cl.real("grad-tol", o.grad_tol);
+  o.time_limit = cl.real("time-limit", o.time_limit);
+  o.threads = cl.thread_count();
+  const DeformConfig config = deform_config(o);  // converted and checked as for library users (akvf/options.h)
+  validate(config);
   const std::string out_path = cl.text("out", ""), trace_path = cl.text("trace", "");
   require_extension("--out", out_path, {".mesh", ".vtk"});
   const std::string& path = cl.positional()[0];
   check_file_arguments({{"the input mesh", path}, {"--constraints", cl.text("constraints", "")}},
                        {{"--out", out_path}, {"--trace", trace_path}});
-  const ThreadLimit threads(cl.thread_count());
+  const ThreadLimit threads(config.threads);
 
   Warnings read_warnings;
   const TetMesh input = read_tet_mesh(path, &read_warnings);

@@ -3,12 +3,12 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "akvf/threads.h"
 #include "experiments/cli/command_line.h"
 #include "experiments/cli/exit_codes.h"
 #include "experiments/cli/run_reporting.h"
 #include "experiments/report/experiment_report.h"
 #include "experiments/runner/experiment_runner.h"
-#include "akvf/threads.h"
 #include "framework/error.h"
 
 namespace akvf {
@@ -72,9 +72,12 @@ int experiment_command(const std::vector<std::string>& args, std::ostream& out, 
   const std::vector<std::string>& positional = cl.positional();
   if (positional.empty()) throw OptionsError("expected a manifest, `merge DIR...` or `report DIR` (see --help)");
   if (cl.has("help")) {
-    if (positional[0] == "merge") out << "usage: " << kMergeUsage << '\n';
-    else if (positional[0] == "report") out << "usage: " << kReportUsage << '\n';
-    else out << cl.help();
+    if (positional[0] == "merge")
+      out << "usage: " << kMergeUsage << '\n';
+    else if (positional[0] == "report")
+      out << "usage: " << kReportUsage << '\n';
+    else
+      out << cl.help();
     return kExitOk;
   }
   if (positional[0] == "merge") {

@@ -4,13 +4,14 @@
 #include <filesystem>
 
 #include "akvf/catalog.h"
-#include "experiments/cli/command_line.h"
 #include "akvf/demo_mesh.h"
+#include "akvf/options.h"
+#include "akvf/parameterization.h"
+#include "akvf/threads.h"
+#include "experiments/cli/command_line.h"
 #include "experiments/cli/exit_codes.h"
 #include "experiments/cli/file_arguments.h"
-#include "akvf/parameterization.h"
 #include "experiments/cli/run_reporting.h"
-#include "akvf/threads.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/report/uv_svg.h"
 #include "framework/error.h"
@@ -50,32 +51,28 @@ std::vector<OptionSpec> optimization_options() {
   };
 }
 
+// The command line's values into the API's options; param_config() then
+// converts and checks them (akvf/options.h), as it does for library users.
 ParamConfig config_from(const CommandLine& cl) {
-  ParamConfig config;
-  std::string invalid;
-  config.energy = cl.text("energy", config.energy);
-  config.energy_settings.exponent = cl.real("exponent", config.energy_settings.exponent);
-  if (!(config.energy_settings.exponent > 0)) throw OptionsError("option --exponent must be > 0");
-  config.preconditioner = cl.text("precond", config.preconditioner);
-  config.line_search = cl.text("line-search", config.line_search);
-  config.preconditioner_settings.akvf.factor.reuse_tolerance =
-      cl.real("akvf-reuse", config.preconditioner_settings.akvf.factor.reuse_tolerance);
-  const double tau = config.preconditioner_settings.akvf.factor.reuse_tolerance;
-  if (!(tau >= 0 && tau < 1)) throw OptionsError("option --akvf-reuse must be in [0, 1)");
-  config.acceleration = cl.text("acceleration", config.acceleration);
-  config.line_search_settings.rho = cl.real("ls-rho", config.line_search_settings.rho);
-  if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
-  config.init = parse_tutte_weights(cl.text("init", "tutte"));
+  ParameterizeOptions o;
+  o.energy = cl.text("energy", o.energy);
+  o.exponent = cl.real("exponent", o.exponent);
+  o.preconditioner = cl.text("precond", o.preconditioner);
+  o.line_search = cl.text("line-search", o.line_search);
+  o.acceleration = cl.text("acceleration", o.acceleration);
+  o.akvf_reuse = cl.real("akvf-reuse", o.akvf_reuse);
+  o.ls_rho = cl.real("ls-rho", o.ls_rho);
+  o.init = cl.text("init", o.init);
   const std::string flaps = cl.text("flaps", "on");
   if (flaps != "on" && flaps != "off") throw OptionsError("option --flaps: expected on or off, found '" + flaps + "'");
-  config.optimize_flaps = flaps == "on";
-  config.optimizer.gradient_tolerance = cl.real("grad-tol", config.optimizer.gradient_tolerance);
-  config.optimizer.max_iterations = cl.integer("max-iters", config.optimizer.max_iterations);
-  config.optimizer.time_limit = cl.real("time-limit", config.optimizer.time_limit);
-  if (!config.optimizer.is_valid(&invalid)) throw OptionsError(invalid);
-  config.warm_start_max_iterations = cl.integer("warm-start-iters", config.warm_start_max_iterations);
-  if (config.warm_start_max_iterations < 0) throw OptionsError("option --warm-start-iters must be >= 0");
-  cl.thread_count();  // validates --threads
+  o.flaps = flaps == "on";
+  o.grad_tol = cl.real("grad-tol", o.grad_tol);
+  o.max_iters = cl.integer("max-iters", o.max_iters);
+  o.time_limit = cl.real("time-limit", o.time_limit);
+  o.warm_start_iters = cl.integer("warm-start-iters", o.warm_start_iters);
+  o.threads = cl.thread_count();
+  const ParamConfig config = param_config(o);
+  validate(config);
   return config;
 }
 

@@ -8,11 +8,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "experiments/runner/experiment_runner.h"
 #include "experiments/report/line_plot.h"
-#include "experiments/runner/manifest.h"
 #include "experiments/report/text_utilities.h"
 #include "experiments/report/trace_csv.h"
+#include "experiments/runner/experiment_runner.h"
+#include "experiments/runner/manifest.h"
 #include "framework/error.h"
 #include "framework/output_file.h"
 

@@ -21,7 +21,11 @@ void write_trace_csv(std::ostream& out, const OptimizerResult& result) {
     const IterationSummary& s = result.trace[i];
     out << s.iteration << ',' << s.seconds << ',' << s.energy << ',' << s.grad_norm << ',' << s.step << ','
         << s.ls_evals << ',' << s.flips << ',' << s.max_step << ',' << s.precond_seconds << ',' << s.line_search_seconds
-        << ',' << (i + 1 == result.trace.size() ? status_cell : s.warm_start ? "warm-start" : "") << '\n';
+        << ','
+        << (i + 1 == result.trace.size() ? status_cell
+            : s.warm_start               ? "warm-start"
+                                         : "")
+        << '\n';
   }
 }
 

@@ -12,11 +12,11 @@
 
 #include "akvf/deformation.h"
 #include "akvf/parameterization.h"
-#include "experiments/report/uv_svg.h"
-#include "experiments/cli/run_reporting.h"
 #include "akvf/slim_cube.h"
+#include "experiments/cli/run_reporting.h"
 #include "experiments/report/text_utilities.h"
 #include "experiments/report/trace_csv.h"
+#include "experiments/report/uv_svg.h"
 #include "framework/constraints_io.h"
 #include "framework/error.h"
 #include "framework/mesh_io.h"
@@ -157,10 +157,9 @@ CaseResult run_deform_case(const ExperimentCase& c, const std::string& mesh_path
   const CaseSettings& s = c.settings;
   const TetMesh mesh = read_tet_mesh(mesh_path);
   const PositionConstraints constraints =
-      s.preset.empty()
-          ? read_constraints_file(data_path(manifest, data_dir, s.constraints, "constraints of " + c.id),
-                                  mesh.num_vertices())
-          : slim_cube_constraints(mesh);
+      s.preset.empty() ? read_constraints_file(data_path(manifest, data_dir, s.constraints, "constraints of " + c.id),
+                                               mesh.num_vertices())
+                       : slim_cube_constraints(mesh);
   DeformConfig config;
   apply_common_settings(s, &config);
   config.weight = s.weight;
@@ -190,7 +189,8 @@ Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOpt
     return summary;
   }
   try {
-    const std::string path = data_path(manifest, options.data_dir, mesh.file, "meshes[" + std::to_string(c.mesh_index) + "].file");
+    const std::string path =
+        data_path(manifest, options.data_dir, mesh.file, "meshes[" + std::to_string(c.mesh_index) + "].file");
     reset_peak_memory();
     const CaseResult r = c.settings.problem == "param" ? run_param_case(c, mesh, path, case_dir)
                                                        : run_deform_case(c, path, manifest, options.data_dir);

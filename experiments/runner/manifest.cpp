@@ -40,8 +40,9 @@ std::string text_of(const Context& c, const Json& value, const std::string& key)
 std::string Context::data_file(const Json& value, const std::string& key) const {
   const std::string path = text_of(*this, value, key);
   if (!allow_outside_data_dir && !stays_inside_folder(path))
-    fail(key, "\"" + path + "\" leaves the data folder (absolute, or \"..\" past its top); give a path inside "
-              "--data-dir, or set \"allow_outside_data_dir\": true in the manifest");
+    fail(key, "\"" + path +
+                  "\" leaves the data folder (absolute, or \"..\" past its top); give a path inside "
+                  "--data-dir, or set \"allow_outside_data_dir\": true in the manifest");
   return path;
 }
 

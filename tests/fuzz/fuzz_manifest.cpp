@@ -4,6 +4,5 @@
 #include "tests/fuzz/fuzz_text_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return akvf::fuzz::run_on_text(data, size,
-                                 [](const std::string& text) { akvf::parse_manifest(text, "fuzz.json"); });
+  return akvf::fuzz::run_on_text(data, size, [](const std::string& text) { akvf::parse_manifest(text, "fuzz.json"); });
 }

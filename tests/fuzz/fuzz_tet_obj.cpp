@@ -3,7 +3,9 @@
 #include "tests/fuzz/fuzz_mesh_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return akvf::fuzz::fuzz_tet_reader(data, size, [](std::istream& in, const std::string& file_name) {
+  return akvf::fuzz::fuzz_tet_reader(
+      data, size,
+      [](std::istream& in, const std::string& file_name) {
         akvf::Warnings warnings;  // the unknown-statement path too
         return akvf::read_tet_obj(in, file_name, &warnings);
       },
