@@ -2,7 +2,8 @@
 // paper's meshes (read from $AKVF_DATA_DIR or ../shared/meshes):
 //   K assembly (Eq. 5), energy + gradient, numeric factorization, solve, one
 //   whole iteration with a factorization (update, solve, flip-free line
-//   search, gradient).
+//   search, gradient); a density's energy, gradient and projected Hessian,
+//   hand-written against automatic differentiation.
 // Run: ./build/akvf_benchmarks [--benchmark_filter=horse]
 #include <benchmark/benchmark.h>
 
@@ -12,6 +13,8 @@
 #include <memory>
 
 #include "akvf/parameterization.h"
+#include "energies/autodiff_density.h"
+#include "energies/symmetric_dirichlet.h"
 #include "experiments/cli/native_runtime.h"
 #include "framework/mesh_io.h"
 #include "preconditioners/akvf_preconditioner.h"
@@ -150,6 +153,39 @@ void BM_WholeIteration(benchmark::State& state, const std::string& mesh) {
   }
 }
 
+// The symmetric Dirichlet density written once as a template, for automatic
+// differentiation (energies/autodiff_density.h).
+struct TemplateSymmetricDirichlet {
+  template <class T>
+  T operator()(const Eigen::Matrix<T, 2, 2>& J) const {
+    const T det = J.determinant();
+    return J.squaredNorm() * (T(1.0) + T(1.0) / (det * det));
+  }
+};
+
+// Energy, gradient and projected Hessian of every face of the mesh at a
+// typical iterate, on one thread: the hand-written density against the same
+// density differentiated automatically.
+void BM_DensityDerivatives(benchmark::State& state, const std::string& mesh, bool automatic) {
+  REQUIRE_FIXTURE(state, mesh);
+  const akvf::ParamObjective& objective = *f->setup.objective;
+  const akvf::SymmetricDirichlet2 hand_written;
+  const akvf::AutodiffDensity<2, TemplateSymmetricDirichlet> differentiated("sd", 4, {});
+  const akvf::DistortionDensity2& density =
+      automatic ? static_cast<const akvf::DistortionDensity2&>(differentiated) : hand_written;
+  std::vector<Eigen::Matrix2d> jacobians;
+  for (int e = 0; e < objective.faces().rows(); ++e) jacobians.push_back(objective.jacobian(f->x, e));
+  for (auto _ : state) {
+    double sum = 0;
+    Eigen::Matrix2d gradient;
+    for (const Eigen::Matrix2d& J : jacobians) {
+      sum += density.value_and_gradient(J, &gradient);
+      sum += density.projected_hessian(J)(0, 0) + gradient(0, 0);
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+}
+
 void register_all() {
   for (const std::string mesh : {"camelhead.off", "horse_b.obj"}) {
     benchmark::RegisterBenchmark(("KillingAssembly/" + mesh).c_str(), BM_KillingAssembly, mesh)
@@ -165,6 +201,11 @@ void register_all() {
     benchmark::RegisterBenchmark(("SymmetricProduct/" + mesh).c_str(), BM_SymmetricProduct, mesh)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("WholeIteration/" + mesh).c_str(), BM_WholeIteration, mesh)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("DensityDerivatives/hand-written/" + mesh).c_str(), BM_DensityDerivatives, mesh,
+                                 false)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("DensityDerivatives/autodiff/" + mesh).c_str(), BM_DensityDerivatives, mesh, true)
         ->Unit(benchmark::kMillisecond);
   }
 }
