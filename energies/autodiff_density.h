@@ -78,7 +78,10 @@ class AutodiffDensity final : public DistortionDensity<Dim>, public SingularValu
     for (int k = 0; k < kEntries; ++k) X(k % Dim, k / Dim) = Dual(J(k % Dim, k / Dim), k);  // vec(J), column-major
     const Dual d = functor_(X);
     for (int k = 0; k < kEntries; ++k) (*dD_dJ)(k % Dim, k / Dim) = d.v[k];
-    return d.a;
+    // The value from the double evaluation, as value() gives it: a dual
+    // number's value may differ in the last bit, and the line search and the
+    // trace must see the same energy.
+    return functor_(J);
   }
 
   Hessian hessian(const Matrix& J) const override {

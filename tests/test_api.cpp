@@ -9,6 +9,7 @@
 
 #include "akvf/akvf.h"
 #include "experiments/cli/akvf_cli.h"
+#include "tests/cli_support.h"
 #include "tests/test_support.h"
 
 namespace fs = std::filesystem;
@@ -45,12 +46,7 @@ TEST_CASE("the API gives the command line's bits for the same mesh and options")
   fs::remove_all(dir);
   fs::create_directories(dir);
   const akvf::TriMesh mesh = akvf::test::bumpy_disk(10, 9);
-  {
-    std::ofstream out(dir / "m.obj");
-    out.precision(17);
-    for (int v = 0; v < mesh.num_vertices(); ++v) out << "v " << mesh.V.row(v) << '\n';
-    for (int f = 0; f < mesh.num_faces(); ++f) out << "f " << (mesh.F.row(f).array() + 1) << '\n';
-  }
+  akvf::test::write_obj(dir / "m.obj", mesh);
   std::ostringstream out, err;
   REQUIRE(akvf::run_akvf({"param", (dir / "m.obj").string(), "-q", "--precond", "newton", "--out",
                           (dir / "uv.obj").string(), "--trace", (dir / "t.csv").string()},

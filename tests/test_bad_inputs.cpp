@@ -16,6 +16,7 @@
 #include "framework/mesh_io.h"
 #include "framework/tet_mesh_io.h"
 #include "framework/tet_validation.h"
+#include "tests/cli_support.h"
 #include "tests/test_support.h"
 
 namespace fs = std::filesystem;
@@ -40,12 +41,7 @@ akvf::TriMesh off(const std::string& text) {
   return akvf::read_off(in, "m.off");
 }
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("akvf_bad_inputs_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return akvf::test::scratch_dir("bad_inputs_" + name); }
 
 }  // namespace
 

@@ -7,37 +7,20 @@
 #include <sstream>
 #include <vector>
 
-#include "experiments/cli/akvf_cli.h"
+#include "tests/cli_support.h"
 #include "experiments/cli/exit_codes.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-  int code;
-  std::string out, err;
-};
+using akvf::test::read_text;
+using akvf::test::write_text;
+using Outcome = akvf::test::CliOutcome;
 
-Outcome akvf_run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = akvf::run_akvf(args, out, err);
-  return {code, out.str(), err.str()};
-}
+Outcome akvf_run(const std::vector<std::string>& args) { return akvf::test::run_cli(args); }
 
-fs::path scratch_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("akvf_cli_test_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+fs::path scratch_dir(const std::string& name) { return akvf::test::scratch_dir("cli_test_" + name); }
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "experiments/cli/akvf_cli.h"
+#include "tests/cli_support.h"
 #include "experiments/cli/exit_codes.h"
 #include "experiments/report/text_utilities.h"
 #include "experiments/runner/manifest.h"
@@ -21,23 +22,10 @@ std::string manifest_error(const std::string& text) {
   return akvf::test::error_message([&] { akvf::parse_manifest(text, "m.json"); });
 }
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("akvf_experiment_test_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return akvf::test::scratch_dir("experiment_test_" + name); }
 
-std::string read_text(const fs::path& path) { return akvf::read_text_file(path.string()); }
-
-void write_obj(const fs::path& path, const akvf::TriMesh& mesh) {
-  std::ofstream out(path);
-  out.precision(17);
-  for (int v = 0; v < mesh.V.rows(); ++v)
-    out << "v " << mesh.V(v, 0) << ' ' << mesh.V(v, 1) << ' ' << mesh.V(v, 2) << '\n';
-  for (int f = 0; f < mesh.F.rows(); ++f)
-    out << "f " << mesh.F(f, 0) + 1 << ' ' << mesh.F(f, 1) + 1 << ' ' << mesh.F(f, 2) + 1 << '\n';
-}
+using akvf::test::read_text;
+using akvf::test::write_obj;
 
 int akvf_run(const std::vector<std::string>& args, std::string* out = nullptr, std::string* err = nullptr) {
   std::ostringstream o, e;

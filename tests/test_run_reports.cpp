@@ -13,6 +13,7 @@
 #include "experiments/cli/run_reporting.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/runner/manifest.h"
+#include "tests/cli_support.h"
 #include "tests/test_support.h"
 
 namespace fs = std::filesystem;
@@ -21,12 +22,7 @@ using akvf::TerminationStatus;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("akvf_run_reports_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return akvf::test::scratch_dir("run_reports_" + name); }
 
 std::string trace_text(const akvf::OptimizerResult& result) {
   std::ostringstream out;

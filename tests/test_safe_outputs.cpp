@@ -11,41 +11,24 @@
 #include <sstream>
 #include <thread>
 
-#include "experiments/cli/akvf_cli.h"
 #include "experiments/cli/exit_codes.h"
 #include "experiments/cli/file_arguments.h"
 #include "framework/error.h"
 #include "framework/output_file.h"
+#include "tests/cli_support.h"
 #include "tests/test_support.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-  int code;
-  std::string out, err;
-};
+using akvf::test::read_text;
+using akvf::test::write_text;
+using Outcome = akvf::test::CliOutcome;
 
-Outcome akvf_run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = akvf::run_akvf(args, out, err);
-  return {code, out.str(), err.str()};
-}
+Outcome akvf_run(const std::vector<std::string>& args) { return akvf::test::run_cli(args); }
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("akvf_safe_outputs_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+fs::path scratch(const std::string& name) { return akvf::test::scratch_dir("safe_outputs_" + name); }
 
 const std::string kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0.2\nv 0 1 0\nv 0.5 0.5 0.1\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n";
 const std::string kTets =
