@@ -105,7 +105,7 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
 
 Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
   const Eigen::MatrixXd UV = unstack_uv(x);
-  const Eigen::MatrixXi& F = setup.objective->faces();
+  const Eigen::MatrixXi& F = setup.objective->elements();
   double uv_area = 0;
   for (int f = 0; f < F.rows(); ++f) {
     const Eigen::RowVector2d e1 = UV.row(F(f, 1)) - UV.row(F(f, 0)), e2 = UV.row(F(f, 2)) - UV.row(F(f, 0));
@@ -128,7 +128,7 @@ void warm_start(const ParamConfig& config, ParamSetup* setup) {
   sd_config.optimizer.max_iterations = config.warm_start_max_iterations;
   ParamSetup sd_setup = *setup;
   sd_setup.objective =
-      std::make_shared<ParamObjective>(setup->objective->faces(), setup->objective->rest(),
+      std::make_shared<ParamObjective>(setup->objective->elements(), setup->objective->rest(),
                                        energies_2d().create(kWarmStartEnergy, {}), setup->objective->num_vertices());
   OptimizerResult warm = run_from_start(sd_setup, sd_config, {}).result;
   const IterationSummary& last = warm.trace.back();

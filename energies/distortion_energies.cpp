@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "energies/symmetric_dirichlet.h"
+#include "energies/exponent.h"
 #include "framework/error.h"
 
 namespace akvf {
@@ -26,11 +27,6 @@ InvariantDerivatives amips_argument(double s, double g) {
   const double g2 = g * g;
   return {s / (4 * g) + (g + 1 / g) / 4, 1 / (4 * g), -s / (4 * g2) + (1 - 1 / g2) / 4, 0, -1 / (4 * g2),
           (s + 1) / (2 * g2 * g)};
-}
-
-double checked_exponent(double k) {
-  if (!(k > 0)) throw OptionsError("energy exponent must be > 0");
-  return k;
 }
 
 }  // namespace

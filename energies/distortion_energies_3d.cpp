@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "energies/exponent.h"
 #include "framework/error.h"
 
 namespace akvf {
@@ -12,11 +13,6 @@ namespace akvf {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-double checked_exponent(double k) {
-  if (!(k > 0)) throw OptionsError("energy exponent must be > 0");
-  return k;
-}
 
 // Derivatives of exp(k u) from those of u.
 InvariantDerivatives3 exponentiate(const InvariantDerivatives3& u, double k) {

@@ -1,7 +1,7 @@
 #pragma once
 // The per-element distortion density D(J) of Eq. (1), as a function of the
 // element's Jacobian J (Dim x Dim). A density knows nothing of meshes; the
-// assembler (param_objective.h) sums A_hat_f D(J_f) over elements.
+// assembler (distortion_objective.h) sums A_hat_f D(J_f) over elements.
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <string>

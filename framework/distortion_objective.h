@@ -56,7 +56,8 @@ class DistortionObjective final : public Objective {
   // D(J_e) per element; +infinity for inverted elements.
   Eigen::VectorXd face_distortion(const Eigen::VectorXd& x) const;
 
-  const Eigen::MatrixXi& faces() const { return elements_; }
+  // #E by D + 1: the faces (D = 2) or tets (D = 3).
+  const Eigen::MatrixXi& elements() const { return elements_; }
   const Rest& rest() const { return rest_; }
   // M_e / sum M: the weight of element e in E.
   const Eigen::VectorXd& weights() const { return weights_; }

@@ -5,7 +5,7 @@
 namespace akvf {
 
 AkvfPreconditioner3D::AkvfPreconditioner3D(const TetObjective& objective, Akvf3DOptions options)
-    : FactoredPreconditioner3D(objective.faces(), objective.num_vertices(), options.factor),
+    : FactoredPreconditioner3D(objective.elements(), objective.num_vertices(), options.factor),
       objective_(objective),
       options_(options),
       // Energy curvature (weights V_t / sum V) over K's, 4 sum V, along a shear.
@@ -13,7 +13,7 @@ AkvfPreconditioner3D::AkvfPreconditioner3D(const TetObjective& objective, Akvf3D
                                     : 1.0) {}
 
 void AkvfPreconditioner3D::assemble(const OptimizationState& state, ElementMatrix3D* matrix) {
-  assemble_killing_operator_3d(objective_.faces(), state.x, matrix);
+  assemble_killing_operator_3d(objective_.elements(), state.x, matrix);
   if (options_.secant_scaling) {
     if (previous_x_.size() == state.x.size()) {
       const Eigen::VectorXd dx = state.x - previous_x_;

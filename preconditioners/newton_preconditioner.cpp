@@ -7,7 +7,7 @@ namespace akvf {
 template <int D>
 NewtonPreconditioner<D>::NewtonPreconditioner(const DistortionObjective<D>& objective, FactorOptions options,
                                               MotionProjection projection)
-    : FactoredPreconditioner<D>(objective.faces(), objective.num_vertices(), std::move(options)),
+    : FactoredPreconditioner<D>(objective.elements(), objective.num_vertices(), std::move(options)),
       objective_(objective),
       projection_(projection) {}
 

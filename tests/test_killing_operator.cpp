@@ -147,7 +147,7 @@ TEST_CASE("the AKVF direction is K^+ grad E, a descent direction free of rigid m
   akvf::AkvfPreconditioner2D preconditioner(objective);
   preconditioner.update({x, g, 0.0, 1});
   preconditioner.apply(g, &d);
-  const Eigen::MatrixXd K = dense_killing(objective.faces(), x, objective.rest().area, true);
+  const Eigen::MatrixXd K = dense_killing(objective.elements(), x, objective.rest().area, true);
   const Eigen::MatrixXd pseudo_inverse = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(K).pseudoInverse();
   const Eigen::VectorXd reference = pseudo_inverse * g;
   CHECK((d - reference).norm() <= 1e-5 * reference.norm());
@@ -172,7 +172,7 @@ TEST_CASE("with factorization reuse the direction solves K(x) d = g to the toler
   preconditioner.apply(g, &d);
   CHECK(preconditioner.statistics().factorizations == 1);
   CHECK(preconditioner.statistics().reused_solves == 1);
-  const Eigen::MatrixXd K = dense_killing(objective.faces(), x2, objective.rest().area, true);
+  const Eigen::MatrixXd K = dense_killing(objective.elements(), x2, objective.rest().area, true);
   CHECK((K * d - g).norm() <= 0.011 * g.norm());
   CHECK(g.dot(d) > 0);
   CHECK((akvf::rigid_motion_basis_2d(x2).transpose() * d).norm() <= 1e-10 * d.norm());

@@ -64,9 +64,9 @@ Fixture* fixture(const std::string& mesh) {
 void BM_KillingAssembly(benchmark::State& state, const std::string& mesh) {
   REQUIRE_FIXTURE(state, mesh);
   const akvf::ParamObjective& objective = *f->setup.objective;
-  akvf::ElementMatrix2D K(objective.faces(), objective.num_vertices());
+  akvf::ElementMatrix2D K(objective.elements(), objective.num_vertices());
   for (auto _ : state) {
-    akvf::assemble_killing_operator(objective.faces(), f->x, objective.rest().area, true, &K);
+    akvf::assemble_killing_operator(objective.elements(), f->x, objective.rest().area, true, &K);
     benchmark::DoNotOptimize(K.upper().valuePtr());
   }
 }
@@ -85,8 +85,8 @@ void BM_Energy(benchmark::State& state, const std::string& mesh) {
 // K(x) + eps I of the fixture's iterate, as the AKVF preconditioner factors it.
 akvf::ElementMatrix2D shifted_killing_operator(const Fixture& f) {
   const akvf::ParamObjective& objective = *f.setup.objective;
-  akvf::ElementMatrix2D K(objective.faces(), objective.num_vertices());
-  akvf::assemble_killing_operator(objective.faces(), f.x, objective.rest().area, true, &K);
+  akvf::ElementMatrix2D K(objective.elements(), objective.num_vertices());
+  akvf::assemble_killing_operator(objective.elements(), f.x, objective.rest().area, true, &K);
   K.add_to_diagonal(1e-8 * K.mean_diagonal());
   return K;
 }
@@ -174,7 +174,7 @@ void BM_DensityDerivatives(benchmark::State& state, const std::string& mesh, boo
   const akvf::DistortionDensity2& density =
       automatic ? static_cast<const akvf::DistortionDensity2&>(differentiated) : hand_written;
   std::vector<Eigen::Matrix2d> jacobians;
-  for (int e = 0; e < objective.faces().rows(); ++e) jacobians.push_back(objective.jacobian(f->x, e));
+  for (int e = 0; e < objective.elements().rows(); ++e) jacobians.push_back(objective.jacobian(f->x, e));
   for (auto _ : state) {
     double sum = 0;
     Eigen::Matrix2d gradient;
