@@ -9,7 +9,7 @@ namespace akvf {
 
 bool DeformOptions::is_valid(std::string* error) const {
   try {
-    validate(deform_config(*this));
+    check_options(*this);
     return true;
   } catch (const OptionsError& e) {
     if (error) *error = e.what();
@@ -30,8 +30,8 @@ DeformResult deform(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const Po
     if (constraints.vertices[c] < 0 || constraints.vertices[c] >= V.rows())
       throw InputError("constraint " + std::to_string(c) + ": vertex index " + std::to_string(constraints.vertices[c]) +
                        " out of range (" + std::to_string(V.rows()) + " vertices, 0-based)");
+  check_options(options);
   const DeformConfig config = deform_config(options);
-  validate(config);
   TetMesh mesh;
   mesh.V = V;
   mesh.T = T;

@@ -9,7 +9,7 @@ namespace akvf {
 
 bool ParameterizeOptions::is_valid(std::string* error) const {
   try {
-    validate(param_config(*this));
+    check_options(*this);
     return true;
   } catch (const OptionsError& e) {
     if (error) *error = e.what();
@@ -24,8 +24,8 @@ struct Parameterizer::State {
   ParamSetup setup;
 
   void prepare() {
+    check_options(options);
     config = param_config(options);
-    validate(config);
     setup = prepare_parameterization(mesh, "mesh", config);
   }
 
@@ -88,8 +88,8 @@ void Parameterizer::set_options(const ParameterizeOptions& options) {
     if (new_start) {
       state_->prepare();
     } else {
+      check_options(options);
       state_->config = param_config(options);
-      validate(state_->config);
     }
   } catch (...) {
     state_->options = previous;

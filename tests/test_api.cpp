@@ -121,7 +121,7 @@ TEST_CASE("options are validated in one place, with the messages the command lin
   options = {};
   options.akvf_reuse = 1;
   CHECK_FALSE(options.is_valid(&error));
-  CHECK(error == "akvf reuse tolerance must be in [0, 1), found 1");
+  CHECK(error == "akvf_reuse must be in [0, 1), found 1");
   options = {};
   options.threads = -1;
   CHECK_FALSE(options.is_valid(&error));
@@ -132,7 +132,7 @@ TEST_CASE("options are validated in one place, with the messages the command lin
   CHECK(deform.is_valid());
   deform.weight = 0;
   CHECK_FALSE(deform.is_valid(&error));
-  CHECK(error == "constraint weight must be > 0, found 0");
+  CHECK(error == "weight must be > 0, found 0");
   const akvf::TriMesh mesh = akvf::test::bumpy_disk(5, 5);
   CHECK_THROWS_AS(akvf::parameterize(mesh.V, mesh.F, options), akvf::OptionsError);
 }

@@ -7,8 +7,8 @@
 #include <sstream>
 #include <vector>
 
-#include "tests/cli_support.h"
 #include "experiments/cli/exit_codes.h"
+#include "tests/cli_support.h"
 
 namespace fs = std::filesystem;
 

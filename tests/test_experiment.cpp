@@ -8,10 +8,10 @@
 #include <sstream>
 
 #include "experiments/cli/akvf_cli.h"
-#include "tests/cli_support.h"
 #include "experiments/cli/exit_codes.h"
 #include "experiments/report/text_utilities.h"
 #include "experiments/runner/manifest.h"
+#include "tests/cli_support.h"
 #include "tests/test_support.h"
 
 namespace fs = std::filesystem;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "akvf/catalog.h"
+#include "akvf/option_schema.h"
 #include "akvf/version.h"
 #include "experiments/cli/command_line.h"
 #include "experiments/cli/deform_command.h"
@@ -42,11 +43,17 @@ void print_entries(std::ostream& out, const char* title, const RegistryType& reg
 }
 
 int list_command(const std::vector<std::string>& args, std::ostream& out) {
-  akvf::CommandLine cl("akvf list\n\nLists the energies, preconditioners, solvers and line searches by name.",
-                       {{"help", "", "show this help"}});
+  akvf::CommandLine cl(
+      "akvf list [--options]\n\nLists the energies, preconditioners, solvers and line searches by name.",
+      {{"options", "", "print the options reference instead (Markdown, docs/options.md)"},
+       {"help", "", "show this help"}});
   cl.parse(args);
   if (cl.has("help")) {
     out << cl.help();
+    return akvf::kExitOk;
+  }
+  if (cl.has("options")) {
+    out << akvf::options_reference_markdown();
     return akvf::kExitOk;
   }
   if (!cl.positional().empty()) throw akvf::OptionsError("list takes no arguments (see --help)");

@@ -84,6 +84,25 @@ int CommandLine::thread_count() const {
   return n;
 }
 
+namespace {
+
+// `text` in lines of at most `width` characters (words are not split), the
+// lines after the first indented by `indent` spaces.
+std::string wrapped(const std::string& text, std::size_t indent, std::size_t width) {
+  std::istringstream words(text);
+  std::string out, line, word;
+  while (words >> word) {
+    if (!line.empty() && indent + line.size() + 1 + word.size() > width) {
+      out += line + "\n" + std::string(indent, ' ');
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  return out + line;
+}
+
+}  // namespace
+
 std::string CommandLine::help() const {
   std::ostringstream out;
   out << "usage: " << usage_ << "\n\noptions:\n";
@@ -93,7 +112,7 @@ std::string CommandLine::help() const {
       left.resize(26, ' ');
     else
       left += "\n" + std::string(26, ' ');
-    out << left << spec.help << '\n';
+    out << left << wrapped(spec.help, 26, 100) << '\n';
   }
   return out.str();
 }

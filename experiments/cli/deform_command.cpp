@@ -8,6 +8,7 @@
 #include "experiments/cli/exit_codes.h"
 #include "experiments/cli/file_arguments.h"
 #include "experiments/cli/run_reporting.h"
+#include "experiments/cli/schema_options.h"
 #include "experiments/report/trace_csv.h"
 #include "framework/constraints_io.h"
 #include "framework/error.h"
@@ -17,36 +18,20 @@
 namespace akvf {
 
 int deform_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  std::vector<OptionSpec> specs = {
+      {"constraints", "FILE", "one `vertex_index x y z` per line (0-based), # comments"},
+      {"preset", "NAME", "slim-cube: the SLIM paper's twisted cube (Figure 8)"},
+      {"out", "OUT.mesh", "write the deformed mesh (.mesh MEDIT or .vtk VTK legacy)"},
+      {"trace", "TRACE.csv", "one CSV row per iteration; flips counts inverted tets"},
+  };
+  for (const OptionSpec& spec : schema_option_specs(deform_option_fields())) specs.push_back(spec);
+  specs.push_back({"quiet", "", "no per-iteration progress on stderr (also -q)"});
+  specs.push_back({"help", "", "show this help (also -h)"});
   CommandLine cl(
       "akvf deform TETMESH.{mesh,obj,tet} (--constraints FILE | --preset slim-cube) [options]\n\n"
       "Deforms a tet mesh by minimizing a distortion energy plus soft positional constraints\n"
       "w sum |x_i - p_i|^2 from the rest shape, with a flip-free preconditioned descent (Sec. 6.2).",
-      {
-          {"constraints", "FILE", "one `vertex_index x y z` per line (0-based), # comments"},
-          {"preset", "NAME", "slim-cube: the SLIM paper's twisted cube (Figure 8)"},
-          {"weight", "W", "soft constraint weight w (default 1e5)"},
-          {"hard", "",
-           "hard constraints: constrained vertices start at their targets and stay\n"
-           "                          (refused when that inverts a tet)"},
-          {"energy", "NAME", "symmetric-dirichlet (default), exp-symmetric-dirichlet, arap, mips, amips"},
-          {"exponent", "K", "exponent of exp-symmetric-dirichlet and amips (default 1)"},
-          {"precond", "NAME", "akvf (default: K + 1e-4 I), newton, laplacian, slim, identity"},
-          {"akvf-as-written", "",
-           "AKVF as Sec. 6.2 states it: K + c I without the constraints' Hessian or\n"
-           "                          the energy scale (slow; for comparison, docs/design.md)"},
-          {"acceleration", "auto|on|off", "AQP momentum (default auto: on for --precond laplacian only)"},
-          {"cg-tol", "X",
-           "solve with Jacobi-preconditioned CG to relative residual X instead of\n"
-           "                          factoring (the paper uses 0.01; default 0 = factor)"},
-          {"max-iters", "N", "iterations (default 100, as in Figure 8)"},
-          {"grad-tol", "X", "stop when the gradient norm drops below X (default 1e-3)"},
-          {"time-limit", "SECONDS", "stop after this much optimizer time"},
-          {"out", "OUT.mesh", "write the deformed mesh (.mesh MEDIT or .vtk VTK legacy)"},
-          {"trace", "TRACE.csv", "one CSV row per iteration; flips counts inverted tets"},
-          {"threads", "N", "worker threads for the parallel assembly (default 0 = all cores)"},
-          {"quiet", "", "no per-iteration progress on stderr"},
-          {"help", "", "show this help"},
-      });
+      specs);
   cl.parse(args);
   if (cl.has("help")) {
     out << cl.help();
@@ -57,22 +42,9 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   const std::string preset = cl.text("preset", "");
   if (cl.has("preset") && preset != "slim-cube")
     throw OptionsError("unknown preset '" + preset + "' (valid: slim-cube)");
-  DeformOptions o;
-  o.energy = cl.text("energy", o.energy);
-  o.exponent = cl.real("exponent", o.exponent);
-  o.preconditioner = cl.text("precond", o.preconditioner);
-  o.cg_tol = cl.real("cg-tol", o.cg_tol);
-  o.hard = cl.has("hard");
-  o.akvf_as_written = cl.has("akvf-as-written");
-  o.acceleration = cl.text("acceleration", o.acceleration);
-  if (o.hard && cl.has("weight")) throw OptionsError("option --weight has no effect with --hard");
-  o.weight = cl.real("weight", o.weight);
-  o.max_iters = cl.integer("max-iters", o.max_iters);
-  o.grad_tol = cl.real("grad-tol", o.grad_tol);
-  o.time_limit = cl.real("time-limit", o.time_limit);
-  o.threads = cl.thread_count();
-  const DeformConfig config = deform_config(o);  // converted and checked as for library users (akvf/options.h)
-  validate(config);
+  if (cl.has("hard") && cl.has("weight")) throw OptionsError("option --weight has no effect with --hard");
+  // Checked by the schema, converted as for library users (akvf/options.h).
+  const DeformConfig config = deform_config(schema_options_from(cl, deform_option_fields()));
   const std::string out_path = cl.text("out", ""), trace_path = cl.text("trace", "");
   require_extension("--out", out_path, {".mesh", ".vtk"});
   const std::string& path = cl.positional()[0];

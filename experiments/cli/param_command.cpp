@@ -12,6 +12,7 @@
 #include "experiments/cli/exit_codes.h"
 #include "experiments/cli/file_arguments.h"
 #include "experiments/cli/run_reporting.h"
+#include "experiments/cli/schema_options.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/report/uv_svg.h"
 #include "framework/error.h"
@@ -27,53 +28,16 @@ struct Outputs {
 };
 
 std::vector<OptionSpec> optimization_options() {
-  return {
-      {"energy", "NAME", "distortion energy (default symmetric-dirichlet; see `akvf list`)"},
-      {"exponent", "K", "exponent of exp-symmetric-dirichlet and amips (default 1)"},
-      {"precond", "NAME", "akvf (default), newton, laplacian, slim, identity, or the solver lbfgs"},
-      {"line-search", "NAME", "backtracking (default) or wolfe-bisection"},
-      {"acceleration", "auto|on|off", "AQP momentum (default auto: on for --precond laplacian only)"},
-      {"akvf-reuse", "TAU",
-       "AKVF: reuse the last factorization through CG to relative residual TAU\n"
-       "                          (default 0.03; 0 = factor K every iteration, as in Algorithm 1)"},
-      {"ls-rho", "X", "backtracking shrink factor (default 0.5; the paper's text says 0.9)"},
-      {"init", "NAME", "initial map: tutte (uniform weights, default) or cotan"},
-      {"flaps", "on|off", "flap optimization of Sec. 5.4 after the Tutte map (default on)"},
-      {"warm-start-iters", "N",
-       "iteration limit of the symmetric Dirichlet warm start of energies that are\n"
-       "                          infinite at the initial map (default 1000)"},
-      {"grad-tol", "X", "stop when the gradient norm drops below X (default 1e-3)"},
-      {"max-iters", "N", "stop after N iterations (default 1000)"},
-      {"time-limit", "SECONDS", "stop after this much optimizer time (default none)"},
-      {"threads", "N", "worker threads for the parallel assembly (default 0 = all cores)"},
-      {"quiet", "", "no per-iteration progress on stderr"},
-      {"help", "", "show this help"},
-  };
+  std::vector<OptionSpec> specs = schema_option_specs(parameterize_option_fields());
+  specs.push_back({"quiet", "", "no per-iteration progress on stderr (also -q)"});
+  specs.push_back({"help", "", "show this help (also -h)"});
+  return specs;
 }
 
-// The command line's values into the API's options; param_config() then
-// converts and checks them (akvf/options.h), as it does for library users.
+// The command line's values into the API's options, checked by the schema,
+// then converted as for library users (akvf/options.h).
 ParamConfig config_from(const CommandLine& cl) {
-  ParameterizeOptions o;
-  o.energy = cl.text("energy", o.energy);
-  o.exponent = cl.real("exponent", o.exponent);
-  o.preconditioner = cl.text("precond", o.preconditioner);
-  o.line_search = cl.text("line-search", o.line_search);
-  o.acceleration = cl.text("acceleration", o.acceleration);
-  o.akvf_reuse = cl.real("akvf-reuse", o.akvf_reuse);
-  o.ls_rho = cl.real("ls-rho", o.ls_rho);
-  o.init = cl.text("init", o.init);
-  const std::string flaps = cl.text("flaps", "on");
-  if (flaps != "on" && flaps != "off") throw OptionsError("option --flaps: expected on or off, found '" + flaps + "'");
-  o.flaps = flaps == "on";
-  o.grad_tol = cl.real("grad-tol", o.grad_tol);
-  o.max_iters = cl.integer("max-iters", o.max_iters);
-  o.time_limit = cl.real("time-limit", o.time_limit);
-  o.warm_start_iters = cl.integer("warm-start-iters", o.warm_start_iters);
-  o.threads = cl.thread_count();
-  const ParamConfig config = param_config(o);
-  validate(config);
-  return config;
+  return param_config(schema_options_from(cl, parameterize_option_fields()));
 }
 
 int run_and_write(const TriMesh& input, const std::string& name, const ParamConfig& config, const Outputs& outputs,
@@ -129,7 +93,7 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   require_extension("--out", outputs.obj, {".obj"});
   check_file_arguments({{"the input mesh", path}},
                        {{"--out", outputs.obj}, {"--trace", outputs.trace}, {"--svg", outputs.svg}});
-  const ThreadLimit threads(cl.thread_count());
+  const ThreadLimit threads(config.threads);
   Warnings warnings;
   const TriMesh input = read_triangle_mesh(path, &warnings);
   for (const auto& warning : warnings) err << "warning: " << warning << '\n';
@@ -157,7 +121,7 @@ int demo_command(const std::vector<std::string>& args, std::ostream& out, std::o
   const Outputs outputs{(dir / "demo_uv.obj").string(), (dir / "demo_trace.csv").string(),
                         (dir / "demo_layout.svg").string()};
   check_file_arguments({}, {{"the UV OBJ", outputs.obj}, {"the trace", outputs.trace}, {"the layout", outputs.svg}});
-  const ThreadLimit threads(cl.thread_count());
+  const ThreadLimit threads(config.threads);
   const int code = run_and_write(bent_bar(), "bent-bar", config, outputs, cl.has("quiet"), out, err);
   out << "wrote " << (dir / "demo_uv.obj").string() << ", " << (dir / "demo_trace.csv").string() << ", "
       << (dir / "demo_layout.svg").string() << '\n';

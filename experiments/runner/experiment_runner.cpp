@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "akvf/deformation.h"
+#include "akvf/options.h"
 #include "akvf/parameterization.h"
 #include "akvf/slim_cube.h"
 #include "experiments/cli/run_reporting.h"
@@ -71,36 +72,33 @@ Json machine_record() {
   return machine;
 }
 
+// The case's options as the schema writes them (numbers as numbers, switches
+// as booleans), with the problem and its constraints.
+template <class Options>
+void record_options(const std::vector<OptionField<Options>>& fields, const Options& options, Json* out) {
+  for (const auto& field : fields) {
+    const std::string text = field.format(options);
+    if (field.kind == OptionKind::kNumber || field.kind == OptionKind::kInteger) {
+      const double value = std::stod(text);
+      (*out)[field.key] = std::isfinite(value) ? Json(value) : Json(text);
+    } else if (field.kind == OptionKind::kSwitch) {
+      (*out)[field.key] = text == "true";
+    } else {
+      (*out)[field.key] = text;
+    }
+  }
+}
+
 Json settings_record(const CaseSettings& s) {
-  Json j = {{"problem", s.problem},   {"energy", s.energy},           {"exponent", s.exponent},
-            {"precond", s.precond},   {"line_search", s.line_search}, {"acceleration", s.acceleration},
-            {"grad_tol", s.grad_tol}, {"max_iters", s.max_iters},     {"time_limit", s.time_limit}};
+  Json j = {{"problem", s.problem}};
   if (s.problem == "deform") {
+    record_options(deform_option_fields(), s.deform, &j);
     j["preset"] = s.preset;
     j["constraints"] = s.constraints;
-    j["weight"] = s.weight;
-    j["cg_tol"] = s.cg_tol;
+  } else {
+    record_options(parameterize_option_fields(), s.param, &j);
   }
   return j;
-}
-
-OptimizerOptions stopping_rule(const CaseSettings& s) {
-  OptimizerOptions o;
-  o.gradient_tolerance = s.grad_tol;
-  o.max_iterations = s.max_iters;
-  o.time_limit = s.time_limit;
-  return o;
-}
-
-// The settings param and deform configs share (same member names in both).
-template <class Config>
-void apply_common_settings(const CaseSettings& s, Config* config) {
-  config->energy = s.energy;
-  config->energy_settings.exponent = s.exponent;
-  config->preconditioner = s.precond;
-  config->line_search = s.line_search;
-  config->acceleration = s.acceleration;
-  config->optimizer = stopping_rule(s);
 }
 
 struct CaseResult {
@@ -112,8 +110,7 @@ struct CaseResult {
 CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, const std::string& mesh_path,
                           const std::string& case_dir) {
   const CaseSettings& s = c.settings;
-  ParamConfig config;
-  apply_common_settings(s, &config);
+  const ParamConfig config = param_config(s.param);
   const ParamSetup setup =
       prepare_parameterization(subdivide_midpoint(read_triangle_mesh(mesh_path), mesh.subdivide), mesh_path, config);
   std::vector<IterationCallback> callbacks;
@@ -160,14 +157,11 @@ CaseResult run_deform_case(const ExperimentCase& c, const std::string& mesh_path
       s.preset.empty() ? read_constraints_file(data_path(manifest, data_dir, s.constraints, "constraints of " + c.id),
                                                mesh.num_vertices())
                        : slim_cube_constraints(mesh);
-  DeformConfig config;
-  apply_common_settings(s, &config);
-  config.weight = s.weight;
-  config.preconditioner_settings.set_cg_tolerance(s.cg_tol);
+  const DeformConfig config = deform_config(s.deform);
   const DeformRun run = run_deformation(mesh, mesh_path, constraints, config);
   CaseResult out;
   out.result = run.result;
-  out.lower_bound = energies_3d().create(s.energy, {s.exponent})->lower_bound();
+  out.lower_bound = energies_3d().create(s.deform.energy, {s.deform.exponent})->lower_bound();
   out.vertices = run.prepared.mesh.num_vertices();
   out.elements = run.prepared.mesh.num_tets();
   return out;

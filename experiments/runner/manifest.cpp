@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "akvf/catalog.h"
+#include "akvf/option_schema.h"
 #include "experiments/report/text_utilities.h"
 #include "framework/error.h"
 
@@ -31,9 +32,16 @@ struct Context {
   std::string data_file(const Json& value, const std::string& key) const;
 };
 
-const std::set<std::string> kCaseKeys = {"problem",      "energy",   "exponent",  "precond",    "line_search",
-                                         "acceleration", "grad_tol", "max_iters", "time_limit", "preset",
-                                         "constraints",  "weight",   "cg_tol",    "snapshots"};
+// Keys of a case that are not options: the problem, its constraints, snapshots.
+const std::set<std::string> kCaseOwnKeys = {"problem", "preset", "constraints", "snapshots"};
+
+// Every key a case may have: the options of both problems and its own.
+std::set<std::string> case_keys() {
+  std::set<std::string> keys = kCaseOwnKeys;
+  for (const auto& field : parameterize_option_fields()) keys.insert(field.key);
+  for (const auto& field : deform_option_fields()) keys.insert(field.key);
+  return keys;
+}
 
 std::string text_of(const Context& c, const Json& value, const std::string& key);
 
@@ -44,6 +52,13 @@ std::string Context::data_file(const Json& value, const std::string& key) const 
                   "\" leaves the data folder (absolute, or \"..\" past its top); give a path inside "
                   "--data-dir, or set \"allow_outside_data_dir\": true in the manifest");
   return path;
+}
+
+std::string number_text(double value) {
+  std::ostringstream text;
+  text.precision(17);
+  text << value;
+  return text.str();
 }
 
 std::string join(const std::set<std::string>& names) {
@@ -67,6 +82,40 @@ int integer_of(const Context& c, const Json& value, const std::string& key) {
   return value.get<int>();
 }
 
+// The JSON value of an option as the text its schema field parses; the
+// JSON type must fit the field's kind.
+template <class Options>
+std::string option_text(const Context& c, const OptionField<Options>& field, const Json& value,
+                        const std::string& where) {
+  switch (field.kind) {
+    case OptionKind::kText:
+      if (value.is_boolean()) return value.get<bool>() ? "on" : "off";  // "flaps": true
+      return text_of(c, value, where);
+    case OptionKind::kNumber:
+      return number_text(number_of(c, value, where));
+    case OptionKind::kInteger:
+      return std::to_string(integer_of(c, value, where));
+    case OptionKind::kSwitch:
+      if (!value.is_boolean()) c.fail(where, "expected true or false, found " + value.dump());
+      return value.get<bool>() ? "true" : "false";
+  }
+  return "";
+}
+
+// Sets `key` on `options` if the schema of that problem has it.
+template <class Options>
+void apply_option(const Context& c, const std::vector<OptionField<Options>>& fields, const std::string& key,
+                  const Json& value, const std::string& where, Options* options) {
+  for (const auto& field : fields) {
+    if (field.key != key) continue;
+    try {
+      field.parse(*options, option_text(c, field, value, where));
+    } catch (const OptionsError& e) {
+      c.fail(where, e.what());
+    }
+  }
+}
+
 // Applies the case keys of `entry` (an object) onto `settings`; other keys
 // are allowed only if listed in `own_keys`.
 void apply_case_keys(const Context& c, const Json& entry, const std::string& path,
@@ -75,24 +124,17 @@ void apply_case_keys(const Context& c, const Json& entry, const std::string& pat
   for (const auto& [key, value] : entry.items()) {
     const std::string where = path + "." + key;
     if (own_keys.count(key)) continue;
-    if (!kCaseKeys.count(key)) {
-      std::set<std::string> valid = kCaseKeys;
+    const std::set<std::string> keys = case_keys();
+    if (!keys.count(key)) {
+      std::set<std::string> valid = keys;
       valid.insert(own_keys.begin(), own_keys.end());
       c.fail(where, "unknown key (valid: " + join(valid) + ")");
     }
     if (key == "problem") s->problem = text_of(c, value, where);
-    if (key == "energy") s->energy = text_of(c, value, where);
-    if (key == "exponent") s->exponent = number_of(c, value, where);
-    if (key == "precond") s->precond = text_of(c, value, where);
-    if (key == "line_search") s->line_search = text_of(c, value, where);
-    if (key == "acceleration") s->acceleration = text_of(c, value, where);
-    if (key == "grad_tol") s->grad_tol = number_of(c, value, where);
-    if (key == "max_iters") s->max_iters = integer_of(c, value, where);
-    if (key == "time_limit") s->time_limit = number_of(c, value, where);
     if (key == "preset") s->preset = text_of(c, value, where);
     if (key == "constraints") s->constraints = c.data_file(value, where);
-    if (key == "weight") s->weight = number_of(c, value, where);
-    if (key == "cg_tol") s->cg_tol = number_of(c, value, where);
+    apply_option(c, parameterize_option_fields(), key, value, where, &s->param);
+    apply_option(c, deform_option_fields(), key, value, where, &s->deform);
     if (key == "snapshots") {
       if (!value.is_array()) c.fail(where, "expected an array of iteration numbers");
       s->snapshots.clear();
@@ -105,36 +147,33 @@ void apply_case_keys(const Context& c, const Json& entry, const std::string& pat
 // Checks names and ranges of one resolved case. `origin(key)` is the path of
 // the entry that set the key (method, mesh or defaults), so the error points
 // at the value that is wrong.
+// Runs the schema's check of every option of the case's problem, naming the
+// key where the value came from.
+template <class Options>
+void check_case_options(const Context& c, const std::vector<OptionField<Options>>& fields, const Options& options,
+                        const std::function<std::string(const std::string&)>& where) {
+  for (const auto& field : fields) {
+    try {
+      field.check(options, "");
+    } catch (const OptionsError& e) {
+      c.fail(where(field.key), e.what());
+    }
+  }
+}
+
 void validate(const Context& c, const CaseSettings& s, const std::function<std::string(const std::string&)>& origin) {
   const auto where = [&](const std::string& key) { return origin(key) + "." + key; };
-  const auto check_name = [&](const std::string& key, const std::function<void()>& require) {
-    try {
-      require();
-    } catch (const OptionsError& e) {
-      c.fail(where(key), e.what());
-    }
-  };
   if (s.problem != "param" && s.problem != "deform")
     c.fail(where("problem"), "expected \"param\" or \"deform\", found \"" + s.problem + "\"");
   if (s.problem == "param") {
-    check_name("energy", [&] { energies_2d().require(s.energy); });
-    check_name("precond", [&] { require_method(s.precond); });
+    check_case_options(c, parameterize_option_fields(), s.param, where);
   } else {
-    check_name("energy", [&] { energies_3d().require(s.energy); });
-    check_name("precond", [&] { preconditioners_3d().require(s.precond); });
+    check_case_options(c, deform_option_fields(), s.deform, where);
     if (s.preset.empty() == s.constraints.empty())
       c.fail(origin("problem"), "a deform case needs exactly one of \"preset\" and \"constraints\"");
     if (!s.preset.empty() && s.preset != "slim-cube")
       c.fail(where("preset"), "unknown preset \"" + s.preset + "\" (valid: slim-cube)");
   }
-  check_name("line_search", [&] { line_searches().require(s.line_search); });
-  check_name("acceleration", [&] { acceleration_eta(s.acceleration, s.precond); });
-  if (!(s.exponent > 0)) c.fail(where("exponent"), "must be > 0");
-  if (!(s.grad_tol >= 0)) c.fail(where("grad_tol"), "must be >= 0");
-  if (s.max_iters < 0) c.fail(where("max_iters"), "must be >= 0");
-  if (!(s.time_limit > 0)) c.fail(where("time_limit"), "must be > 0 seconds");
-  if (!(s.weight > 0)) c.fail(where("weight"), "must be > 0");
-  if (!(s.cg_tol >= 0 && s.cg_tol < 1)) c.fail(where("cg_tol"), "must be in [0, 1)");
 }
 
 int line_of_offset(const std::string& text, std::size_t offset) {

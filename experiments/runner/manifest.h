@@ -10,23 +10,30 @@
 #include <string>
 #include <vector>
 
+#include "akvf/deform.h"
+#include "akvf/parameterize.h"
+
 namespace akvf {
 
 // What one case runs: a mesh (from the data folder) with one method.
 struct CaseSettings {
   std::string problem = "param";  // param (2D) or deform (3D)
-  std::string energy = "symmetric-dirichlet";
-  double exponent = 1;
-  std::string precond = "akvf";  // or "lbfgs" for param
-  std::string line_search = "backtracking";
-  std::string acceleration = "auto";
-  double grad_tol = 1e-3;
-  int max_iters = 1000;
-  double time_limit = 60;      // seconds of optimizer time
+  // The options of the problem, set from the keys of the options schema
+  // (akvf/option_schema.h: every `akvf param` / `akvf deform` option); the
+  // time limit defaults to 60 s of optimizer time here.
+  ParameterizeOptions param = [] {
+    ParameterizeOptions o;
+    o.time_limit = 60;
+    return o;
+  }();
+  DeformOptions deform = [] {
+    DeformOptions o;
+    o.time_limit = 60;
+    o.max_iters = 1000;
+    return o;
+  }();
   std::string preset;          // deform: "slim-cube"
   std::string constraints;     // deform: a constraints file, relative to the data folder
-  double weight = 1e5;         // deform: soft constraint weight
-  double cg_tol = 0;           // deform: CG instead of factoring
   std::vector<int> snapshots;  // param: write the UV layout (SVG) after these iterations
 };
 

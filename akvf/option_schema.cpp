@@ -1,0 +1,229 @@
+#include "akvf/option_schema.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "akvf/catalog.h"
+#include "framework/error.h"
+#include "framework/initialization.h"
+#include "framework/text_reader.h"
+
+namespace akvf {
+
+namespace {
+
+std::string number_text(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+// "NAME must be > 0, found -1"; NAME is how the caller names the option
+// ("exponent", "option --exponent", or nothing where the place is named).
+[[noreturn]] void out_of_range(const std::string& name, const std::string& rule, double found) {
+  throw OptionsError((name.empty() ? "" : name + " ") + "must be " + rule + ", found " + number_text(found));
+}
+
+double parse_number(const std::string& text) {
+  double value = 0;
+  if (text == "inf" || text == "infinity") return std::numeric_limits<double>::infinity();
+  if (!parse_real(text, &value)) throw OptionsError("'" + text + "' is not a finite number");
+  return value;
+}
+
+int parse_int(const std::string& text) {
+  long long value = 0;
+  double real = 0;
+  if (parse_integer(text, &value) && value >= std::numeric_limits<int>::min() &&
+      value <= std::numeric_limits<int>::max())
+    return static_cast<int>(value);
+  if ((parse_integer(text, &value) || (parse_real(text, &real) && real == std::floor(real))))
+    throw OptionsError(text + " is out of range (" + std::to_string(std::numeric_limits<int>::min()) + " to " +
+                       std::to_string(std::numeric_limits<int>::max()) + ")");
+  throw OptionsError("'" + text + "' is not an integer");
+}
+
+bool parse_switch(const std::string& text) {
+  if (text == "true" || text == "on") return true;
+  if (text == "false" || text == "off") return false;
+  throw OptionsError("expected on or off, found '" + text + "'");
+}
+
+template <class O>
+using Check = std::function<void(const O&, const std::string&)>;
+
+template <class O>
+OptionField<O> text_field(std::string key, std::string flag, std::string value_name, std::string help,
+                          std::string O::*member, std::function<void(const O&)> check) {
+  return {std::move(key),
+          std::move(flag),
+          std::move(value_name),
+          OptionKind::kText,
+          std::move(help),
+          [member](O& o, const std::string& text) { o.*member = text; },
+          [member](const O& o) { return o.*member; },
+          [check](const O& o, const std::string&) { check(o); }};
+}
+
+template <class O>
+OptionField<O> number_field(std::string key, std::string flag, std::string value_name, std::string help,
+                            double O::*member, std::string rule, std::function<bool(double)> ok) {
+  return {std::move(key),
+          std::move(flag),
+          std::move(value_name),
+          OptionKind::kNumber,
+          std::move(help),
+          [member](O& o, const std::string& text) { o.*member = parse_number(text); },
+          [member](const O& o) { return number_text(o.*member); },
+          [member, rule, ok](const O& o, const std::string& name) {
+            if (!ok(o.*member)) out_of_range(name, rule, o.*member);
+          }};
+}
+
+template <class O>
+OptionField<O> integer_field(std::string key, std::string flag, std::string value_name, std::string help,
+                             int O::*member, std::string rule, std::function<bool(int)> ok) {
+  return {std::move(key),
+          std::move(flag),
+          std::move(value_name),
+          OptionKind::kInteger,
+          std::move(help),
+          [member](O& o, const std::string& text) { o.*member = parse_int(text); },
+          [member](const O& o) { return std::to_string(o.*member); },
+          [member, rule, ok](const O& o, const std::string& name) {
+            if (!ok(o.*member)) out_of_range(name, rule, o.*member);
+          }};
+}
+
+template <class O>
+OptionField<O> switch_field(std::string key, std::string flag, std::string value_name, std::string help,
+                            bool O::*member) {
+  return {std::move(key),
+          std::move(flag),
+          std::move(value_name),
+          OptionKind::kSwitch,
+          std::move(help),
+          [member](O& o, const std::string& text) { o.*member = parse_switch(text); },
+          [member](const O& o) { return std::string(o.*member ? "true" : "false"); },
+          [](const O&, const std::string&) {}};
+}
+
+// Options both problems have, with the same meaning.
+template <class O>
+void add_common_fields(std::vector<OptionField<O>>* fields) {
+  fields->push_back(number_field<O>("exponent", "exponent", "K", "exponent k of exp-symmetric-dirichlet and amips",
+                                    &O::exponent, "> 0", [](double k) { return k > 0; }));
+  fields->push_back(text_field<O>("line_search", "line-search", "NAME", "backtracking or wolfe-bisection",
+                                  &O::line_search, [](const O& o) { line_searches().require(o.line_search); }));
+  fields->push_back(text_field<O>("acceleration", "acceleration", "auto|on|off",
+                                  "AQP momentum: auto (on for the laplacian preconditioner only), on, off",
+                                  &O::acceleration,
+                                  [](const O& o) { acceleration_eta(o.acceleration, o.preconditioner); }));
+  fields->push_back(number_field<O>("grad_tol", "grad-tol", "X", "stop when the gradient norm drops below X",
+                                    &O::grad_tol, ">= 0", [](double x) { return x >= 0; }));
+  fields->push_back(integer_field<O>("max_iters", "max-iters", "N", "stop after N iterations", &O::max_iters, ">= 0",
+                                     [](int n) { return n >= 0; }));
+  fields->push_back(number_field<O>("time_limit", "time-limit", "SECONDS", "stop after this much optimizer time",
+                                    &O::time_limit, "> 0 seconds", [](double t) { return t > 0; }));
+  fields->push_back(integer_field<O>("threads", "threads", "N", "worker threads (0 = all cores)", &O::threads,
+                                     ">= 0 (0 = all cores)", [](int n) { return n >= 0; }));
+}
+
+}  // namespace
+
+const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields() {
+  using O = ParameterizeOptions;
+  static const std::vector<OptionField<O>> fields = [] {
+    std::vector<OptionField<O>> f;
+    f.push_back(text_field<O>("energy", "energy", "NAME", "distortion energy (see `akvf list`)", &O::energy,
+                              [](const O& o) { energies_2d().require(o.energy); }));
+    f.push_back(text_field<O>("precond", "precond", "NAME",
+                              "akvf, newton, laplacian, slim, identity, or the solver lbfgs", &O::preconditioner,
+                              [](const O& o) { require_method(o.preconditioner); }));
+    add_common_fields(&f);
+    f.push_back(number_field<O>("akvf_reuse", "akvf-reuse", "TAU",
+                                "AKVF: reuse the last factorization through CG to relative residual TAU "
+                                "(0 = factor K every iteration, as in Algorithm 1)",
+                                &O::akvf_reuse, "in [0, 1)", [](double t) { return t >= 0 && t < 1; }));
+    f.push_back(number_field<O>("ls_rho", "ls-rho", "X", "backtracking shrink factor (the paper's text says 0.9)",
+                                &O::ls_rho, "in (0, 1)", [](double r) { return r > 0 && r < 1; }));
+    f.push_back(text_field<O>("init", "init", "NAME", "initial map: tutte (uniform weights) or cotan", &O::init,
+                              [](const O& o) { parse_tutte_weights(o.init); }));
+    OptionField<O> flaps =
+        switch_field<O>("flaps", "flaps", "on|off", "flap optimization of Sec. 5.4 after the Tutte map", &O::flaps);
+    flaps.kind = OptionKind::kText;  // --flaps on|off on the command line
+    flaps.format = [](const O& o) { return std::string(o.flaps ? "on" : "off"); };
+    f.push_back(flaps);
+    f.push_back(integer_field<O>("warm_start_iters", "warm-start-iters", "N",
+                                 "iteration limit of the symmetric Dirichlet warm start of energies that "
+                                 "overflow at the initial map",
+                                 &O::warm_start_iters, ">= 0", [](int n) { return n >= 0; }));
+    return f;
+  }();
+  return fields;
+}
+
+const std::vector<OptionField<DeformOptions>>& deform_option_fields() {
+  using O = DeformOptions;
+  static const std::vector<OptionField<O>> fields = [] {
+    std::vector<OptionField<O>> f;
+    f.push_back(text_field<O>("energy", "energy", "NAME", "3D distortion energy (see `akvf list`)", &O::energy,
+                              [](const O& o) { energies_3d().require(o.energy); }));
+    f.push_back(text_field<O>("precond", "precond", "NAME", "akvf (K + 1e-4 I), newton, laplacian, slim, identity",
+                              &O::preconditioner, [](const O& o) { preconditioners_3d().require(o.preconditioner); }));
+    add_common_fields(&f);
+    f.push_back(number_field<O>("weight", "weight", "W", "soft constraint weight w (at rest volume 1)", &O::weight,
+                                "> 0", [](double w) { return w > 0; }));
+    f.push_back(switch_field<O>("hard", "hard", "",
+                                "hard constraints: the constrained vertices start at their targets and stay "
+                                "(refused when that inverts a tet)",
+                                &O::hard));
+    f.push_back(number_field<O>("cg_tol", "cg-tol", "X",
+                                "solve with Jacobi-preconditioned CG to relative residual X instead of factoring "
+                                "(the paper uses 0.01; 0 = factor)",
+                                &O::cg_tol, "in [0, 1)", [](double t) { return t >= 0 && t < 1; }));
+    f.push_back(switch_field<O>("akvf_as_written", "akvf-as-written", "",
+                                "AKVF as Sec. 6.2 states it: K + c I without the constraints' Hessian or the "
+                                "energy scale (slow; for comparison, docs/design.md)",
+                                &O::akvf_as_written));
+    return f;
+  }();
+  return fields;
+}
+
+namespace {
+
+template <class O>
+void reference_table(std::ostream& out, const std::vector<OptionField<O>>& fields) {
+  const O defaults;
+  out << "| key (API field, manifest, Python) | command line | default | meaning |\n|---|---|---|---|\n";
+  // A '|' inside a cell would end it.
+  auto cell = [](std::string text) {
+    for (std::size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2)) text.insert(at, "\\");
+    return text;
+  };
+  for (const auto& field : fields) {
+    const std::string value = field.format(defaults);
+    out << "| `" << field.key << "` | `--" << field.flag << cell(field.value_name.empty() ? "" : " " + field.value_name)
+        << "` | " << (value == "inf" ? "none" : value) << " | " << cell(field.help) << " |\n";
+  }
+}
+
+}  // namespace
+
+std::string options_reference_markdown() {
+  std::ostringstream out;
+  out << "# Options reference\n\n"
+         "Generated from the options schema (`akvf/option_schema.cpp`) by `akvf list --options`; a test "
+         "checks that this file is what the command prints. Each key is a field of the API's options (the "
+         "API field for `precond` is `preconditioner`), a manifest key and a command-line flag.\n\n"
+         "## `akvf param` and `akvf::ParameterizeOptions`\n\n";
+  reference_table(out, parameterize_option_fields());
+  out << "\n## `akvf deform` and `akvf::DeformOptions`\n\n";
+  reference_table(out, deform_option_fields());
+  out << "\nManifests use the same keys (`docs/experiments.md`); their `time_limit` defaults to 60 s.\n";
+  return out.str();
+}
+
+}  // namespace akvf
