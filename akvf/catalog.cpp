@@ -67,7 +67,8 @@ PreconditionerRegistry3D& mutable_preconditioners_3d() {
             // L's quadratic form along a unit shear is |S|^2 = 2 (weights sum to 1).
             return std::make_unique<LaplacianPreconditioner3D>(objective, settings.laplacian, MotionProjection::kNone,
                                                                rest_shear_curvature(objective.density()) / 2);
-          });
+          },
+          {kMomentumByDefault});
     r.add("slim", "SLIM: reweighted ARAP proxy plus the constraints' Hessian (Rabinovich et al. 2017)",
           [](const TetObjective& objective, const Preconditioner3DSettings& settings) {
             return std::make_unique<SlimPreconditioner3D>(objective, settings.slim);
@@ -96,7 +97,8 @@ PreconditionerRegistry& mutable_preconditioners_2d() {
           "AQP proxy: cotangent Laplacian of the 3D mesh per coordinate, factored once; AQP momentum by default",
           [](const ParamObjective& objective, const PreconditionerSettings& settings) {
             return std::make_unique<LaplacianPreconditioner2D>(objective, settings.laplacian);
-          });
+          },
+          {kMomentumByDefault});
     r.add("slim", "SLIM: reweighted ARAP proxy whose gradient is the energy's (Rabinovich et al. 2017)",
           [](const ParamObjective& objective, const PreconditionerSettings& settings) {
             return std::make_unique<SlimPreconditioner2D>(objective, settings.slim);
@@ -116,12 +118,12 @@ void require_method(const std::string& name) {
                      kLbfgsMethod + ")");
 }
 
-double acceleration_eta(const std::string& mode, const std::string& preconditioner) {
+double acceleration_eta(const std::string& mode, bool momentum_by_default) {
   // AQP's acceleration parameter eta (theta = (1 - 1/sqrt(eta)) / (1 + 1/sqrt(eta)) = 0.82).
   constexpr double kAqpEta = 100;
   if (mode != "auto" && mode != "on" && mode != "off")
     throw OptionsError("acceleration must be auto, on or off, found '" + mode + "'");
-  return mode == "on" || (mode == "auto" && preconditioner == "laplacian") ? kAqpEta : 0;
+  return mode == "on" || (mode == "auto" && momentum_by_default) ? kAqpEta : 0;
 }
 
 LineSearchRegistry& mutable_line_searches() {

@@ -41,10 +41,14 @@ inline constexpr const char* kLbfgsDescription =
 // Throws OptionsError listing every valid --precond name when `name` is none.
 void require_method(const std::string& name);
 
+// The registry tag of preconditioners that AQP's momentum accompanies by
+// default (the Laplacian, as AQP pairs them).
+inline constexpr const char* kMomentumByDefault = "momentum-by-default";
+
 // OptimizerOptions::acceleration_eta for an --acceleration mode: "auto" turns
-// AQP's momentum (eta = 100) on for the laplacian preconditioner only, "on"
-// and "off" force it. Throws OptionsError for any other mode.
-double acceleration_eta(const std::string& mode, const std::string& preconditioner);
+// AQP's momentum (eta = 100) on for preconditioners tagged
+// kMomentumByDefault, "on" and "off" force it. OptionsError for any other mode.
+double acceleration_eta(const std::string& mode, bool momentum_by_default);
 
 using DensityRegistry3D = Registry<DistortionDensity<3>, const EnergySettings&>;
 // Options of the 3D preconditioners. In deformation, newton, laplacian and

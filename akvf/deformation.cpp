@@ -75,7 +75,8 @@ DeformRun run_deformation(const TetMesh& input, const std::string& name, const P
   std::shared_ptr<const DistortionDensity<3>> density = energies_3d().create(config.energy, config.energy_settings);
   preconditioners_3d().require(config.preconditioner);
   OptimizerOptions optimizer = config.optimizer;
-  optimizer.acceleration_eta = acceleration_eta(config.acceleration, config.preconditioner);
+  optimizer.acceleration_eta =
+      acceleration_eta(config.acceleration, preconditioners_3d().has_tag(config.preconditioner, kMomentumByDefault));
   const ThreadLimit threads(config.threads);
   DeformRun run;
   // An exact power of two first (extents like 1e-100 or 1e+100 would under-

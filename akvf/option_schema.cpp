@@ -119,7 +119,7 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
   fields->push_back(text_field<O>("acceleration", "acceleration", "auto|on|off",
                                   "AQP momentum: auto (on for the laplacian preconditioner only), on, off",
                                   &O::acceleration,
-                                  [](const O& o) { acceleration_eta(o.acceleration, o.preconditioner); }));
+                                  [](const O& o) { acceleration_eta(o.acceleration, false); }));  // checks the mode
   fields->push_back(number_field<O>("grad_tol", "grad-tol", "X", "stop when the gradient norm drops below X",
                                     &O::grad_tol, ">= 0", [](double x) { return x >= 0; }));
   fields->push_back(integer_field<O>("max_iters", "max-iters", "N", "stop after N iterations", &O::max_iters, ">= 0",

@@ -34,7 +34,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   // Resolve names first so a typo fails before any work.
   std::shared_ptr<const DistortionDensity2> density = energies_2d().create(config.energy, config.energy_settings);
   require_method(config.preconditioner);
-  acceleration_eta(config.acceleration, config.preconditioner);  // validates the mode
+  acceleration_eta(config.acceleration, false);  // validates the mode
   line_searches().require(config.line_search);
 
   ParamSetup setup;
@@ -85,7 +85,8 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
                         const std::vector<IterationCallback>& callbacks) {
   ParamRun run;
   OptimizerOptions optimizer = config.optimizer;
-  optimizer.acceleration_eta = acceleration_eta(config.acceleration, config.preconditioner);
+  optimizer.acceleration_eta =
+      acceleration_eta(config.acceleration, preconditioners_2d().has_tag(config.preconditioner, kMomentumByDefault));
   if (config.preconditioner == kLbfgsMethod) {
     run.preconditioner_name = kLbfgsMethod;
     run.result = minimize_lbfgs(*setup.objective, setup.x0, config.optimizer, {}, callbacks);  // no momentum

@@ -4,6 +4,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,15 +20,21 @@ class Registry {
 
   explicit Registry(std::string kind) : kind_(std::move(kind)) {}
 
-  // OptionsError when `name` is taken or empty.
-  void add(const std::string& name, const std::string& description, Factory factory) {
+  // OptionsError when `name` is taken or empty. `tags` are facts about the
+  // entry that callers ask for by name (has_tag), instead of comparing names.
+  void add(const std::string& name, const std::string& description, Factory factory, std::set<std::string> tags = {}) {
     if (name.empty()) throw OptionsError("a " + kind_ + " needs a name");
     if (contains(name)) throw OptionsError(kind_ + " '" + name + "' is already registered");
+    tags_[name] = std::move(tags);
     entries_.push_back({name, description});
     factories_[name] = std::move(factory);
   }
 
   bool contains(const std::string& name) const { return factories_.count(name) > 0; }
+  bool has_tag(const std::string& name, const std::string& tag) const {
+    const auto it = tags_.find(name);
+    return it != tags_.end() && it->second.count(tag) > 0;
+  }
 
   // Throws OptionsError listing the valid names when `name` is unknown.
   void require(const std::string& name) const {
@@ -52,6 +59,7 @@ class Registry {
   std::string kind_;
   std::vector<std::pair<std::string, std::string>> entries_;
   std::map<std::string, Factory> factories_;
+  std::map<std::string, std::set<std::string>> tags_;
 };
 
 }  // namespace akvf
