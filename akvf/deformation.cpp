@@ -12,15 +12,14 @@ namespace akvf {
 
 namespace {
 
-// The settings with the constraints on the preconditioners' diagonals:
-// the penalty's Hessian (soft), or a large pin that restricts P to the free
-// coordinates (hard, see fixed_vertices_preconditioner.h).
-Preconditioner3DSettings with_constraint_diagonal(const DeformConfig& config, const Eigen::VectorXd& diagonal) {
+// The settings of the 3D preconditioners: as configured, and for AKVF as
+// §6.2 states it (K + c I, no constraint Hessian, no energy scale) when asked
+// and the constraints are soft. The constraints reach every preconditioner
+// through the objective (DistortionObjective::added_hessian_diagonal).
+Preconditioner3DSettings preconditioner_settings(const DeformConfig& config) {
   Preconditioner3DSettings settings = config.preconditioner_settings;
-  for (FactorOptions* options : {&settings.akvf.factor, &settings.newton, &settings.laplacian, &settings.slim})
-    options->extra_diagonal = diagonal;
   if (config.akvf_as_written && !config.hard_constraints) {
-    settings.akvf.factor.extra_diagonal.resize(0);
+    settings.akvf.include_problem_hessian = false;
     settings.akvf.secant_scaling = false;
   }
   return settings;
@@ -105,9 +104,11 @@ DeformRun run_deformation(const TetMesh& input, const std::string& name, const P
                             " constrained vertices at their targets inverts " + std::to_string(inverted) +
                             " tets; hard constraints need a start without inverted tets (use soft constraints, "
                             "the default, or smaller displacements)");
-    const Eigen::VectorXd pin = 1e10 * (Eigen::VectorXd::Ones(rest.size()) - objective.free_mask());
+    // A large pin on the fixed coordinates restricts P to the free ones
+    // (fixed_vertices_preconditioner.h).
+    energy.set_added_hessian_diagonal(1e10 * (Eigen::VectorXd::Ones(rest.size()) - objective.free_mask()));
     FixedVerticesPreconditioner preconditioner(
-        preconditioners_3d().create(config.preconditioner, energy, with_constraint_diagonal(config, pin)),
+        preconditioners_3d().create(config.preconditioner, energy, preconditioner_settings(config)),
         objective.free_mask());
     run.result = minimize(objective, preconditioner, *line_search, start, optimizer, callbacks);
     run.preconditioner_report = preconditioner.report();
@@ -116,8 +117,8 @@ DeformRun run_deformation(const TetMesh& input, const std::string& name, const P
     return run;
   }
   const SoftConstrainedObjective objective(energy, 3, constraints, config.weight);
-  auto preconditioner = preconditioners_3d().create(config.preconditioner, energy,
-                                                    with_constraint_diagonal(config, objective.hessian_diagonal()));
+  energy.set_added_hessian_diagonal(objective.hessian_diagonal());  // the penalty's: 2 w on constrained coordinates
+  auto preconditioner = preconditioners_3d().create(config.preconditioner, energy, preconditioner_settings(config));
   run.result = minimize(objective, *preconditioner, *line_search, rest, optimizer, callbacks);
   run.preconditioner_report = preconditioner->report();
   run.preconditioner_statistics = preconditioner->statistics();

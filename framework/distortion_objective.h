@@ -43,6 +43,14 @@ class DistortionObjective final : public Objective {
   std::string first_bad_element(const Eigen::VectorXd& x) const override;
   double lower_bound() const override { return density_->lower_bound(); }
 
+  // The Hessian diagonal (one value per variable, or empty) of quadratic
+  // terms the problem adds to this energy: soft positional constraints
+  // (2 w on the constrained coordinates) or the pins of hard ones. Every
+  // matrix preconditioner built on this objective includes it, so a new
+  // preconditioner gets the constraints without being listed anywhere.
+  void set_added_hessian_diagonal(Eigen::VectorXd diagonal) { added_hessian_diagonal_ = std::move(diagonal); }
+  const Eigen::VectorXd& added_hessian_diagonal() const { return added_hessian_diagonal_; }
+
   // How messages number vertices and elements: vertex v is called
   // vertex_number[v] + index_base (the source's numbering after unused
   // vertices were dropped; empty = v itself), element e is e + index_base.
@@ -76,6 +84,7 @@ class DistortionObjective final : public Objective {
   VertexFaces incidence_;
   std::vector<int> vertex_number_;
   int index_base_ = 0;
+  Eigen::VectorXd added_hessian_diagonal_;
   // Scratch reused across calls (so calls on one object must not overlap).
   mutable std::vector<double> element_value_;
   mutable std::vector<Matrix> element_gradient_;  // dE/dDs per element

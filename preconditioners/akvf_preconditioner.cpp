@@ -3,9 +3,7 @@
 namespace akvf {
 
 AkvfPreconditioner2D::AkvfPreconditioner2D(const ParamObjective& objective, AkvfOptions options)
-    : FactoredPreconditioner2D(objective.elements(), objective.num_vertices(), options.factor),
-      objective_(objective),
-      options_(options) {}
+    : FactoredPreconditioner2D(objective, options.factor), objective_(objective), options_(options) {}
 
 void AkvfPreconditioner2D::assemble(const OptimizationState& state, ElementMatrix2D* matrix) {
   assemble_killing_operator(objective_.elements(), state.x, objective_.rest().area, options_.area_scaling, matrix);

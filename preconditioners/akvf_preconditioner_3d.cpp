@@ -4,8 +4,19 @@
 
 namespace akvf {
 
+namespace {
+
+FactorOptions with_problem_hessian(FactorOptions options, const TetObjective& objective) {
+  if (options.extra_diagonal.size() == 0) options.extra_diagonal = objective.added_hessian_diagonal();
+  return options;
+}
+
+}  // namespace
+
 AkvfPreconditioner3D::AkvfPreconditioner3D(const TetObjective& objective, Akvf3DOptions options)
-    : FactoredPreconditioner3D(objective.elements(), objective.num_vertices(), options.factor),
+    : FactoredPreconditioner3D(
+          objective.elements(), objective.num_vertices(),
+          options.include_problem_hessian ? with_problem_hessian(options.factor, objective) : options.factor),
       objective_(objective),
       options_(options),
       // Energy curvature (weights V_t / sum V) over K's, 4 sum V, along a shear.
@@ -18,7 +29,7 @@ void AkvfPreconditioner3D::assemble(const OptimizationState& state, ElementMatri
     if (previous_x_.size() == state.x.size()) {
       const Eigen::VectorXd dx = state.x - previous_x_;
       Eigen::VectorXd dg = state.gradient - previous_gradient_;
-      const Eigen::VectorXd& constraint_hessian = options_.factor.extra_diagonal;
+      const Eigen::VectorXd& constraint_hessian = extra_diagonal();
       if (constraint_hessian.size() != 0) dg -= constraint_hessian.cwiseProduct(dx);
       const double energy_curvature = dx.dot(dg);
       const double killing_curvature = dx.dot(matrix->upper().selfadjointView<Eigen::Upper>() * dx);

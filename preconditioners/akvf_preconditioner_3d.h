@@ -1,7 +1,7 @@
 #pragma once
 // The AKVF preconditioner on tet meshes (§4.2.2, §6.2): P = s K(x) + c I + H_c
 // with K(x) of Eq. (9)-(10) at the current positions, c = 1e-4 (§6.2) and
-// H_c the soft constraints' Hessian (FactorOptions::extra_diagonal), as in
+// H_c the soft constraints' Hessian (the objective's added Hessian diagonal), as in
 // SLIM's own solve, which §6.2 follows "identically". In deformation the
 // energy is not rigid-invariant, so nothing is projected out by default;
 // for an unconstrained rigid-invariant energy, project_rigid removes the six
@@ -25,6 +25,10 @@ struct Akvf3DOptions {
   FactorOptions factor = shifted_factor_options(1e-4);  // c of §6.2
   bool project_rigid = false;
   bool secant_scaling = true;
+  // Include the Hessian of the terms the problem adds to the energy
+  // (DistortionObjective::added_hessian_diagonal: the constraints). Off is
+  // §6.2 as written, K + c I alone (--akvf-as-written).
+  bool include_problem_hessian = true;
 };
 
 class AkvfPreconditioner3D final : public FactoredPreconditioner3D {

@@ -50,6 +50,20 @@ Eigen::MatrixXd motion_basis(int dimension, MotionProjection projection, const E
   throw OptionsError("unknown motion projection");
 }
 
+namespace {
+
+FactorOptions with_added_diagonal(FactorOptions options, const Eigen::VectorXd& added) {
+  if (options.extra_diagonal.size() == 0) options.extra_diagonal = added;
+  return options;
+}
+
+}  // namespace
+
+template <int D>
+FactoredPreconditioner<D>::FactoredPreconditioner(const DistortionObjective<D>& objective, FactorOptions options)
+    : FactoredPreconditioner(objective.elements(), objective.num_vertices(),
+                             with_added_diagonal(std::move(options), objective.added_hessian_diagonal())) {}
+
 template <int D>
 FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices,
                                                   FactorOptions options)

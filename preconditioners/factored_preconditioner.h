@@ -25,6 +25,7 @@
 // a failed attempt; on horse_b it turns 1.05 s into 1.0 s).
 #include <string>
 
+#include "framework/distortion_objective.h"
 #include "framework/element_matrix.h"
 #include "framework/preconditioner.h"
 #include "solvers/sparse_cholesky.h"
@@ -70,6 +71,13 @@ class FactoredPreconditioner : public Preconditioner {
  protected:
   //   elements  #E by D + 1 (faces or tets)
   FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices, FactorOptions options);
+  // On the objective's elements, with the Hessian diagonal of the terms the
+  // problem adds to it (DistortionObjective::added_hessian_diagonal) as the
+  // extra diagonal, unless `options` already has one.
+  FactoredPreconditioner(const DistortionObjective<D>& objective, FactorOptions options);
+
+  // P's extra diagonal (FactorOptions::extra_diagonal as used).
+  const Eigen::VectorXd& extra_diagonal() const { return options_.extra_diagonal; }
 
   // Fills matrix with P(x) (without the shift).
   virtual void assemble(const OptimizationState& state, Matrix* matrix) = 0;

@@ -7,7 +7,7 @@ namespace akvf {
 template <int D>
 LaplacianPreconditioner<D>::LaplacianPreconditioner(const DistortionObjective<D>& objective, FactorOptions options,
                                                     MotionProjection projection, double scale)
-    : FactoredPreconditioner<D>(objective.elements(), objective.num_vertices(), std::move(options)),
+    : FactoredPreconditioner<D>(objective, std::move(options)),
       objective_(objective),
       projection_(projection),
       scale_(scale) {}

@@ -7,9 +7,7 @@ namespace akvf {
 template <int D>
 NewtonPreconditioner<D>::NewtonPreconditioner(const DistortionObjective<D>& objective, FactorOptions options,
                                               MotionProjection projection)
-    : FactoredPreconditioner<D>(objective.elements(), objective.num_vertices(), std::move(options)),
-      objective_(objective),
-      projection_(projection) {}
+    : FactoredPreconditioner<D>(objective, std::move(options)), objective_(objective), projection_(projection) {}
 
 template <int D>
 void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* matrix) {

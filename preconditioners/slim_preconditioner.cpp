@@ -24,7 +24,7 @@ const SingularValueDerivative<D>& singular_value_density(const DistortionObjecti
 template <int D>
 SlimPreconditioner<D>::SlimPreconditioner(const DistortionObjective<D>& objective, FactorOptions options,
                                           MotionProjection projection)
-    : FactoredPreconditioner<D>(objective.elements(), objective.num_vertices(), std::move(options)),
+    : FactoredPreconditioner<D>(objective, std::move(options)),
       objective_(objective),
       density_(singular_value_density(objective)),
       projection_(projection) {}
