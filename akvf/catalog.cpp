@@ -112,6 +112,20 @@ PreconditionerRegistry& mutable_preconditioners_2d() {
   return registry;
 }
 
+const std::vector<std::pair<std::string, std::string>>& solvers() {
+  static const std::vector<std::pair<std::string, std::string>> list = {
+      {kDescentSolver, "preconditioned flip-free descent (Algorithm 1) with --precond"},
+      {kLbfgsMethod, "L-BFGS through Ceres' GradientProblemSolver (Smith & Schaefer 2015 style), no preconditioner"},
+  };
+  return list;
+}
+
+void require_solver(const std::string& name) {
+  for (const auto& [solver, description] : solvers())
+    if (solver == name) return;
+  throw OptionsError("unknown solver '" + name + "' (valid: " + kDescentSolver + ", " + kLbfgsMethod + ")");
+}
+
 void require_method(const std::string& name) {
   if (name == kLbfgsMethod || preconditioners_2d().contains(name)) return;
   throw OptionsError("unknown preconditioner '" + name + "' (valid: " + preconditioners_2d().names() + ", " +

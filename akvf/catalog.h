@@ -32,13 +32,19 @@ struct PreconditionerSettings {
 using PreconditionerRegistry = Registry<Preconditioner, const ParamObjective&, const PreconditionerSettings&>;
 using LineSearchRegistry = Registry<LineSearch, const LineSearchSettings&>;
 
-// `--precond lbfgs` selects L-BFGS through Ceres, a solver of its own rather
-// than a preconditioner of our descent loop.
+// The solvers of a parameterization (`--solver`): the preconditioned,
+// flip-free descent of Algorithm 1 with any preconditioner, or L-BFGS through
+// Ceres, which takes no preconditioner. `--precond lbfgs` is kept as an alias
+// of `--solver lbfgs`.
+inline constexpr const char* kDescentSolver = "descent";
 inline constexpr const char* kLbfgsMethod = "lbfgs";
-inline constexpr const char* kLbfgsDescription =
-    "L-BFGS through Ceres' GradientProblemSolver (Smith & Schaefer 2015 style)";
+// (name, one-line description) of each solver.
+const std::vector<std::pair<std::string, std::string>>& solvers();
+// OptionsError listing the solvers when `name` is none.
+void require_solver(const std::string& name);
 
-// Throws OptionsError listing every valid --precond name when `name` is none.
+// OptionsError listing every valid --precond name (and the alias lbfgs) when
+// `name` is none.
 void require_method(const std::string& name);
 
 // The registry tag of preconditioners that AQP's momentum accompanies by

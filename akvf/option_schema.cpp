@@ -138,9 +138,12 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
     std::vector<OptionField<O>> f;
     f.push_back(text_field<O>("energy", "energy", "NAME", "distortion energy (see `akvf list`)", &O::energy,
                               [](const O& o) { energies_2d().require(o.energy); }));
+    f.push_back(text_field<O>("solver", "solver", "NAME",
+                              "descent (Algorithm 1 with --precond) or lbfgs (L-BFGS through Ceres)", &O::solver,
+                              [](const O& o) { require_solver(o.solver); }));
     f.push_back(text_field<O>("precond", "precond", "NAME",
-                              "akvf, newton, laplacian, slim, identity, or the solver lbfgs", &O::preconditioner,
-                              [](const O& o) { require_method(o.preconditioner); }));
+                              "akvf, newton, laplacian, slim, identity (or lbfgs, an alias of --solver lbfgs)",
+                              &O::preconditioner, [](const O& o) { require_method(o.preconditioner); }));
     add_common_fields(&f);
     f.push_back(number_field<O>("akvf_reuse", "akvf-reuse", "TAU",
                                 "AKVF: reuse the last factorization through CG to relative residual TAU "

@@ -9,6 +9,7 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   ParamConfig c;
   c.energy = o.energy;
   c.energy_settings.exponent = o.exponent;
+  c.solver = o.preconditioner == kLbfgsMethod ? kLbfgsMethod : o.solver;  // --precond lbfgs: the alias
   c.preconditioner = o.preconditioner;
   c.line_search = o.line_search;
   c.acceleration = o.acceleration;

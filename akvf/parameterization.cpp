@@ -33,6 +33,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
   // Resolve names first so a typo fails before any work.
   std::shared_ptr<const DistortionDensity2> density = energies_2d().create(config.energy, config.energy_settings);
+  require_solver(config.solver);
   require_method(config.preconditioner);
   acceleration_eta(config.acceleration, false);  // validates the mode
   line_searches().require(config.line_search);
@@ -87,7 +88,7 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
   OptimizerOptions optimizer = config.optimizer;
   optimizer.acceleration_eta =
       acceleration_eta(config.acceleration, preconditioners_2d().has_tag(config.preconditioner, kMomentumByDefault));
-  if (config.preconditioner == kLbfgsMethod) {
+  if (config.solver == kLbfgsMethod || config.preconditioner == kLbfgsMethod) {
     run.preconditioner_name = kLbfgsMethod;
     run.result = minimize_lbfgs(*setup.objective, setup.x0, config.optimizer, {}, callbacks);  // no momentum
     return run;

@@ -17,6 +17,7 @@ namespace akvf {
 struct ParamConfig {
   std::string energy = "symmetric-dirichlet";
   EnergySettings energy_settings;
+  std::string solver = "descent";  // kDescentSolver or kLbfgsMethod (catalog.h)
   std::string preconditioner = "akvf";
   std::string line_search = "backtracking";
   LineSearchSettings line_search_settings;

@@ -21,6 +21,7 @@ std::string other_value(const akvf::OptionField<Options>& field, const Options& 
   const std::string current = field.format(defaults);
   if (field.key == "energy") return "mips";
   if (field.key == "precond") return "slim";
+  if (field.key == "solver") return "lbfgs";
   if (field.key == "line_search") return "wolfe-bisection";
   if (field.key == "acceleration") return "on";
   if (field.key == "init") return "cotan";

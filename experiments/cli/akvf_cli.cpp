@@ -32,10 +32,10 @@ const char* kUsage =
     "\n"
     "`akvf COMMAND --help` describes each command's options.\n";
 
-template <class RegistryType>
-void print_entries(std::ostream& out, const char* title, const RegistryType& registry) {
+void print_entries(std::ostream& out, const char* title,
+                   const std::vector<std::pair<std::string, std::string>>& entries) {
   out << title << ":\n";
-  for (const auto& [name, description] : registry.entries()) {
+  for (const auto& [name, description] : entries) {
     std::string left = "  " + name;
     left.resize(std::max<std::size_t>(left.size() + 2, 24), ' ');
     out << left << description << '\n';
@@ -57,13 +57,12 @@ int list_command(const std::vector<std::string>& args, std::ostream& out) {
     return akvf::kExitOk;
   }
   if (!cl.positional().empty()) throw akvf::OptionsError("list takes no arguments (see --help)");
-  print_entries(out, "energies (--energy)", akvf::energies_2d());
-  print_entries(out, "preconditioners (--precond)", akvf::preconditioners_2d());
-  out << "solvers (--precond):\n  " << akvf::kLbfgsMethod
-      << std::string(22 - std::string(akvf::kLbfgsMethod).size(), ' ') << akvf::kLbfgsDescription << '\n';
-  print_entries(out, "line searches (--line-search)", akvf::line_searches());
-  print_entries(out, "3D energies (akvf deform --energy)", akvf::energies_3d());
-  print_entries(out, "3D preconditioners (akvf deform --precond)", akvf::preconditioners_3d());
+  print_entries(out, "energies (--energy)", akvf::energies_2d().entries());
+  print_entries(out, "preconditioners (--precond)", akvf::preconditioners_2d().entries());
+  print_entries(out, "solvers (--solver)", akvf::solvers());
+  print_entries(out, "line searches (--line-search)", akvf::line_searches().entries());
+  print_entries(out, "3D energies (akvf deform --energy)", akvf::energies_3d().entries());
+  print_entries(out, "3D preconditioners (akvf deform --precond)", akvf::preconditioners_3d().entries());
   return akvf::kExitOk;
 }
 
