@@ -4,7 +4,7 @@
 // library. The umbrella header of the public API:
 //
 //   akvf::parameterize(V, F, options)        triangle mesh -> UV map (parameterize.h)
-//   akvf::Parameterizer                      repeated solves on one mesh
+//   akvf::Parameterizer, akvf::Deformer      repeated solves on one mesh
 //   akvf::deform(V, T, constraints, options) tet mesh deformation (deform.h)
 //   akvf::register_autodiff_energy<2>(...)   user-defined energies (extend.h)
 //   akvf::energies_2d(), preconditioners_2d(), line_searches()   the names (catalog.h)

@@ -17,27 +17,38 @@ bool DeformOptions::is_valid(std::string* error) const {
   }
 }
 
-DeformResult deform(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const PositionConstraints& constraints,
-                    const DeformOptions& options) {
+struct Deformer::State {
+  TetMesh mesh;
+  DeformSetup setup;
+};
+
+Deformer::Deformer(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T) : state_(std::make_unique<State>()) {
   if (V.cols() != 3) throw InputError("V must have 3 columns (x, y, z), found " + std::to_string(V.cols()));
   if (T.cols() != 4) throw InputError("T must have 4 columns (tetrahedra), found " + std::to_string(T.cols()));
+  state_->mesh.V = V;
+  state_->mesh.T = T;
+  state_->setup = prepare_deformation(state_->mesh, "mesh");
+}
+
+Deformer::~Deformer() = default;
+Deformer::Deformer(Deformer&&) noexcept = default;
+Deformer& Deformer::operator=(Deformer&&) noexcept = default;
+
+DeformResult Deformer::solve(const PositionConstraints& constraints, const DeformOptions& options) const {
+  const Eigen::Index num_vertices = state_->mesh.V.rows();
   if (constraints.targets.rows() != static_cast<Eigen::Index>(constraints.vertices.size()) ||
       (constraints.targets.size() > 0 && constraints.targets.cols() != 3))
     throw InputError("constraints: " + std::to_string(constraints.vertices.size()) + " indices but targets of " +
                      std::to_string(constraints.targets.rows()) + " by " + std::to_string(constraints.targets.cols()) +
                      " (expected #C by 3)");
   for (std::size_t c = 0; c < constraints.vertices.size(); ++c)
-    if (constraints.vertices[c] < 0 || constraints.vertices[c] >= V.rows())
+    if (constraints.vertices[c] < 0 || constraints.vertices[c] >= num_vertices)
       throw InputError("constraint " + std::to_string(c) + ": vertex index " + std::to_string(constraints.vertices[c]) +
-                       " out of range (" + std::to_string(V.rows()) + " vertices, 0-based)");
+                       " out of range (" + std::to_string(num_vertices) + " vertices, 0-based)");
   check_options(options);
-  const DeformConfig config = deform_config(options);
-  TetMesh mesh;
-  mesh.V = V;
-  mesh.T = T;
-  const DeformRun run = run_deformation(mesh, "mesh", constraints, config, options.callbacks);
+  const DeformRun run = run_deformation(state_->setup, constraints, deform_config(options), options.callbacks);
   DeformResult result;
-  result.x = run.prepared.in_input_numbering(unstack_rows(run.result.x, 3), mesh).V;
+  result.x = run.prepared.in_input_numbering(unstack_rows(run.result.x, 3), state_->mesh).V;
   result.status = run.result.status;
   result.message = run.result.message;
   result.trace = run.result.trace;
@@ -45,6 +56,12 @@ DeformResult deform(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const Po
   result.preconditioner_report = run.preconditioner_report;
   result.warnings = run.warnings;
   return result;
+}
+
+DeformResult deform(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const PositionConstraints& constraints,
+                    const DeformOptions& options) {
+  check_options(options);
+  return Deformer(V, T).solve(constraints, options);
 }
 
 }  // namespace akvf

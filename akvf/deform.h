@@ -11,6 +11,7 @@
 // callbacks as in parameterize.h.
 #include <Eigen/Core>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -59,5 +60,24 @@ struct DeformResult {
 //   into V with constraints.targets #C by 3.
 DeformResult deform(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const PositionConstraints& constraints,
                     const DeformOptions& options = {});
+
+// Repeated deformations of one mesh (new targets, new options): validation,
+// normalization to unit rest volume and the rest geometry are done once, at
+// construction. Each solve starts from the rest shape and gives the bits
+// deform() gives.
+class Deformer {
+ public:
+  //   V  #V by 3, T  #T by 4 (0-based). Throws as deform() does.
+  Deformer(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T);
+  ~Deformer();
+  Deformer(Deformer&&) noexcept;
+  Deformer& operator=(Deformer&&) noexcept;
+
+  DeformResult solve(const PositionConstraints& constraints, const DeformOptions& options = {}) const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace akvf

@@ -66,7 +66,31 @@ std::vector<IterationCallback> at_input_scale(const std::vector<IterationCallbac
 
 }  // namespace
 
+DeformSetup prepare_deformation(const TetMesh& input, const std::string& name) {
+  DeformSetup setup;
+  setup.name = name;
+  setup.index_base = input.index_base;
+  // An exact power of two first (extents like 1e-100 or 1e+100 would under-
+  // or overflow volumes), then the rest volume is brought to 1, so that the
+  // energy, the penalty and the gradient do not depend on the input's units.
+  const double unit = power_of_two_unit_scale(input.V, name);
+  TetMesh unit_input = input;
+  unit_input.V *= unit;
+  setup.prepared = prepare_tet_mesh(unit_input, name, &setup.warnings);
+  TetMesh& mesh = setup.prepared.mesh;
+  const double to_unit_volume = 1 / std::cbrt(rest_tets(mesh).total_volume);
+  mesh.V *= to_unit_volume;
+  setup.scale = unit * to_unit_volume;
+  setup.rest = rest_tets(mesh);
+  return setup;
+}
+
 DeformRun run_deformation(const TetMesh& input, const std::string& name, const PositionConstraints& input_constraints,
+                          const DeformConfig& config, const std::vector<IterationCallback>& callbacks) {
+  return run_deformation(prepare_deformation(input, name), input_constraints, config, callbacks);
+}
+
+DeformRun run_deformation(const DeformSetup& setup, const PositionConstraints& input_constraints,
                           const DeformConfig& config, const std::vector<IterationCallback>& user_callbacks) {
   std::string invalid;
   if (!config.optimizer.is_valid(&invalid) || !config.line_search_settings.is_valid(&invalid))
@@ -78,22 +102,16 @@ DeformRun run_deformation(const TetMesh& input, const std::string& name, const P
       acceleration_eta(config.acceleration, preconditioners_3d().has_tag(config.preconditioner, kMomentumByDefault));
   const ThreadLimit threads(config.threads);
   DeformRun run;
-  // An exact power of two first (extents like 1e-100 or 1e+100 would under-
-  // or overflow volumes), then the rest volume is brought to 1, so that the
-  // energy, the penalty and the gradient do not depend on the input's units.
-  const double unit = power_of_two_unit_scale(input.V, name);
-  TetMesh unit_input = input;
-  unit_input.V *= unit;
-  run.prepared = prepare_tet_mesh(unit_input, name, &run.warnings);
-  TetMesh& mesh = run.prepared.mesh;
-  const double to_unit_volume = 1 / std::cbrt(rest_tets(mesh).total_volume);
-  mesh.V *= to_unit_volume;
-  run.scale = unit * to_unit_volume;
+  run.prepared = setup.prepared;
+  run.scale = setup.scale;
+  run.warnings = setup.warnings;
+  const std::string& name = setup.name;
+  const TetMesh& mesh = run.prepared.mesh;
   PositionConstraints constraints = in_mesh_numbering(input_constraints, run.prepared, name, &run.warnings);
   constraints.targets *= run.scale;
   const std::vector<IterationCallback> callbacks = at_input_scale(user_callbacks, run.scale);
-  TetObjective energy(mesh.T, rest_tets(mesh), density, mesh.num_vertices());
-  energy.set_file_numbering(run.prepared.input_vertex, input.index_base);
+  TetObjective energy(mesh.T, setup.rest, density, mesh.num_vertices());
+  energy.set_file_numbering(run.prepared.input_vertex, setup.index_base);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
   const Eigen::VectorXd rest = stack_rows(mesh.V);
   if (config.hard_constraints) {

@@ -12,6 +12,7 @@
 #include "framework/constrained_objective.h"
 #include "framework/mesh.h"
 #include "framework/optimizer.h"
+#include "framework/rest_geometry.h"
 #include "framework/tet_validation.h"
 
 namespace akvf {
@@ -52,8 +53,24 @@ struct DeformRun {
   Warnings warnings;
 };
 
-// `constraints` number vertices as `input` does (0-based). Throws InputError /
-// ValidationError / OptionsError naming `name`.
+// What does not depend on the options or the constraints: the validated
+// mesh at unit rest volume and its rest geometry, made once for repeated runs.
+struct DeformSetup {
+  PreparedTetMesh prepared;  // as DeformRun::prepared
+  double scale = 1;          // input coordinates times scale = the optimizer's units
+  RestTets rest;             // of prepared.mesh
+  std::string name;          // for messages
+  int index_base = 0;        // how the source numbers vertices and tets
+  Warnings warnings;
+};
+
+// Throws InputError / ValidationError naming `name`.
+DeformSetup prepare_deformation(const TetMesh& input, const std::string& name);
+DeformRun run_deformation(const DeformSetup& setup, const PositionConstraints& constraints, const DeformConfig& config,
+                          const std::vector<IterationCallback>& callbacks = {});
+
+// Both steps at once. `constraints` number vertices as `input` does
+// (0-based). Throws InputError / ValidationError / OptionsError naming `name`.
 DeformRun run_deformation(const TetMesh& input, const std::string& name, const PositionConstraints& constraints,
                           const DeformConfig& config, const std::vector<IterationCallback>& callbacks = {});
 

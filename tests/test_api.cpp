@@ -188,3 +188,23 @@ TEST_CASE("akvf::deform lifts a tet grid without inverting a tet; the result is 
           akvf::deform(mesh.V, mesh.T, bad, options);
         }) == "constraint 0: vertex index -4 out of range (64 vertices, 0-based)");
 }
+
+TEST_CASE("a Deformer solves for new targets and options on one prepared mesh, with deform()'s bits") {
+  const akvf::TetMesh mesh = akvf::test::tet_grid(2);
+  akvf::PositionConstraints constraints;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (mesh.V(v, 2) == 0 || mesh.V(v, 2) == 1) constraints.vertices.push_back(v);
+  constraints.targets.resize(static_cast<Eigen::Index>(constraints.vertices.size()), 3);
+  for (std::size_t c = 0; c < constraints.vertices.size(); ++c)
+    constraints.targets.row(c) = mesh.V.row(constraints.vertices[c]) * 1.1;
+  akvf::DeformOptions options;
+  options.max_iters = 10;
+  const akvf::Deformer deformer(mesh.V, mesh.T);
+  const akvf::DeformResult a = deformer.solve(constraints, options);
+  CHECK(a.x == akvf::deform(mesh.V, mesh.T, constraints, options).x);
+  options.preconditioner = "newton";
+  constraints.targets *= 1.05;
+  const akvf::DeformResult b = deformer.solve(constraints, options);
+  CHECK(akvf::is_normal_termination(b.status));
+  CHECK(b.x.col(2).maxCoeff() > a.x.col(2).maxCoeff());
+}
