@@ -28,6 +28,7 @@
 #include "framework/distortion_objective.h"
 #include "framework/element_matrix.h"
 #include "framework/preconditioner.h"
+#include "preconditioners/motion_bases.h"
 #include "solvers/sparse_cholesky.h"
 
 namespace akvf {
@@ -104,20 +105,5 @@ class FactoredPreconditioner : public Preconditioner {
 
 using FactoredPreconditioner2D = FactoredPreconditioner<2>;
 using FactoredPreconditioner3D = FactoredPreconditioner<3>;
-
-// Which motions a preconditioner projects out of its directions (§5.1): the
-// null space of an unconstrained problem's P, or nothing when constraint
-// terms or a shift make P definite.
-enum class MotionProjection { kNone, kTranslations, kRigidMotions };
-
-// Orthonormal basis (D|V| by k) of those motions at x (interleaved dofs).
-Eigen::MatrixXd motion_basis(int dimension, MotionProjection projection, const Eigen::VectorXd& x);
-
-// Orthonormal bases of the planar rigid motions (translations and the
-// rotation about the centroid; 2|V| by 3) and of the translations alone
-// (D|V| by D, interleaved dofs).
-Eigen::MatrixXd rigid_motion_basis_2d(const Eigen::VectorXd& x);
-Eigen::MatrixXd translation_basis(int dimension, int num_vertices);
-inline Eigen::MatrixXd translation_basis_2d(int num_vertices) { return translation_basis(2, num_vertices); }
 
 }  // namespace akvf

@@ -32,20 +32,4 @@ void assemble_killing_operator_3d(const Eigen::MatrixXi& T, const Eigen::VectorX
   });
 }
 
-Eigen::MatrixXd rigid_motion_basis_3d(const Eigen::VectorXd& x) {
-  const Eigen::Index n = x.size() / 3;
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for (Eigen::Index i = 0; i < n; ++i) centroid += x.segment<3>(3 * i);
-  centroid /= static_cast<double>(n);
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(x.size(), 6);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::Vector3d r = x.segment<3>(3 * i) - centroid;
-    B.block<3, 3>(3 * i, 0).setIdentity();
-    for (int axis = 0; axis < 3; ++axis) B.block<3, 1>(3 * i, 3 + axis) = Eigen::Vector3d::Unit(axis).cross(r);
-  }
-  // Orthonormalize (the rotations about different axes are not orthogonal in general).
-  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(B);
-  return qr.householderQ() * Eigen::MatrixXd::Identity(x.size(), 6);
-}
-
 }  // namespace akvf

@@ -22,8 +22,4 @@ void killing_local_matrix_3d(const Eigen::Vector3d p[4], ElementMatrix3D::Local*
 // positions x (x_0, y_0, z_0, x_1, ...).
 void assemble_killing_operator_3d(const Eigen::MatrixXi& T, const Eigen::VectorXd& x, ElementMatrix3D* matrix);
 
-// Orthonormal basis (3|V| by 6) of the rigid motions of the points x: the
-// three translations and the three rotations about their centroid.
-Eigen::MatrixXd rigid_motion_basis_3d(const Eigen::VectorXd& x);
-
 }  // namespace akvf

@@ -7,6 +7,7 @@
 
 #include "framework/tet_validation.h"
 #include "preconditioners/killing_operator_3d.h"
+#include "preconditioners/motion_bases.h"
 #include "tests/test_support.h"
 
 namespace {

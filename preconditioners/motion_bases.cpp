@@ -1,0 +1,69 @@
+#include "preconditioners/motion_bases.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/QR>
+#include <cmath>
+
+#include "framework/error.h"
+
+namespace akvf {
+
+Eigen::MatrixXd rigid_motion_basis_2d(const Eigen::VectorXd& x) {
+  const Eigen::Index n = x.size() / 2;
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(x.size(), 3);
+  double cx = 0, cy = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    cx += x[2 * i];
+    cy += x[2 * i + 1];
+  }
+  cx /= static_cast<double>(n);
+  cy /= static_cast<double>(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    B(2 * i, 0) = 1;
+    B(2 * i + 1, 1) = 1;
+    // Velocity of a rotation about the centroid: (-(y - cy), x - cx).
+    B(2 * i, 2) = -(x[2 * i + 1] - cy);
+    B(2 * i + 1, 2) = x[2 * i] - cx;
+  }
+  // The three columns are mutually orthogonal by construction (centred rotation).
+  for (int c = 0; c < 3; ++c) B.col(c).normalize();
+  return B;
+}
+
+Eigen::MatrixXd translation_basis(int dimension, int num_vertices) {
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(dimension) * num_vertices, dimension);
+  for (int i = 0; i < num_vertices; ++i)
+    for (int c = 0; c < dimension; ++c) B(dimension * i + c, c) = 1;
+  return B / std::sqrt(static_cast<double>(num_vertices));
+}
+
+Eigen::MatrixXd motion_basis(int dimension, MotionProjection projection, const Eigen::VectorXd& x) {
+  const int num_vertices = static_cast<int>(x.size()) / dimension;
+  switch (projection) {
+    case MotionProjection::kNone:
+      return Eigen::MatrixXd(x.size(), 0);
+    case MotionProjection::kTranslations:
+      return translation_basis(dimension, num_vertices);
+    case MotionProjection::kRigidMotions:
+      return dimension == 2 ? rigid_motion_basis_2d(x) : rigid_motion_basis_3d(x);
+  }
+  throw OptionsError("unknown motion projection");
+}
+
+Eigen::MatrixXd rigid_motion_basis_3d(const Eigen::VectorXd& x) {
+  const Eigen::Index n = x.size() / 3;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (Eigen::Index i = 0; i < n; ++i) centroid += x.segment<3>(3 * i);
+  centroid /= static_cast<double>(n);
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(x.size(), 6);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Vector3d r = x.segment<3>(3 * i) - centroid;
+    B.block<3, 3>(3 * i, 0).setIdentity();
+    for (int axis = 0; axis < 3; ++axis) B.block<3, 1>(3 * i, 3 + axis) = Eigen::Vector3d::Unit(axis).cross(r);
+  }
+  // Orthonormalize (the rotations about different axes are not orthogonal in general).
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(B);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(x.size(), 6);
+}
+
+}  // namespace akvf
