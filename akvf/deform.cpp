@@ -7,15 +7,7 @@
 
 namespace akvf {
 
-bool DeformOptions::is_valid(std::string* error) const {
-  try {
-    check_options(*this);
-    return true;
-  } catch (const OptionsError& e) {
-    if (error) *error = e.what();
-    return false;
-  }
-}
+bool DeformOptions::is_valid(std::string* error) const { return passes_checks(*this, error); }
 
 struct Deformer::State {
   TetMesh mesh;
@@ -23,8 +15,8 @@ struct Deformer::State {
 };
 
 Deformer::Deformer(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T) : state_(std::make_unique<State>()) {
-  if (V.cols() != 3) throw InputError("V must have 3 columns (x, y, z), found " + std::to_string(V.cols()));
-  if (T.cols() != 4) throw InputError("T must have 4 columns (tetrahedra), found " + std::to_string(T.cols()));
+  require_columns(V, 3, "V (vertex positions x, y, z)");
+  require_columns(T, 4, "T (tetrahedra)");
   state_->mesh.V = V;
   state_->mesh.T = T;
   state_->setup = prepare_deformation(state_->mesh, "mesh");

@@ -8,6 +8,7 @@
 #include "akvf/option_schema.h"
 #include "akvf/parameterization.h"
 #include "akvf/parameterize.h"
+#include "framework/error.h"
 
 namespace akvf {
 
@@ -18,6 +19,27 @@ DeformConfig deform_config(const DeformOptions& options);
 // found -1"): what is_valid() reports.
 void check_options(const ParameterizeOptions& options);
 void check_options(const DeformOptions& options);
+
+// check_options as a yes or no with the message: what is_valid() returns.
+template <class Options>
+bool passes_checks(const Options& options, std::string* error) {
+  try {
+    check_options(options);
+    return true;
+  } catch (const OptionsError& e) {
+    if (error) *error = e.what();
+    return false;
+  }
+}
+
+// InputError unless `array` has `columns` columns: "V must have 3 columns
+// (x, y, z), found 2".
+template <class Matrix>
+void require_columns(const Matrix& array, int columns, const std::string& what) {
+  if (array.cols() != columns)
+    throw InputError(what + " must have " + std::to_string(columns) + " columns, found " +
+                     std::to_string(array.cols()));
+}
 
 // RunStatistics of a finished run.
 RunStatistics run_statistics(const OptimizerResult& result, const PreconditionerStatistics& preconditioner);

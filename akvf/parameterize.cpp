@@ -7,15 +7,7 @@
 
 namespace akvf {
 
-bool ParameterizeOptions::is_valid(std::string* error) const {
-  try {
-    check_options(*this);
-    return true;
-  } catch (const OptionsError& e) {
-    if (error) *error = e.what();
-    return false;
-  }
-}
+bool ParameterizeOptions::is_valid(std::string* error) const { return passes_checks(*this, error); }
 
 struct Parameterizer::State {
   TriMesh mesh;
@@ -45,8 +37,8 @@ struct Parameterizer::State {
 
 Parameterizer::Parameterizer(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ParameterizeOptions& options)
     : state_(std::make_unique<State>()) {
-  if (V.cols() != 3) throw InputError("V must have 3 columns (x, y, z), found " + std::to_string(V.cols()));
-  if (F.cols() != 3) throw InputError("F must have 3 columns (triangles), found " + std::to_string(F.cols()));
+  require_columns(V, 3, "V (vertex positions x, y, z)");
+  require_columns(F, 3, "F (triangles)");
   state_->mesh.V = V;
   state_->mesh.F = F;
   state_->options = options;
