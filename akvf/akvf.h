@@ -9,7 +9,7 @@
 //   akvf::register_autodiff_energy<2>(...)   user-defined energies (extend.h)
 //   akvf::energies_2d(), preconditioners_2d(), line_searches()   the names (catalog.h)
 //   akvf::read_triangle_mesh, read_tet_mesh, write_obj_with_uv   files (framework/*_io.h)
-//   akvf::InputError, ValidationError, OptionsError, NumericalError   errors (framework/error.h)
+//   akvf::InputError, ValidationError, OptionsError, NumericalError   errors (framework/process/error.h)
 //
 // docs/api.md describes shapes, ownership, threads and errors.
 #include "akvf/catalog.h"
@@ -18,6 +18,6 @@
 #include "akvf/parameterize.h"
 #include "akvf/threads.h"
 #include "akvf/version.h"
-#include "framework/error.h"
-#include "framework/mesh_io.h"
-#include "framework/tet_mesh_io.h"
+#include "framework/mesh/mesh_io.h"
+#include "framework/mesh/tet_mesh_io.h"
+#include "framework/process/error.h"

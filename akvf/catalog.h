@@ -5,11 +5,11 @@
 // interfaces. User code adds its own through the mutable_ accessors.
 #include <memory>
 
-#include "framework/distortion_density.h"
-#include "framework/distortion_objective.h"
-#include "framework/line_search.h"
-#include "framework/preconditioner.h"
-#include "framework/registry.h"
+#include "framework/optimization/distortion_density.h"
+#include "framework/optimization/distortion_objective.h"
+#include "framework/optimization/line_search.h"
+#include "framework/optimization/preconditioner.h"
+#include "framework/optimization/registry.h"
 #include "preconditioners/akvf_preconditioner.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 

@@ -2,8 +2,8 @@
 
 #include "akvf/deformation.h"
 #include "akvf/options.h"
-#include "framework/distortion_objective.h"
-#include "framework/error.h"
+#include "framework/optimization/distortion_objective.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "akvf/parameterize.h"
-#include "framework/constrained_objective.h"
+#include "framework/optimization/constrained_objective.h"
 
 namespace akvf {
 

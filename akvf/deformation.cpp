@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "akvf/threads.h"
-#include "framework/distortion_objective.h"
-#include "framework/error.h"
-#include "framework/rest_geometry.h"
+#include "framework/mesh/rest_geometry.h"
+#include "framework/optimization/distortion_objective.h"
+#include "framework/process/error.h"
 #include "preconditioners/fixed_vertices_preconditioner.h"
 
 namespace akvf {

@@ -9,11 +9,11 @@
 #include <string>
 
 #include "akvf/catalog.h"
-#include "framework/constrained_objective.h"
-#include "framework/mesh.h"
-#include "framework/optimizer.h"
-#include "framework/rest_geometry.h"
-#include "framework/tet_validation.h"
+#include "framework/mesh/mesh.h"
+#include "framework/mesh/rest_geometry.h"
+#include "framework/mesh/tet_validation.h"
+#include "framework/optimization/constrained_objective.h"
+#include "framework/optimization/optimizer.h"
 
 namespace akvf {
 

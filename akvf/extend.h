@@ -51,7 +51,7 @@ inline void register_preconditioner_3d(const std::string& name, const std::strin
                                        PreconditionerRegistry3D::Factory factory) {
   mutable_preconditioners_3d().add(name, description, std::move(factory));
 }
-// A line search, from the line-search settings (framework/line_search.h).
+// A line search, from the line-search settings (framework/optimization/line_search.h).
 inline void register_line_search(const std::string& name, const std::string& description,
                                  LineSearchRegistry::Factory factory) {
   mutable_line_searches().add(name, description, std::move(factory));

@@ -5,9 +5,9 @@
 #include <sstream>
 
 #include "akvf/catalog.h"
-#include "framework/error.h"
-#include "framework/initialization.h"
-#include "framework/text_reader.h"
+#include "framework/mesh/initialization.h"
+#include "framework/mesh/text_reader.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -1,7 +1,7 @@
 #include "akvf/options.h"
 
 #include "akvf/catalog.h"
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -8,7 +8,7 @@
 #include "akvf/option_schema.h"
 #include "akvf/parameterization.h"
 #include "akvf/parameterize.h"
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

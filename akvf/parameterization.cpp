@@ -5,7 +5,7 @@
 
 #include "akvf/catalog.h"
 #include "akvf/threads.h"
-#include "framework/error.h"
+#include "framework/process/error.h"
 #include "solvers/lbfgs_solver.h"
 
 namespace akvf {

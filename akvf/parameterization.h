@@ -5,12 +5,12 @@
 #include <string>
 
 #include "akvf/catalog.h"
-#include "framework/distortion_objective.h"
-#include "framework/initialization.h"
-#include "framework/mesh.h"
-#include "framework/mesh_validation.h"
-#include "framework/optimizer.h"
-#include "framework/rest_geometry.h"
+#include "framework/mesh/initialization.h"
+#include "framework/mesh/mesh.h"
+#include "framework/mesh/mesh_validation.h"
+#include "framework/mesh/rest_geometry.h"
+#include "framework/optimization/distortion_objective.h"
+#include "framework/optimization/optimizer.h"
 
 namespace akvf {
 

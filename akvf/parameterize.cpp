@@ -3,7 +3,7 @@
 #include "akvf/catalog.h"
 #include "akvf/options.h"
 #include "akvf/parameterization.h"
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -6,7 +6,7 @@
 //   akvf::ParameterizeResult r = akvf::parameterize(V, F);
 //   r.uv;               // #V by 2, at the input's scale (UV area = 3D area)
 //
-// Errors are the typed exceptions of <framework/error.h>: InputError and
+// Errors are the typed exceptions of <framework/process/error.h>: InputError and
 // ValidationError for the mesh (messages name the element as the arrays
 // number it, from 0), OptionsError for options, NumericalError. Nothing is
 // printed; progress goes through options.callbacks. A run that ends early
@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "framework/mesh.h"
-#include "framework/optimizer.h"
-#include "framework/preconditioner.h"
+#include "framework/mesh/mesh.h"
+#include "framework/optimization/optimizer.h"
+#include "framework/optimization/preconditioner.h"
 
 namespace akvf {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

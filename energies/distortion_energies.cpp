@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "energies/symmetric_dirichlet.h"
 #include "energies/exponent.h"
-#include "framework/error.h"
+#include "energies/symmetric_dirichlet.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

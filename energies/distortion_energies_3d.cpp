@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "energies/exponent.h"
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

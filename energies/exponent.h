@@ -1,7 +1,7 @@
 #pragma once
 // The exponent k of the exponential energies (exp(k u)), checked once for
 // every energy that has one, 2D and 3D.
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -6,7 +6,7 @@
 // G = [ds dc dg] (9 by 3); ds = 2 vec J, dc = vec(2 s J - 2 J J^T J),
 // dg = vec(cof J); H_s = 2 I, H_c and H_g (linear in J) as derived in the
 // .cpp. +infinity when g <= 0. The other 3D energies: distortion_energies_3d.h.
-#include "framework/distortion_density.h"
+#include "framework/optimization/distortion_density.h"
 
 namespace akvf {
 

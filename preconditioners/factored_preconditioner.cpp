@@ -3,7 +3,7 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <cmath>
 
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -25,9 +25,9 @@
 // a failed attempt; on horse_b it turns 1.05 s into 1.0 s).
 #include <string>
 
-#include "framework/distortion_objective.h"
-#include "framework/element_matrix.h"
-#include "framework/preconditioner.h"
+#include "framework/optimization/distortion_objective.h"
+#include "framework/optimization/element_matrix.h"
+#include "framework/optimization/preconditioner.h"
 #include "preconditioners/motion_bases.h"
 #include "solvers/sparse_cholesky.h"
 

@@ -8,7 +8,7 @@
 // preconditioner restricted to the free coordinates.
 #include <memory>
 
-#include "framework/preconditioner.h"
+#include "framework/optimization/preconditioner.h"
 
 namespace akvf {
 

@@ -1,6 +1,6 @@
 #pragma once
 // P = I: plain gradient descent, the baseline the paper improves on.
-#include "framework/preconditioner.h"
+#include "framework/optimization/preconditioner.h"
 
 namespace akvf {
 

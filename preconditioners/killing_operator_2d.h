@@ -9,7 +9,7 @@
 // integrates the Killing energy over the 3D surface; otherwise s_f = 1.
 #include <Eigen/Core>
 
-#include "framework/element_matrix.h"
+#include "framework/optimization/element_matrix.h"
 
 namespace akvf {
 

@@ -10,7 +10,7 @@
 // (deformed) volume.
 #include <Eigen/Core>
 
-#include "framework/element_matrix.h"
+#include "framework/optimization/element_matrix.h"
 
 namespace akvf {
 

@@ -4,7 +4,7 @@
 #include <Eigen/QR>
 #include <cmath>
 
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -6,7 +6,7 @@
 // second-order solvers; shift, projection and factorization reuse as in
 // factored_preconditioner.h. In 3D deformation the constraint term's Hessian
 // comes in through FactorOptions::extra_diagonal.
-#include "framework/distortion_objective.h"
+#include "framework/optimization/distortion_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {

@@ -3,7 +3,7 @@
 #include <Eigen/SVD>
 #include <cmath>
 
-#include "framework/error.h"
+#include "framework/process/error.h"
 #include "preconditioners/element_derivatives.h"
 
 namespace akvf {

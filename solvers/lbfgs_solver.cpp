@@ -7,8 +7,8 @@
 #include <limits>
 #include <optional>
 
-#include "framework/error.h"
-#include "framework/interrupt.h"
+#include "framework/process/error.h"
+#include "framework/process/interrupt.h"
 
 namespace akvf {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "framework/error.h"
+#include "framework/process/error.h"
 #include "solvers/supernodal_solve.h"
 
 namespace akvf {
@@ -78,8 +78,8 @@ struct SparseCholesky::Impl {
   SupernodalSolve& supernodal_solve() {
     if (!supernodal_solver)
       supernodal_solver = std::make_unique<SupernodalSolve>(SupernodalStructure{
-          static_cast<int>(factor->nsuper), static_cast<const int*>(factor->super),
-          static_cast<const int*>(factor->pi), static_cast<const int*>(factor->px), static_cast<const int*>(factor->s)});
+          static_cast<int>(factor->nsuper), static_cast<const int*>(factor->super), static_cast<const int*>(factor->pi),
+          static_cast<const int*>(factor->px), static_cast<const int*>(factor->s)});
     return *supernodal_solver;
   }
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/mesh.h"
+#include "framework/mesh/mesh.h"
 
 namespace akvf::test {
 

@@ -5,8 +5,8 @@
 #include <csignal>
 #include <iostream>
 
-#include "framework/interrupt.h"
-#include "framework/output_file.h"
+#include "framework/process/interrupt.h"
+#include "framework/process/output_file.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -10,7 +10,7 @@
 #include "akvf/deformation.h"
 #include "akvf/threads.h"
 #include "energies/distortion_energies_3d.h"
-#include "framework/constrained_objective.h"
+#include "framework/optimization/constrained_objective.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "preconditioners/energy_scale.h"
 #include "preconditioners/laplacian_preconditioner.h"

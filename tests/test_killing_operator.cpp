@@ -6,7 +6,7 @@
 
 #include "energies/distortion_energies.h"
 #include "energies/symmetric_dirichlet.h"
-#include "framework/distortion_objective.h"
+#include "framework/optimization/distortion_objective.h"
 #include "preconditioners/akvf_preconditioner.h"
 #include "preconditioners/killing_operator_2d.h"
 #include "preconditioners/laplacian_preconditioner.h"

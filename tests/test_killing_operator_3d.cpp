@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 #include <random>
 
-#include "framework/tet_validation.h"
+#include "framework/mesh/tet_validation.h"
 #include "preconditioners/killing_operator_3d.h"
 #include "preconditioners/motion_bases.h"
 #include "tests/test_support.h"

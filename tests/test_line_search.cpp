@@ -5,8 +5,8 @@
 #include <random>
 
 #include "energies/symmetric_dirichlet.h"
-#include "framework/distortion_objective.h"
-#include "framework/flip_free_step.h"
+#include "framework/optimization/distortion_objective.h"
+#include "framework/optimization/flip_free_step.h"
 #include "solvers/backtracking_line_search.h"
 #include "solvers/wolfe_bisection_line_search.h"
 #include "tests/test_support.h"

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "framework/mesh_io.h"
+#include "framework/mesh/mesh_io.h"
 #include "tests/test_support.h"
 
 using akvf::test::error_message;

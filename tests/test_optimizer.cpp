@@ -10,9 +10,9 @@
 #include "akvf/catalog.h"
 #include "akvf/demo_mesh.h"
 #include "akvf/parameterization.h"
-#include "framework/error.h"
-#include "framework/interrupt.h"
-#include "framework/rest_geometry.h"
+#include "framework/mesh/rest_geometry.h"
+#include "framework/process/error.h"
+#include "framework/process/interrupt.h"
 #include "solvers/backtracking_line_search.h"
 #include "tests/test_support.h"
 

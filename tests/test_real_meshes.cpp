@@ -9,9 +9,9 @@
 #include "akvf/catalog.h"
 #include "akvf/deformation.h"
 #include "akvf/parameterization.h"
-#include "framework/constraints_io.h"
-#include "framework/mesh_io.h"
-#include "framework/tet_mesh_io.h"
+#include "framework/mesh/constraints_io.h"
+#include "framework/mesh/mesh_io.h"
+#include "framework/mesh/tet_mesh_io.h"
 #include "tests/test_support.h"
 
 namespace {

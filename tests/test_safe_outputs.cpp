@@ -13,8 +13,8 @@
 
 #include "experiments/cli/exit_codes.h"
 #include "experiments/cli/file_arguments.h"
-#include "framework/error.h"
-#include "framework/output_file.h"
+#include "framework/process/error.h"
+#include "framework/process/output_file.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
 

@@ -7,9 +7,9 @@
 #include <iostream>
 #include <sstream>
 
-#include "framework/error.h"
-#include "framework/mesh_io.h"
-#include "framework/tet_validation.h"
+#include "framework/mesh/mesh_io.h"
+#include "framework/mesh/tet_validation.h"
+#include "framework/process/error.h"
 
 namespace akvf::test {
 

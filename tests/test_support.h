@@ -5,7 +5,7 @@
 #include <random>
 #include <string>
 
-#include "framework/mesh.h"
+#include "framework/mesh/mesh.h"
 
 namespace akvf::test {
 

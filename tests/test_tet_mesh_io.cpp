@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "framework/tet_mesh_io.h"
-#include "framework/tet_validation.h"
+#include "framework/mesh/tet_mesh_io.h"
+#include "framework/mesh/tet_validation.h"
 #include "tests/test_support.h"
 
 using akvf::TetMesh;

@@ -8,9 +8,9 @@
 
 #include "akvf/deformation.h"
 #include "energies/invariant_density_3d.h"
-#include "framework/constrained_objective.h"
-#include "framework/constraints_io.h"
-#include "framework/distortion_objective.h"
+#include "framework/mesh/constraints_io.h"
+#include "framework/optimization/constrained_objective.h"
+#include "framework/optimization/distortion_objective.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "tests/test_support.h"
 

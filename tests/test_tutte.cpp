@@ -4,10 +4,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "framework/distortion_objective.h"
-#include "framework/initialization.h"
-#include "framework/mesh_validation.h"
-#include "framework/rest_geometry.h"
+#include "framework/mesh/initialization.h"
+#include "framework/mesh/mesh_validation.h"
+#include "framework/mesh/rest_geometry.h"
+#include "framework/optimization/distortion_objective.h"
 #include "tests/test_support.h"
 
 TEST_CASE("Tutte maps a disk without inverted triangles onto a circle of the mesh's area") {

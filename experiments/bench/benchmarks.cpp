@@ -16,7 +16,7 @@
 #include "energies/autodiff_density.h"
 #include "energies/symmetric_dirichlet.h"
 #include "experiments/cli/native_runtime.h"
-#include "framework/mesh_io.h"
+#include "framework/mesh/mesh_io.h"
 #include "preconditioners/akvf_preconditioner.h"
 #include "solvers/backtracking_line_search.h"
 #include "solvers/sparse_cholesky.h"

@@ -13,7 +13,7 @@
 #include "experiments/cli/experiment_command.h"
 #include "experiments/cli/param_command.h"
 #include "experiments/cli/plot_command.h"
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace {
 

@@ -4,8 +4,8 @@
 #include <limits>
 #include <sstream>
 
-#include "framework/error.h"
-#include "framework/text_reader.h"
+#include "framework/mesh/text_reader.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

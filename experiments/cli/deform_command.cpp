@@ -10,10 +10,10 @@
 #include "experiments/cli/run_reporting.h"
 #include "experiments/cli/schema_options.h"
 #include "experiments/report/trace_csv.h"
-#include "framework/constraints_io.h"
-#include "framework/error.h"
-#include "framework/mesh_text.h"
-#include "framework/tet_mesh_io.h"
+#include "framework/mesh/constraints_io.h"
+#include "framework/mesh/mesh_text.h"
+#include "framework/mesh/tet_mesh_io.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -9,7 +9,7 @@
 #include "experiments/cli/run_reporting.h"
 #include "experiments/report/experiment_report.h"
 #include "experiments/runner/experiment_runner.h"
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -2,9 +2,9 @@
 
 #include <filesystem>
 
-#include "framework/error.h"
-#include "framework/mesh_text.h"
-#include "framework/output_file.h"
+#include "framework/mesh/mesh_text.h"
+#include "framework/process/error.h"
+#include "framework/process/output_file.h"
 
 namespace akvf {
 

@@ -3,7 +3,7 @@
 
 #include "experiments/cli/akvf_cli.h"
 #include "experiments/cli/native_runtime.h"
-#include "framework/interrupt.h"
+#include "framework/process/interrupt.h"
 
 int main(int argc, char** argv) {
   akvf::configure_native_runtime(argv);

@@ -15,9 +15,9 @@
 #include "experiments/cli/schema_options.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/report/uv_svg.h"
-#include "framework/error.h"
-#include "framework/mesh_io.h"
-#include "framework/mesh_text.h"
+#include "framework/mesh/mesh_io.h"
+#include "framework/mesh/mesh_text.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

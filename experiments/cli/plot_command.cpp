@@ -5,8 +5,8 @@
 #include "experiments/cli/file_arguments.h"
 #include "experiments/report/line_plot.h"
 #include "experiments/report/trace_csv.h"
-#include "framework/error.h"
-#include "framework/output_file.h"
+#include "framework/process/error.h"
+#include "framework/process/output_file.h"
 
 namespace akvf {
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "experiments/cli/exit_codes.h"
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -4,7 +4,7 @@
 #include <ostream>
 #include <string>
 
-#include "framework/optimizer.h"
+#include "framework/optimization/optimizer.h"
 
 namespace akvf {
 

@@ -7,7 +7,7 @@
 
 #include "akvf/option_schema.h"
 #include "experiments/cli/command_line.h"
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

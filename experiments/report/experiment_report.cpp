@@ -13,8 +13,8 @@
 #include "experiments/report/trace_csv.h"
 #include "experiments/runner/experiment_runner.h"
 #include "experiments/runner/manifest.h"
-#include "framework/error.h"
-#include "framework/output_file.h"
+#include "framework/process/error.h"
+#include "framework/process/output_file.h"
 
 namespace akvf {
 

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "experiments/report/text_utilities.h"
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

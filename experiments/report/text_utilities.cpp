@@ -3,7 +3,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -6,9 +6,9 @@
 #include <limits>
 #include <sstream>
 
-#include "framework/error.h"
-#include "framework/output_file.h"
-#include "framework/text_reader.h"
+#include "framework/mesh/text_reader.h"
+#include "framework/process/error.h"
+#include "framework/process/output_file.h"
 
 namespace akvf {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/optimizer.h"
+#include "framework/optimization/optimizer.h"
 
 namespace akvf {
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "experiments/report/text_utilities.h"
-#include "framework/output_file.h"
+#include "framework/process/output_file.h"
 
 namespace akvf {
 

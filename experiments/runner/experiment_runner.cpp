@@ -18,12 +18,12 @@
 #include "experiments/report/text_utilities.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/report/uv_svg.h"
-#include "framework/constraints_io.h"
-#include "framework/error.h"
-#include "framework/mesh_io.h"
-#include "framework/mesh_subdivision.h"
-#include "framework/output_file.h"
-#include "framework/tet_mesh_io.h"
+#include "framework/mesh/constraints_io.h"
+#include "framework/mesh/mesh_io.h"
+#include "framework/mesh/mesh_subdivision.h"
+#include "framework/mesh/tet_mesh_io.h"
+#include "framework/process/error.h"
+#include "framework/process/output_file.h"
 #include "solvers/sparse_cholesky.h"
 
 #ifndef AKVF_VERSION

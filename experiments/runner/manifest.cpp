@@ -11,7 +11,7 @@
 #include "akvf/catalog.h"
 #include "akvf/option_schema.h"
 #include "experiments/report/text_utilities.h"
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf {
 

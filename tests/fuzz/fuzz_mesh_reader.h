@@ -4,8 +4,8 @@
 // (disk validation for `akvf param`, tet validation for `akvf deform`).
 #include <sstream>
 
-#include "framework/mesh_validation.h"
-#include "framework/tet_validation.h"
+#include "framework/mesh/mesh_validation.h"
+#include "framework/mesh/tet_validation.h"
 #include "tests/fuzz/fuzz_text_input.h"
 
 namespace akvf::fuzz {

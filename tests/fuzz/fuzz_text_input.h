@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "framework/error.h"
+#include "framework/process/error.h"
 
 namespace akvf::fuzz {
 

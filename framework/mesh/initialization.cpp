@@ -1,0 +1,143 @@
+#include "framework/mesh/initialization.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/SparseCholesky>
+#include <cmath>
+#include <numbers>
+
+#include "framework/mesh/rest_geometry.h"
+#include "framework/process/error.h"
+
+namespace akvf {
+
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+// Off-diagonal Laplacian weights w_ij > 0 (uniform) or (cot a + cot b) / 2.
+Triplets edge_weights(const TriMesh& mesh, TutteWeights weights) {
+  Triplets w;
+  w.reserve(6 * mesh.num_faces());
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int i = mesh.F(f, k), j = mesh.F(f, (k + 1) % 3), o = mesh.F(f, (k + 2) % 3);
+      double value = 0.5;  // each interior edge is seen from two faces: sums to 1
+      if (weights == TutteWeights::kCotangent) {
+        const Eigen::Vector3d a = mesh.V.row(i) - mesh.V.row(o), b = mesh.V.row(j) - mesh.V.row(o);
+        value = 0.5 * a.dot(b) / a.cross(b).norm();
+      }
+      w.emplace_back(i, j, value);
+      w.emplace_back(j, i, value);
+    }
+  return w;
+}
+
+Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, TutteWeights weights, bool* ok) {
+  const int n = mesh.num_vertices();
+  Eigen::MatrixXd UV = Eigen::MatrixXd::Zero(n, 2);
+  std::vector<double> arc(loop.size() + 1, 0.0);
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    arc[i + 1] = arc[i] + (mesh.V.row(loop[(i + 1) % loop.size()]) - mesh.V.row(loop[i])).norm();
+  const double radius = std::sqrt(surface_area(mesh) / std::numbers::pi);
+  std::vector<int> interior_index(n, 0);
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const double angle = 2 * std::numbers::pi * arc[i] / arc.back();
+    UV.row(loop[i]) << radius * std::cos(angle), radius * std::sin(angle);
+    interior_index[loop[i]] = -1;
+  }
+  int m = 0;
+  for (int v = 0; v < n; ++v)
+    if (interior_index[v] == 0) interior_index[v] = m++;
+  *ok = true;
+  if (m == 0) return UV;
+
+  // L_II u_I = -L_IB u_B with L = D - W (rows of interior vertices only).
+  Triplets lhs;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, 2);
+  for (const auto& t : edge_weights(mesh, weights)) {
+    const int i = interior_index[t.row()];
+    if (i < 0) continue;
+    lhs.emplace_back(i, i, t.value());
+    const int j = interior_index[t.col()];
+    if (j >= 0)
+      lhs.emplace_back(i, j, -t.value());
+    else
+      rhs.row(i) += t.value() * UV.row(t.col());
+  }
+  Eigen::SparseMatrix<double> L(m, m);
+  L.setFromTriplets(lhs.begin(), lhs.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(L);
+  if (solver.info() != Eigen::Success) {
+    *ok = false;
+    return UV;
+  }
+  const Eigen::MatrixXd interior = solver.solve(rhs);
+  for (int v = 0; v < n; ++v)
+    if (interior_index[v] >= 0) UV.row(v) = interior.row(interior_index[v]);
+  *ok = UV.allFinite();
+  return UV;
+}
+
+}  // namespace
+
+Eigen::MatrixXd tutte_embedding(const TriMesh& mesh, const std::vector<int>& boundary_loop, TutteWeights weights,
+                                Warnings* warnings) {
+  bool ok = false;
+  if (weights == TutteWeights::kCotangent) {
+    Eigen::MatrixXd UV = solve_tutte(mesh, boundary_loop, TutteWeights::kCotangent, &ok);
+    const int inverted = ok ? count_inverted_triangles(mesh.F, UV) : -1;
+    if (inverted == 0) return UV;
+    if (warnings)
+      warnings->push_back(inverted > 0 ? "cotangent Tutte map inverts " + std::to_string(inverted) +
+                                             " triangles; using uniform weights instead"
+                                       : "cotangent Tutte system is singular; using uniform weights instead");
+  }
+  Eigen::MatrixXd UV = solve_tutte(mesh, boundary_loop, TutteWeights::kUniform, &ok);
+  if (!ok) throw ValidationError("the Tutte system could not be solved (is the mesh connected?)");
+  return UV;
+}
+
+int optimize_flaps(const TriMesh& mesh, Eigen::MatrixXd* UV) {
+  std::vector<int> face_count(mesh.num_vertices(), 0), face_of(mesh.num_vertices(), -1);
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      ++face_count[mesh.F(f, k)];
+      face_of[mesh.F(f, k)] = f;
+    }
+  int moved = 0;
+  for (int p = 0; p < mesh.num_vertices(); ++p) {
+    if (face_count[p] != 1) continue;
+    const int f = face_of[p];
+    int k = 0;
+    while (mesh.F(f, k) != p) ++k;
+    const int a = mesh.F(f, (k + 1) % 3), b = mesh.F(f, (k + 2) % 3);
+    if (face_count[a] == 1 || face_count[b] == 1) continue;  // an isolated triangle has no fixed edge
+    const Eigen::Vector3d Xp = mesh.V.row(p), Xa = mesh.V.row(a), Xb = mesh.V.row(b);
+    const double beta = (Xp - Xa).dot(Xb - Xa) / (Xb - Xa).squaredNorm();
+    const double gamma = (Xp - Xa - beta * (Xb - Xa)).norm();
+    const Eigen::RowVector2d xa = UV->row(a), xb = UV->row(b);
+    const Eigen::RowVector2d edge = xb - xa;
+    // The left normal of a -> b keeps the triangle (p, a, b) counter-clockwise.
+    const Eigen::RowVector2d left(-edge.y(), edge.x());
+    UV->row(p) = (1 - beta) * xa + beta * xb + gamma / edge.norm() * left;
+    ++moved;
+  }
+  return moved;
+}
+
+int count_inverted_triangles(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV) {
+  int inverted = 0;
+  for (int f = 0; f < F.rows(); ++f) {
+    const Eigen::RowVector2d e1 = UV.row(F(f, 1)) - UV.row(F(f, 0)), e2 = UV.row(F(f, 2)) - UV.row(F(f, 0));
+    inverted += !(e1.x() * e2.y() - e1.y() * e2.x() > 0);
+  }
+  return inverted;
+}
+
+TutteWeights parse_tutte_weights(const std::string& name) {
+  if (name == "tutte" || name == "uniform") return TutteWeights::kUniform;
+  if (name == "cotan" || name == "cotangent") return TutteWeights::kCotangent;
+  throw OptionsError("unknown initialization '" + name + "' (valid: tutte, cotan)");
+}
+
+}  // namespace akvf

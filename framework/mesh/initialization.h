@@ -1,0 +1,34 @@
+#pragma once
+// Initial maps for parameterization (Algorithm 1, first two lines): the Tutte
+// embedding and the flap optimization of §5.4.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "framework/mesh/mesh.h"
+
+namespace akvf {
+
+enum class TutteWeights { kUniform, kCotangent };
+
+// Tutte embedding: the boundary loop on a circle of the mesh's area, spaced by
+// 3D arc length, and each interior vertex at the weighted average of its
+// neighbours. With cotangent weights (which may be negative) the map can fold;
+// then the uniform map is returned instead and a warning is added.
+//   boundary_loop  ordered with the mesh to its left (counter-clockwise result)
+//   returns UV     #V by 2
+Eigen::MatrixXd tutte_embedding(const TriMesh& mesh, const std::vector<int>& boundary_loop, TutteWeights weights,
+                                Warnings* warnings);
+
+// §5.4: moves every flap vertex (a boundary vertex in a single triangle) to
+// the optimal position for an isometric energy given its two neighbours:
+// x0 = (1 - beta) x1 + beta x2 + gamma / |x2 - x1| (x2 - x1)^perp.
+// Returns the number of vertices moved.
+int optimize_flaps(const TriMesh& mesh, Eigen::MatrixXd* UV);
+
+// Triangles with det(J) <= 0 under the map UV (#V by 2).
+int count_inverted_triangles(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV);
+
+TutteWeights parse_tutte_weights(const std::string& name);
+
+}  // namespace akvf

@@ -1,0 +1,99 @@
+#include "framework/mesh/mesh_io.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+
+#include "framework/mesh/mesh_text.h"
+#include "framework/mesh/text_reader.h"
+#include "framework/process/error.h"
+#include "framework/process/output_file.h"
+
+namespace akvf {
+
+TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings) {
+  const RawElements raw = read_obj_elements(in, file_name, 3, "face",
+                                            "only triangles are supported (triangulate the mesh first)", warnings);
+  return {rows_to_matrix<double, 3>(raw.coords), rows_to_matrix<int, 3>(raw.corners), 1};
+}
+
+TriMesh read_off(std::istream& in, const std::string& file_name) {
+  TextReader reader(in, file_name);
+  if (!reader.next_line()) throw InputError(file_name, 0, "empty file (expected an 'OFF' header)");
+  const std::string header(reader.tokens()[0]);
+  if (header != "OFF" && header != "COFF" && header != "NOFF" && header != "CNOFF")
+    reader.fail("expected an 'OFF' header, found '" + header + "'");
+  std::size_t first = 1;  // the counts may follow the header on the same line
+  if (reader.tokens().size() == 1) {
+    if (!reader.next_line()) throw InputError(file_name, reader.line_number(), "file ends before the counts line");
+    first = 0;
+  }
+  const long long nv = reader.integer(first, "vertex count");
+  const long long nf = reader.integer(first + 1, "face count");
+  if (nv <= 0) reader.fail("vertex count must be positive, found " + std::to_string(nv));
+  if (nf <= 0) reader.fail("face count must be positive, found " + std::to_string(nf));
+  if (nv > std::numeric_limits<int>::max() || nf > std::numeric_limits<int>::max())
+    reader.fail("counts " + std::to_string(nv) + " vertices, " + std::to_string(nf) + " faces are too large");
+
+  std::vector<double> coords;
+  std::vector<int> corners;
+  coords.reserve(3 * std::min(nv, kMaxReserve));
+  corners.reserve(3 * std::min(nf, kMaxReserve));
+  for (long long i = 0; i < nv; ++i) {
+    if (!reader.next_line())
+      throw InputError(file_name, reader.line_number(),
+                       "file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
+    for (std::size_t k = 0; k < 3; ++k) coords.push_back(reader.real(k, "vertex coordinate"));
+  }
+  for (long long f = 0; f < nf; ++f) {
+    if (!reader.next_line())
+      throw InputError(file_name, reader.line_number(),
+                       "file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+    const long long n = reader.integer(0, "face corner count");
+    if (n != 3)
+      reader.fail("face has " + std::to_string(n) +
+                  " corners; only triangles are supported (triangulate the mesh first)");
+    if (reader.tokens().size() < 4) reader.fail("face lists fewer than 3 vertex indices");
+    for (std::size_t k = 1; k <= 3; ++k) {
+      const long long index = reader.integer(k, "face index");
+      if (index < 0 || index >= nv)
+        reader.fail("face index " + std::to_string(index) + " out of range (" + std::to_string(nv) + " vertices)");
+      corners.push_back(static_cast<int>(index));
+    }
+  }
+  // The header's count must match the file in both directions.
+  if (reader.next_line())
+    reader.fail("more faces than the header's face count " + std::to_string(nf) +
+                " (or stray text after the last face); fix the count on the header line");
+  return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 3>(corners), 0};
+}
+
+TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings) {
+  const std::string ext = lowercase_extension(path);
+  if (ext != ".obj" && ext != ".off")
+    throw InputError(path, 0, "unsupported mesh format '" + ext + "' (expected .obj or .off)");
+  std::ifstream in = open_mesh_file(path);
+  return ext == ".obj" ? read_obj(in, path, warnings) : read_off(in, path);
+}
+
+void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV) {
+  if (UV.rows() != mesh.V.rows() || UV.cols() != 2)
+    throw OutputError("UV matrix is " + std::to_string(UV.rows()) + "x" + std::to_string(UV.cols()) + ", expected " +
+                      std::to_string(mesh.V.rows()) + "x2");
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << std::setprecision(17);
+    out << "# " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces, written by akvf\n";
+    for (int i = 0; i < mesh.num_vertices(); ++i)
+      out << "v " << mesh.V(i, 0) << ' ' << mesh.V(i, 1) << ' ' << mesh.V(i, 2) << '\n';
+    for (int i = 0; i < mesh.num_vertices(); ++i) out << "vt " << UV(i, 0) << ' ' << UV(i, 1) << '\n';
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+      out << 'f';
+      for (int k = 0; k < 3; ++k) out << ' ' << mesh.F(f, k) + 1 << '/' << mesh.F(f, k) + 1;
+      out << '\n';
+    }
+  });
+}
+
+}  // namespace akvf

@@ -1,0 +1,31 @@
+#pragma once
+// Triangle mesh readers (OBJ, OFF) and the UV writer. Readers throw
+// InputError naming the file, the line and the problem.
+#include <istream>
+#include <string>
+
+#include "framework/mesh/mesh.h"
+
+namespace akvf {
+
+// OBJ: `v x y z` and `f` with corners `a`, `a/b`, `a//c` or `a/b/c`
+// (1-based, negative = relative to the vertices read so far). `vt`, `vn` and
+// the other statements OBJ allows are ignored, unknown ones with a warning
+// (mesh_text.h); faces with more or fewer than three corners are rejected.
+// A leading UTF-8 byte-order mark is skipped by every reader.
+TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings = nullptr);
+
+// OFF: header `OFF` (or COFF/NOFF), counts `#V #F [#E]`, vertex rows, then
+// face rows `3 i j k` (0-based). Counts that disagree with the file, in
+// either direction, are errors naming the line.
+TriMesh read_off(std::istream& in, const std::string& file_name);
+
+// Dispatches on the extension (.obj or .off, case-insensitive).
+TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings = nullptr);
+
+// Writes the mesh with one `vt` per vertex and faces `f a/a b/b c/c`, so the
+// vertex and face numbering of the input is kept.
+//   UV  #V by 2
+void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV);
+
+}  // namespace akvf

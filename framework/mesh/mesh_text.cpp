@@ -1,0 +1,104 @@
+#include "framework/mesh/mesh_text.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "framework/mesh/text_reader.h"
+#include "framework/process/error.h"
+
+namespace akvf {
+
+namespace {
+
+// The vertex index of an OBJ element corner `a`, `a/b`, `a//c` or `a/b/c`.
+long long obj_corner_index(const TextReader& reader, std::string_view token, long long vertices_so_far,
+                           const std::string& element) {
+  const std::string_view head = token.substr(0, token.find('/'));
+  long long index = 0;
+  if (!parse_integer(head, &index))
+    reader.fail(element + " corner '" + std::string(token) + "' does not start with a vertex index");
+  if (index == 0) reader.fail(element + " corner '" + std::string(token) + "': OBJ indices start at 1, not 0");
+  if (index < 0) {
+    const long long resolved = vertices_so_far + index;
+    if (resolved < 0)
+      reader.fail("relative " + element + " index " + std::to_string(index) + " reaches before the first vertex (" +
+                  std::to_string(vertices_so_far) + " vertices so far)");
+    return resolved;
+  }
+  return index - 1;
+}
+
+}  // namespace
+
+RawElements read_obj_elements(std::istream& in, const std::string& file_name, int corners, const std::string& element,
+                              const std::string& advice, Warnings* warnings) {
+  // Statements of the OBJ format that carry nothing a distortion energy uses.
+  static const std::set<std::string, std::less<>> kIgnored = {"vt", "vn",     "vp",     "g", "o",
+                                                              "s",  "usemtl", "mtllib", "l", "p"};
+  TextReader reader(in, file_name);
+  RawElements raw;
+  std::vector<long> element_lines;
+  std::map<std::string, std::pair<long, long>> unknown;  // statement -> (first line, count)
+  while (reader.next_line()) {
+    const auto& t = reader.tokens();
+    if (t[0] == "v") {
+      // x y z, an optional weight w, or the common x y z r g b colour extension.
+      if (t.size() < 4) reader.fail("vertex needs three coordinates, found " + std::to_string(t.size() - 1));
+      if (t.size() != 4 && t.size() != 5 && t.size() != 7)
+        reader.fail("vertex has " + std::to_string(t.size() - 1) +
+                    " numbers; expected x y z, x y z w, or x y z r g b (extra tokens after the coordinates)");
+      for (std::size_t i = 1; i <= 3; ++i) raw.coords.push_back(reader.real(i, "vertex coordinate"));
+      for (std::size_t i = 4; i < t.size(); ++i) reader.real(i, t.size() == 5 ? "vertex weight w" : "vertex colour");
+    } else if (t[0] == "f") {
+      if (static_cast<int>(t.size()) != corners + 1)
+        reader.fail(element + " has " + std::to_string(t.size() - 1) + " corners; " + advice);
+      const long long vertices_so_far = static_cast<long long>(raw.coords.size() / 3);
+      for (int i = 1; i <= corners; ++i) {
+        const long long index = obj_corner_index(reader, t[i], vertices_so_far, element);
+        if (index > std::numeric_limits<int>::max())
+          reader.fail(element + " index " + std::to_string(index + 1) + " is too large");
+        raw.corners.push_back(static_cast<int>(index));
+      }
+      element_lines.push_back(reader.line_number());
+    } else if (!kIgnored.count(t[0])) {
+      auto [it, inserted] = unknown.try_emplace(std::string(t[0]), reader.line_number(), 0);
+      ++it->second.second;
+    }
+  }
+  if (warnings)
+    for (const auto& [statement, where] : unknown)
+      warnings->push_back("line " + std::to_string(where.first) + " of " + file_name + ": unknown OBJ statement '" +
+                          statement + "' ignored (" + std::to_string(where.second) + " line" +
+                          (where.second == 1 ? "" : "s") + ")");
+  const long long nv = static_cast<long long>(raw.coords.size() / 3);
+  for (std::size_t e = 0; e < element_lines.size(); ++e)
+    for (int k = 0; k < corners; ++k)
+      if (raw.corners[corners * e + k] >= nv)
+        throw InputError(file_name, element_lines[e],
+                         element + " index " + std::to_string(raw.corners[corners * e + k] + 1) + " out of range (" +
+                             std::to_string(nv) + " vertices)");
+  if (nv == 0) throw InputError(file_name, 0, "no vertices");
+  if (element_lines.empty()) throw InputError(file_name, 0, "no " + element + "s");
+  return raw;
+}
+
+std::string lowercase_extension(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+std::ifstream open_mesh_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  return in;
+}
+
+}  // namespace akvf

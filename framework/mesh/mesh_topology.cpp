@@ -1,0 +1,101 @@
+#include "framework/mesh/mesh_topology.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "framework/process/error.h"
+
+namespace akvf {
+
+EdgeTopology edge_topology(const Eigen::MatrixXi& F) {
+  struct HalfEdge {
+    int lo, hi, from, face;
+  };
+  std::vector<HalfEdge> half_edges;
+  half_edges.reserve(3 * F.rows());
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = F(f, k), b = F(f, (k + 1) % 3);
+      half_edges.push_back({std::min(a, b), std::max(a, b), a, f});
+    }
+  std::sort(half_edges.begin(), half_edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face);
+  });
+  EdgeTopology topology;
+  for (std::size_t i = 0; i < half_edges.size();) {
+    std::size_t j = i;
+    while (j < half_edges.size() && half_edges[j].lo == half_edges[i].lo && half_edges[j].hi == half_edges[i].hi) ++j;
+    const HalfEdge& h = half_edges[i];
+    const std::size_t count = j - i;
+    ++topology.num_edges;
+    if (count == 1) {
+      topology.boundary_half_edges.emplace_back(h.from, h.from == h.lo ? h.hi : h.lo);
+    } else if (count == 2) {
+      if (half_edges[i].from == half_edges[i + 1].from && topology.misoriented_edge.empty())
+        topology.misoriented_edge = {h.lo, h.hi, half_edges[i].face, half_edges[i + 1].face};
+    } else if (topology.overused_edge.empty()) {
+      topology.overused_edge = {h.lo, h.hi, static_cast<int>(count)};
+    }
+    i = j;
+  }
+  return topology;
+}
+
+int count_components(const Eigen::MatrixXi& F, int num_vertices) {
+  std::vector<int> parent(num_vertices);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 1; k < 3; ++k) {
+      const int a = find(F(f, 0)), b = find(F(f, k));
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<char> used(num_vertices, 0);
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) used[F(f, k)] = 1;
+  int components = 0;
+  for (int v = 0; v < num_vertices; ++v) components += used[v] && find(v) == v;
+  return components;
+}
+
+std::vector<std::vector<int>> boundary_loops(const EdgeTopology& topology, int num_vertices) {
+  std::vector<int> next(num_vertices, -1);
+  for (const auto& [a, b] : topology.boundary_half_edges) {
+    if (next[a] != -1)
+      throw ValidationError("vertex " + std::to_string(a) + " is non-manifold: two separate boundary fans meet there");
+    next[a] = b;
+  }
+  std::vector<std::vector<int>> loops;
+  std::vector<char> visited(num_vertices, 0);
+  for (const auto& [start, unused] : topology.boundary_half_edges) {
+    if (visited[start]) continue;
+    std::vector<int> loop;
+    for (int v = start; !visited[v]; v = next[v]) {
+      if (next[v] == -1)
+        throw ValidationError("boundary is not closed at vertex " + std::to_string(v) + " (non-manifold mesh)");
+      visited[v] = 1;
+      loop.push_back(v);
+    }
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+VertexFaces vertex_faces(const Eigen::MatrixXi& F, int num_vertices) {
+  VertexFaces result;
+  result.offsets.assign(num_vertices + 1, 0);
+  const int corners = static_cast<int>(F.cols());
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < corners; ++k) ++result.offsets[F(f, k) + 1];
+  std::partial_sum(result.offsets.begin(), result.offsets.end(), result.offsets.begin());
+  result.face_corner.resize(result.offsets.back());
+  std::vector<int> fill(result.offsets.begin(), result.offsets.end() - 1);
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < corners; ++k) result.face_corner[fill[F(f, k)]++] = corners * f + k;
+  return result;
+}
+
+}  // namespace akvf

@@ -1,0 +1,122 @@
+#include "framework/mesh/mesh_validation.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "framework/mesh/mesh_topology.h"
+#include "framework/process/error.h"
+
+namespace akvf {
+
+namespace {
+
+void check_finite_and_indices(const TriMesh& m, const std::string& name) {
+  const int b = m.index_base;
+  for (int v = 0; v < m.num_vertices(); ++v)
+    if (!m.V.row(v).allFinite())
+      throw ValidationError(name + ": vertex " + file_number(v, b) + " has a non-finite coordinate" +
+                            numbering_note(b));
+  for (int f = 0; f < m.num_faces(); ++f) {
+    for (int k = 0; k < 3; ++k)
+      if (m.F(f, k) < 0 || m.F(f, k) >= m.num_vertices())
+        throw ValidationError(name + ": face " + file_number(f, b) + " has vertex index " + file_number(m.F(f, k), b) +
+                              " out of range (" + std::to_string(m.num_vertices()) + " vertices)" + numbering_note(b));
+    if (m.F(f, 0) == m.F(f, 1) || m.F(f, 1) == m.F(f, 2) || m.F(f, 0) == m.F(f, 2))
+      throw ValidationError(name + ": face " + file_number(f, b) + " uses the same vertex twice (" +
+                            file_number(m.F(f, 0), b) + ", " + file_number(m.F(f, 1), b) + ", " +
+                            file_number(m.F(f, 2), b) + ")" + numbering_note(b));
+  }
+}
+
+DiskMesh compact(const TriMesh& input, const std::string& name) {
+  DiskMesh out;
+  out.num_input_vertices = input.num_vertices();
+  std::vector<int> new_index(input.num_vertices(), -1);
+  for (int f = 0; f < input.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) new_index[input.F(f, k)] = 0;
+  int dropped = 0, first_dropped = -1;
+  for (int v = 0; v < input.num_vertices(); ++v) {
+    if (new_index[v] == 0) {
+      new_index[v] = static_cast<int>(out.input_vertex.size());
+      out.input_vertex.push_back(v);
+    } else if (dropped++ == 0) {
+      first_dropped = v;
+    }
+  }
+  out.mesh.V.resize(static_cast<Eigen::Index>(out.input_vertex.size()), 3);
+  for (std::size_t i = 0; i < out.input_vertex.size(); ++i) out.mesh.V.row(i) = input.V.row(out.input_vertex[i]);
+  out.mesh.F = input.F.unaryExpr([&](int v) { return new_index[v]; });
+  out.mesh.index_base = input.index_base;
+  if (dropped > 0)
+    out.warnings.push_back(name + ": dropped " + std::to_string(dropped) +
+                           " unreferenced vertices (first: " + file_number(first_dropped, input.index_base) +
+                           numbering_note(input.index_base) + "); they get UV (0, 0) in the output");
+  return out;
+}
+
+void check_face_areas(const TriMesh& m, const std::string& name, const std::vector<int>& input_vertex) {
+  const int base = m.index_base;
+  auto at_input = [&](int v) { return file_number(input_vertex[v], base); };
+  const double diagonal = (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm();
+  // A face is degenerate when its area is zero to working precision relative
+  // to the mesh's size: slivers are allowed, collapsed faces are not.
+  const double tolerance = 1e-14 * diagonal * diagonal;
+  for (int f = 0; f < m.num_faces(); ++f) {
+    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    if (!(area > tolerance))
+      throw ValidationError(name + ": face " + file_number(f, base) + " (vertices " + at_input(m.F(f, 0)) + ", " +
+                            at_input(m.F(f, 1)) + ", " + at_input(m.F(f, 2)) + ") has zero area" +
+                            numbering_note(base) + "; remove degenerate faces first");
+  }
+}
+
+}  // namespace
+
+DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name) {
+  if (input.num_faces() == 0) throw ValidationError(name + ": mesh has no faces");
+  check_finite_and_indices(input, name);
+  DiskMesh out = compact(input, name);
+  const TriMesh& m = out.mesh;
+  const int b = m.index_base;
+  auto at_input = [&](int v) { return file_number(out.input_vertex[v], b); };
+  check_face_areas(m, name, out.input_vertex);
+
+  const EdgeTopology topology = edge_topology(m.F);
+  if (!topology.overused_edge.empty())
+    throw ValidationError(name + ": edge (" + at_input(topology.overused_edge[0]) + ", " +
+                          at_input(topology.overused_edge[1]) + ") is shared by " +
+                          std::to_string(topology.overused_edge[2]) + " faces" + numbering_note(b) +
+                          "; the mesh must be edge-manifold");
+  if (!topology.misoriented_edge.empty())
+    throw ValidationError(name + ": faces " + file_number(topology.misoriented_edge[2], b) + " and " +
+                          file_number(topology.misoriented_edge[3], b) + " traverse edge (" +
+                          at_input(topology.misoriented_edge[0]) + ", " + at_input(topology.misoriented_edge[1]) +
+                          ") in the same direction" + numbering_note(b) + "; faces must be consistently oriented");
+
+  const int components = count_components(m.F, m.num_vertices());
+  if (components != 1)
+    throw ValidationError(name + ": mesh has " + std::to_string(components) +
+                          " connected components; parameterize one disk-shaped component at a time");
+
+  // A vertex where two boundary fans meet starts two boundary half-edges.
+  std::vector<char> starts_boundary(m.num_vertices(), 0);
+  for (const auto& [from, to] : topology.boundary_half_edges)
+    if (starts_boundary[from]++)
+      throw ValidationError(name + ": vertex " + at_input(from) + numbering_note(b) +
+                            " is non-manifold: two separate boundary fans meet there");
+  const std::vector<std::vector<int>> loops = boundary_loops(topology, m.num_vertices());
+  if (loops.empty())
+    throw ValidationError(name + ": mesh is closed (no boundary loop); it must be cut to a disk first");
+  if (loops.size() > 1)
+    throw ValidationError(name + ": mesh has " + std::to_string(loops.size()) +
+                          " boundary loops (a disk has exactly one); it must be cut to a disk first");
+  const int euler = m.num_vertices() - topology.num_edges + m.num_faces();
+  if (euler != 1)
+    throw ValidationError(name + ": Euler characteristic is " + std::to_string(euler) +
+                          " (a disk has 1): the mesh has handles; it must be cut to a disk first");
+  out.boundary_loop = std::move(loops.front());
+  return out;
+}
+
+}  // namespace akvf
