@@ -41,12 +41,7 @@ DeformResult Deformer::solve(const PositionConstraints& constraints, const Defor
   const DeformRun run = run_deformation(state_->setup, constraints, deform_config(options), options.callbacks);
   DeformResult result;
   result.x = run.prepared.in_input_numbering(unstack_rows(run.result.x, 3), state_->mesh).V;
-  result.status = run.result.status;
-  result.message = run.result.message;
-  result.trace = run.result.trace;
-  result.statistics = run_statistics(run.result, run.preconditioner_statistics);
-  result.preconditioner_report = run.preconditioner_report;
-  result.warnings = run.warnings;
+  fill_run_fields(run.result, run.preconditioner_statistics, run.preconditioner_report, run.warnings, &result);
   return result;
 }
 

@@ -44,4 +44,17 @@ void require_columns(const Matrix& array, int columns, const std::string& what) 
 // RunStatistics of a finished run.
 RunStatistics run_statistics(const OptimizerResult& result, const PreconditionerStatistics& preconditioner);
 
+// The fields ParameterizeResult and DeformResult share, from a finished run
+// (the map itself, uv or x, is the caller's).
+template <class Result>
+void fill_run_fields(const OptimizerResult& run, const PreconditionerStatistics& preconditioner,
+                     const std::string& report, const Warnings& warnings, Result* result) {
+  result->status = run.status;
+  result->message = run.message;
+  result->trace = run.trace;
+  result->statistics = run_statistics(run, preconditioner);
+  result->preconditioner_report = report;
+  result->warnings = warnings;
+}
+
 }  // namespace akvf

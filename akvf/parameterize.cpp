@@ -25,12 +25,7 @@ struct Parameterizer::State {
     const ParamRun run = run_parameterization(from, config, options.callbacks);
     ParameterizeResult result;
     result.uv = output_uv(from, run.result.x);
-    result.status = run.result.status;
-    result.message = run.result.message;
-    result.trace = run.result.trace;
-    result.statistics = run_statistics(run.result, run.preconditioner_statistics);
-    result.preconditioner_report = run.preconditioner_report;
-    result.warnings = from.warnings;
+    fill_run_fields(run.result, run.preconditioner_statistics, run.preconditioner_report, from.warnings, &result);
     return result;
   }
 };
