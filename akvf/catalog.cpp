@@ -1,7 +1,9 @@
 #include "akvf/catalog.h"
 
-#include "energies/distortion_energies.h"
-#include "energies/distortion_energies_3d.h"
+#include "energies/amips.h"
+#include "energies/arap.h"
+#include "energies/exp_symmetric_dirichlet.h"
+#include "energies/mips.h"
 #include "energies/symmetric_dirichlet.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "preconditioners/energy_scale.h"
@@ -14,19 +16,19 @@
 
 namespace akvf {
 
-DensityRegistry& mutable_energies_2d() {
-  static DensityRegistry registry = [] {
-    DensityRegistry r("energy");
+DensityRegistry2D& mutable_energies_2d() {
+  static DensityRegistry2D registry = [] {
+    DensityRegistry2D r("energy");
     r.add("symmetric-dirichlet", "|J|^2 + |J^-1|^2, Eq. (2); lower bound 4",
-          [](const EnergySettings&) { return std::make_unique<SymmetricDirichlet2>(); });
+          [](const EnergySettings&) { return std::make_unique<SymmetricDirichlet2D>(); });
     r.add("arap", "|J - R(J)|^2, R the closest rotation; lower bound 0",
-          [](const EnergySettings&) { return std::make_unique<Arap2>(); });
+          [](const EnergySettings&) { return std::make_unique<Arap2D>(); });
     r.add("mips", "conformal |J|^2 / det J; lower bound 2",
-          [](const EnergySettings&) { return std::make_unique<Mips2>(); });
+          [](const EnergySettings&) { return std::make_unique<Mips2D>(); });
     r.add("exp-symmetric-dirichlet", "exp(k (|J|^2 + |J^-1|^2)), k = --exponent; lower bound exp(4k)",
-          [](const EnergySettings& e) { return std::make_unique<ExpSymmetricDirichlet2>(e.exponent); });
+          [](const EnergySettings& e) { return std::make_unique<ExpSymmetricDirichlet2D>(e.exponent); });
     r.add("amips", "exp(k (|J|^2 / (4 det J) + (det J + 1/det J) / 4)), k = --exponent; lower bound exp(k)",
-          [](const EnergySettings& e) { return std::make_unique<Amips2>(e.exponent); });
+          [](const EnergySettings& e) { return std::make_unique<Amips2D>(e.exponent); });
     return r;
   }();
   return registry;
@@ -36,15 +38,15 @@ DensityRegistry3D& mutable_energies_3d() {
   static DensityRegistry3D registry = [] {
     DensityRegistry3D r("3D energy");
     r.add("symmetric-dirichlet", "|J|^2 + |J^-1|^2 on tets; lower bound 6",
-          [](const EnergySettings&) { return std::make_unique<SymmetricDirichlet3>(); });
+          [](const EnergySettings&) { return std::make_unique<SymmetricDirichlet3D>(); });
     r.add("arap", "|J - R(J)|^2 on tets, R the closest rotation (through the SVD); lower bound 0",
-          [](const EnergySettings&) { return std::make_unique<Arap3>(); });
+          [](const EnergySettings&) { return std::make_unique<Arap3D>(); });
     r.add("mips", "conformal |J|^2 / det(J)^(2/3) on tets; lower bound 3",
-          [](const EnergySettings&) { return std::make_unique<Mips3>(); });
+          [](const EnergySettings&) { return std::make_unique<Mips3D>(); });
     r.add("exp-symmetric-dirichlet", "exp(k (|J|^2 + |J^-1|^2)) on tets, k = --exponent; lower bound exp(6k)",
-          [](const EnergySettings& e) { return std::make_unique<ExpSymmetricDirichlet3>(e.exponent); });
+          [](const EnergySettings& e) { return std::make_unique<ExpSymmetricDirichlet3D>(e.exponent); });
     r.add("amips", "exp(k (|J|^2 / (6 det(J)^(2/3)) + (det J + 1/det J) / 4)) on tets, k = --exponent; bound exp(k)",
-          [](const EnergySettings& e) { return std::make_unique<Amips3>(e.exponent); });
+          [](const EnergySettings& e) { return std::make_unique<Amips3D>(e.exponent); });
     return r;
   }();
   return registry;
@@ -54,27 +56,27 @@ PreconditionerRegistry3D& mutable_preconditioners_3d() {
   static PreconditionerRegistry3D registry = [] {
     PreconditionerRegistry3D r("3D preconditioner");
     r.add("akvf", "s K(x) + c I + constraints' Hessian, K of Eq. (9)-(10), c = 1e-4 (Sec. 6.2), s secant scale",
-          [](const TetObjective& objective, const Preconditioner3DSettings& settings) {
+          [](const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
             return std::make_unique<AkvfPreconditioner3D>(objective, settings.akvf);
           });
     r.add("newton", "projected Newton: tet Hessians clamped to PSD, plus the constraints' Hessian",
-          [](const TetObjective& objective, const Preconditioner3DSettings& settings) {
+          [](const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
             return std::make_unique<NewtonPreconditioner3D>(objective, settings.newton);
           });
     r.add("laplacian",
           "AQP proxy: the rest Laplacian per coordinate at the energy's scale, plus the constraints' Hessian",
-          [](const TetObjective& objective, const Preconditioner3DSettings& settings) {
+          [](const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
             // L's quadratic form along a unit shear is |S|^2 = 2 (weights sum to 1).
             return std::make_unique<LaplacianPreconditioner3D>(objective, settings.laplacian, MotionProjection::kNone,
                                                                rest_shear_curvature(objective.density()) / 2);
           },
           {kMomentumByDefault});
     r.add("slim", "SLIM: reweighted ARAP proxy plus the constraints' Hessian (Rabinovich et al. 2017)",
-          [](const TetObjective& objective, const Preconditioner3DSettings& settings) {
+          [](const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
             return std::make_unique<SlimPreconditioner3D>(objective, settings.slim);
           });
     r.add("identity", "no preconditioning: plain gradient descent",
-          [](const TetObjective&, const Preconditioner3DSettings&) {
+          [](const MeshObjective3D&, const PreconditionerSettings3D&) {
             return std::make_unique<IdentityPreconditioner>();
           });
     return r;
@@ -82,29 +84,29 @@ PreconditionerRegistry3D& mutable_preconditioners_3d() {
   return registry;
 }
 
-PreconditionerRegistry& mutable_preconditioners_2d() {
-  static PreconditionerRegistry registry = [] {
-    PreconditionerRegistry r("preconditioner");
+PreconditionerRegistry2D& mutable_preconditioners_2d() {
+  static PreconditionerRegistry2D registry = [] {
+    PreconditionerRegistry2D r("preconditioner");
     r.add("akvf", "Killing operator K(x) of Eq. (5), area-scaled, CHOLMOD (the paper's method)",
-          [](const ParamObjective& objective, const PreconditionerSettings& settings) {
+          [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return std::make_unique<AkvfPreconditioner2D>(objective, settings.akvf);
           });
     r.add("newton", "projected Newton: element Hessians clamped to PSD, CHOLMOD",
-          [](const ParamObjective& objective, const PreconditionerSettings& settings) {
+          [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return std::make_unique<NewtonPreconditioner2D>(objective, settings.newton);
           });
     r.add("laplacian",
           "AQP proxy: cotangent Laplacian of the 3D mesh per coordinate, factored once; AQP momentum by default",
-          [](const ParamObjective& objective, const PreconditionerSettings& settings) {
+          [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return std::make_unique<LaplacianPreconditioner2D>(objective, settings.laplacian);
           },
           {kMomentumByDefault});
     r.add("slim", "SLIM: reweighted ARAP proxy whose gradient is the energy's (Rabinovich et al. 2017)",
-          [](const ParamObjective& objective, const PreconditionerSettings& settings) {
+          [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return std::make_unique<SlimPreconditioner2D>(objective, settings.slim);
           });
     r.add("identity", "no preconditioning: plain gradient descent",
-          [](const ParamObjective&, const PreconditionerSettings&) {
+          [](const MeshObjective2D&, const PreconditionerSettings2D&) {
             return std::make_unique<IdentityPreconditioner>();
           });
     return r;
@@ -153,10 +155,10 @@ LineSearchRegistry& mutable_line_searches() {
   return registry;
 }
 
-const DensityRegistry& energies_2d() { return mutable_energies_2d(); }
+const DensityRegistry2D& energies_2d() { return mutable_energies_2d(); }
 const DensityRegistry3D& energies_3d() { return mutable_energies_3d(); }
 const PreconditionerRegistry3D& preconditioners_3d() { return mutable_preconditioners_3d(); }
-const PreconditionerRegistry& preconditioners_2d() { return mutable_preconditioners_2d(); }
+const PreconditionerRegistry2D& preconditioners_2d() { return mutable_preconditioners_2d(); }
 const LineSearchRegistry& line_searches() { return mutable_line_searches(); }
 
 }  // namespace akvf

@@ -6,11 +6,11 @@
 #include <memory>
 
 #include "framework/optimization/distortion_density.h"
-#include "framework/optimization/distortion_objective.h"
 #include "framework/optimization/line_search.h"
+#include "framework/optimization/mesh_objective.h"
 #include "framework/optimization/preconditioner.h"
 #include "framework/optimization/registry.h"
-#include "preconditioners/akvf_preconditioner.h"
+#include "preconditioners/akvf_preconditioner_2d.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 
 namespace akvf {
@@ -20,16 +20,21 @@ struct EnergySettings {
   double exponent = 1.0;  // k of the exponential energies
 };
 
-using DensityRegistry = Registry<DistortionDensity2, const EnergySettings&>;
+using DensityRegistry2D = Registry<DistortionDensity2D, const EnergySettings&>;
 // Options of the preconditioners that have them, set from the command line.
-struct PreconditionerSettings {
-  AkvfOptions akvf;
+struct PreconditionerSettings2D {
+  AkvfOptions2D akvf;
   FactorOptions newton;     // factored every iteration unless reuse is set
   FactorOptions laplacian;  // constant: factored once
   FactorOptions slim;       // factored every iteration unless reuse is set
+
+  // Every factored preconditioner takes its symbolic analyses from `cache`.
+  void share_analyses(const std::shared_ptr<SymbolicAnalysisCache>& cache) {
+    for (FactorOptions* options : {&akvf.factor, &newton, &laplacian, &slim}) options->analysis_cache = cache;
+  }
 };
 
-using PreconditionerRegistry = Registry<Preconditioner, const ParamObjective&, const PreconditionerSettings&>;
+using PreconditionerRegistry2D = Registry<Preconditioner, const MeshObjective2D&, const PreconditionerSettings2D&>;
 using LineSearchRegistry = Registry<LineSearch, const LineSearchSettings&>;
 
 // The solvers of a parameterization (`--solver`): the preconditioned,
@@ -59,8 +64,8 @@ double acceleration_eta(const std::string& mode, bool momentum_by_default);
 using DensityRegistry3D = Registry<DistortionDensity<3>, const EnergySettings&>;
 // Options of the 3D preconditioners. In deformation, newton, laplacian and
 // slim carry the constraint term's Hessian in their extra_diagonal.
-struct Preconditioner3DSettings {
-  Akvf3DOptions akvf;
+struct PreconditionerSettings3D {
+  AkvfOptions3D akvf;
   FactorOptions newton = shifted_factor_options(1e-4);
   FactorOptions laplacian = shifted_factor_options(1e-4);
   FactorOptions slim = shifted_factor_options(1e-4);
@@ -71,22 +76,26 @@ struct Preconditioner3DSettings {
   void set_cg_tolerance(double tolerance) {
     for (FactorOptions* options : {&akvf.factor, &newton, &slim}) options->cg_tolerance = tolerance;
   }
+  // Every factored preconditioner takes its symbolic analyses from `cache`.
+  void share_analyses(const std::shared_ptr<SymbolicAnalysisCache>& cache) {
+    for (FactorOptions* options : {&akvf.factor, &newton, &laplacian, &slim}) options->analysis_cache = cache;
+  }
 };
-using PreconditionerRegistry3D = Registry<Preconditioner, const TetObjective&, const Preconditioner3DSettings&>;
+using PreconditionerRegistry3D = Registry<Preconditioner, const MeshObjective3D&, const PreconditionerSettings3D&>;
 
-const DensityRegistry& energies_2d();
+const DensityRegistry2D& energies_2d();
 const DensityRegistry3D& energies_3d();
 const PreconditionerRegistry3D& preconditioners_3d();
-const PreconditionerRegistry& preconditioners_2d();
+const PreconditionerRegistry2D& preconditioners_2d();
 const LineSearchRegistry& line_searches();
 
 // The same registries for adding user-defined parts by name (registry.h:
 // add() refuses a name that is taken). Register before runs start: a
 // registry is not guarded against concurrent registration and use.
-DensityRegistry& mutable_energies_2d();
+DensityRegistry2D& mutable_energies_2d();
 DensityRegistry3D& mutable_energies_3d();
 PreconditionerRegistry3D& mutable_preconditioners_3d();
-PreconditionerRegistry& mutable_preconditioners_2d();
+PreconditionerRegistry2D& mutable_preconditioners_2d();
 LineSearchRegistry& mutable_line_searches();
 
 }  // namespace akvf

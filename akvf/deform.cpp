@@ -12,6 +12,8 @@ bool DeformOptions::is_valid(std::string* error) const { return passes_checks(*t
 struct Deformer::State {
   TetMesh mesh;
   DeformSetup setup;
+  // The symbolic analyses of the mesh's matrices, kept across solves.
+  std::shared_ptr<SymbolicAnalysisCache> analyses = std::make_shared<SymbolicAnalysisCache>();
 };
 
 Deformer::Deformer(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T) : state_(std::make_unique<State>()) {
@@ -38,7 +40,9 @@ DeformResult Deformer::solve(const PositionConstraints& constraints, const Defor
       throw InputError("constraint " + std::to_string(c) + ": vertex index " + std::to_string(constraints.vertices[c]) +
                        " out of range (" + std::to_string(num_vertices) + " vertices, 0-based)");
   check_options(options);
-  const DeformRun run = run_deformation(state_->setup, constraints, deform_config(options), options.callbacks);
+  DeformConfig config = deform_config(options);
+  config.preconditioner_settings.share_analyses(state_->analyses);
+  const DeformRun run = run_deformation(state_->setup, constraints, config, options.callbacks);
   DeformResult result;
   result.x = run.prepared.in_input_numbering(unstack_rows(run.result.x, 3), state_->mesh).V;
   fill_run_fields(run.result, run.preconditioner_statistics, run.preconditioner_report, run.warnings, &result);

@@ -16,8 +16,8 @@ namespace {
 // §6.2 states it (K + c I, no constraint Hessian, no energy scale) when asked
 // and the constraints are soft. The constraints reach every preconditioner
 // through the objective (DistortionObjective::added_hessian_diagonal).
-Preconditioner3DSettings preconditioner_settings(const DeformConfig& config) {
-  Preconditioner3DSettings settings = config.preconditioner_settings;
+PreconditionerSettings3D preconditioner_settings(const DeformConfig& config) {
+  PreconditionerSettings3D settings = config.preconditioner_settings;
   if (config.akvf_as_written && !config.hard_constraints) {
     settings.akvf.include_problem_hessian = false;
     settings.akvf.secant_scaling = false;
@@ -110,7 +110,7 @@ DeformRun run_deformation(const DeformSetup& setup, const PositionConstraints& i
   PositionConstraints constraints = in_mesh_numbering(input_constraints, run.prepared, name, &run.warnings);
   constraints.targets *= run.scale;
   const std::vector<IterationCallback> callbacks = at_input_scale(user_callbacks, run.scale);
-  TetObjective energy(mesh.T, setup.rest, density, mesh.num_vertices());
+  DistortionObjective3D energy(mesh.T, setup.rest, density, mesh.num_vertices());
   energy.set_file_numbering(run.prepared.input_vertex, setup.index_base);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
   const Eigen::VectorXd rest = stack_rows(mesh.V);

@@ -21,7 +21,7 @@ struct DeformConfig {
   std::string energy = "symmetric-dirichlet";
   EnergySettings energy_settings;
   std::string preconditioner = "akvf";
-  Preconditioner3DSettings preconditioner_settings;  // c of K + c I, CG instead of the factorization, ...
+  PreconditionerSettings3D preconditioner_settings;  // c of K + c I, CG instead of the factorization, ...
   std::string line_search = "backtracking";
   std::string acceleration = "auto";  // AQP momentum: see acceleration_eta() in catalog.h
   LineSearchSettings line_search_settings;

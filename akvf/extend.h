@@ -34,9 +34,9 @@ void register_autodiff_energy(const std::string& name, const std::string& descri
 
 // Any DistortionDensity (hand-written derivatives), or any Preconditioner,
 // through its factory. A 2D preconditioner is built from the objective and
-// the settings: (const ParamObjective&, const PreconditionerSettings&).
+// the settings: (const MeshObjective2D&, const PreconditionerSettings2D&).
 inline void register_energy_2d(const std::string& name, const std::string& description,
-                               DensityRegistry::Factory factory) {
+                               DensityRegistry2D::Factory factory) {
   mutable_energies_2d().add(name, description, std::move(factory));
 }
 inline void register_energy_3d(const std::string& name, const std::string& description,
@@ -44,7 +44,7 @@ inline void register_energy_3d(const std::string& name, const std::string& descr
   mutable_energies_3d().add(name, description, std::move(factory));
 }
 inline void register_preconditioner_2d(const std::string& name, const std::string& description,
-                                       PreconditionerRegistry::Factory factory) {
+                                       PreconditionerRegistry2D::Factory factory) {
   mutable_preconditioners_2d().add(name, description, std::move(factory));
 }
 inline void register_preconditioner_3d(const std::string& name, const std::string& description,

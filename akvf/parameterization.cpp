@@ -32,7 +32,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   if (!config.optimizer.is_valid(&invalid)) throw OptionsError(invalid);
   if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
   // Resolve names first so a typo fails before any work.
-  std::shared_ptr<const DistortionDensity2> density = energies_2d().create(config.energy, config.energy_settings);
+  std::shared_ptr<const DistortionDensity2D> density = energies_2d().create(config.energy, config.energy_settings);
   require_solver(config.solver);
   require_method(config.preconditioner);
   acceleration_eta(config.acceleration, false);  // validates the mode
@@ -52,8 +52,8 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   Eigen::MatrixXd UV = tutte_embedding(normalized, setup.disk.boundary_loop, config.init, &setup.warnings);
   if (config.optimize_flaps) setup.flaps_moved = optimize_flaps(normalized, &UV);
   setup.x0 = stack_uv(UV);
-  setup.objective =
-      std::make_shared<ParamObjective>(normalized.F, rest_triangles(normalized), density, normalized.num_vertices());
+  setup.objective = std::make_shared<DistortionObjective2D>(normalized.F, rest_triangles(normalized), density,
+                                                            normalized.num_vertices());
   setup.objective->set_file_numbering(setup.disk.input_vertex, input.index_base);
   if (!usable_start(*setup.objective, setup.x0) && config.energy != kWarmStartEnergy) warm_start(config, &setup);
   return setup;
@@ -129,9 +129,9 @@ void warm_start(const ParamConfig& config, ParamSetup* setup) {
   sd_config.energy = kWarmStartEnergy;
   sd_config.optimizer.max_iterations = config.warm_start_max_iterations;
   ParamSetup sd_setup = *setup;
-  sd_setup.objective =
-      std::make_shared<ParamObjective>(setup->objective->elements(), setup->objective->rest(),
-                                       energies_2d().create(kWarmStartEnergy, {}), setup->objective->num_vertices());
+  sd_setup.objective = std::make_shared<DistortionObjective2D>(setup->objective->elements(), setup->objective->rest(),
+                                                               energies_2d().create(kWarmStartEnergy, {}),
+                                                               setup->objective->num_vertices());
   OptimizerResult warm = run_from_start(sd_setup, sd_config, {}).result;
   const IterationSummary& last = warm.trace.back();
   char reached[200];

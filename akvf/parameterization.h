@@ -21,7 +21,7 @@ struct ParamConfig {
   std::string preconditioner = "akvf";
   std::string line_search = "backtracking";
   LineSearchSettings line_search_settings;
-  PreconditionerSettings preconditioner_settings;
+  PreconditionerSettings2D preconditioner_settings;
   TutteWeights init = TutteWeights::kUniform;
   // §5.4 flap optimization after the Tutte map (see docs/performance.md for
   // the measurement behind the default).
@@ -39,11 +39,11 @@ struct ParamConfig {
 
 // A validated, normalized problem with its initial map.
 struct ParamSetup {
-  double unit_scale = 1;                      // exact power of two: input * unit_scale has extent ~1
-  DiskMesh disk;                              // the compacted input mesh times unit_scale
-  Normalization normalization;                // of disk.mesh to total area 1
-  std::shared_ptr<ParamObjective> objective;  // on the normalized mesh
-  Eigen::VectorXd x0;                         // initial map, interleaved, area-1 units
+  double unit_scale = 1;                             // exact power of two: input * unit_scale has extent ~1
+  DiskMesh disk;                                     // the compacted input mesh times unit_scale
+  Normalization normalization;                       // of disk.mesh to total area 1
+  std::shared_ptr<DistortionObjective2D> objective;  // on the normalized mesh
+  Eigen::VectorXd x0;                                // initial map, interleaved, area-1 units
   int flaps_moved = 0;
   // The warm start's run when the energy is infinite at the initial map
   // (empty trace otherwise); x0 is its end point when it succeeded.

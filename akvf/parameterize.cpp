@@ -14,10 +14,16 @@ struct Parameterizer::State {
   ParameterizeOptions options;
   ParamConfig config;
   ParamSetup setup;
+  // The symbolic analyses of the mesh's matrices, kept across solves.
+  std::shared_ptr<SymbolicAnalysisCache> analyses = std::make_shared<SymbolicAnalysisCache>();
 
-  void prepare() {
+  void configure() {
     check_options(options);
     config = param_config(options);
+    config.preconditioner_settings.share_analyses(analyses);
+  }
+  void prepare() {
+    configure();
     setup = prepare_parameterization(mesh, "mesh", config);
   }
 
@@ -75,8 +81,7 @@ void Parameterizer::set_options(const ParameterizeOptions& options) {
     if (new_start) {
       state_->prepare();
     } else {
-      check_options(options);
-      state_->config = param_config(options);
+      state_->configure();
     }
   } catch (...) {
     state_->options = previous;

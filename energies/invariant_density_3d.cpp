@@ -68,23 +68,23 @@ Matrix9 cofactor_norm_hessian(const Matrix3& J) {
 
 }  // namespace
 
-double InvariantDensity3::value(const Matrix& J) const {
+double InvariantDensity3D::value(const Matrix& J) const {
   const double g = J.determinant();
   return g > 0 ? derivatives(J.squaredNorm(), cofactor_norm2(J), g).f : kInfinity;
 }
 
-double InvariantDensity3::value_and_gradient(const Matrix& J, Matrix* dD_dJ) const {
+double InvariantDensity3D::value_and_gradient(const Matrix& J, Matrix* dD_dJ) const {
   const double g = J.determinant();
   if (!(g > 0)) return kInfinity;
   const double s = J.squaredNorm();
-  const InvariantDerivatives3 d = derivatives(s, cofactor_norm2(J), g);
+  const InvariantDerivatives3D d = derivatives(s, cofactor_norm2(J), g);
   *dD_dJ = d.f_s * 2 * J + d.f_c * (2 * s * J - 2 * J * J.transpose() * J) + d.f_g * cofactor(J);
   return d.f;
 }
 
-InvariantDensity3::Hessian InvariantDensity3::hessian(const Matrix& J) const {
+InvariantDensity3D::Hessian InvariantDensity3D::hessian(const Matrix& J) const {
   const double s = J.squaredNorm();
-  const InvariantDerivatives3 d = derivatives(s, cofactor_norm2(J), J.determinant());
+  const InvariantDerivatives3D d = derivatives(s, cofactor_norm2(J), J.determinant());
   Eigen::Matrix<double, 9, 3> G;
   G.col(0) = 2 * vec(J);
   G.col(1) = vec(2 * s * J - 2 * J * J.transpose() * J);
@@ -95,30 +95,18 @@ InvariantDensity3::Hessian InvariantDensity3::hessian(const Matrix& J) const {
          d.f_g * determinant_hessian(J);
 }
 
-Eigen::Vector3d InvariantDensity3::singular_value_gradient(const Eigen::Vector3d& sigma) const {
+Eigen::Vector3d InvariantDensity3D::singular_value_gradient(const Eigen::Vector3d& sigma) const {
   const Eigen::Vector3d squared = sigma.cwiseAbs2();
   const double s = squared.sum();
   const double c = squared[0] * squared[1] + squared[1] * squared[2] + squared[2] * squared[0];
   const double g = sigma.prod();
-  const InvariantDerivatives3 d = derivatives(s, c, g);
+  const InvariantDerivatives3D d = derivatives(s, c, g);
   Eigen::Vector3d gradient;
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     gradient[i] = 2 * sigma[i] * (d.f_s + d.f_c * (squared[j] + squared[k])) + d.f_g * sigma[j] * sigma[k];
   }
   return gradient;
-}
-
-InvariantDerivatives3 SymmetricDirichlet3::formula(double s, double c, double g) {
-  const double g2 = g * g, g3 = g2 * g;
-  InvariantDerivatives3 d;
-  d.f = s + c / g2;
-  d.f_s = 1;
-  d.f_c = 1 / g2;
-  d.f_g = -2 * c / g3;
-  d.f_cg = -2 / g3;
-  d.f_gg = 6 * c / (g2 * g2);
-  return d;
 }
 
 }  // namespace akvf

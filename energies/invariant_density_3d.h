@@ -5,18 +5,19 @@
 //   dD/dvec(J) = G f',   d2D/dvec(J)^2 = G f'' G^T + f_s H_s + f_c H_c + f_g H_g,
 // G = [ds dc dg] (9 by 3); ds = 2 vec J, dc = vec(2 s J - 2 J J^T J),
 // dg = vec(cof J); H_s = 2 I, H_c and H_g (linear in J) as derived in the
-// .cpp. +infinity when g <= 0. The other 3D energies: distortion_energies_3d.h.
+// .cpp. +infinity when g <= 0. The energies built on it: symmetric_dirichlet.h,
+// exp_symmetric_dirichlet.h, mips.h, amips.h.
 #include "framework/optimization/distortion_density.h"
 
 namespace akvf {
 
-struct InvariantDerivatives3 {
+struct InvariantDerivatives3D {
   double f = 0;
   double f_s = 0, f_c = 0, f_g = 0;
   double f_ss = 0, f_sc = 0, f_sg = 0, f_cc = 0, f_cg = 0, f_gg = 0;
 };
 
-class InvariantDensity3 : public DistortionDensity<3>, public SingularValueDerivative<3> {
+class InvariantDensity3D : public DistortionDensity<3>, public SingularValueDerivative<3> {
  public:
   double value(const Matrix& J) const final;
   double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const final;
@@ -25,18 +26,7 @@ class InvariantDensity3 : public DistortionDensity<3>, public SingularValueDeriv
   Eigen::Vector3d singular_value_gradient(const Eigen::Vector3d& sigma) const final;
 
  protected:
-  virtual InvariantDerivatives3 derivatives(double s, double c, double g) const = 0;
-};
-
-// 3D symmetric Dirichlet |J|^2 + |J^-1|^2 = s + c / g^2, minimum 6 at rotations.
-class SymmetricDirichlet3 final : public InvariantDensity3 {
- public:
-  std::string name() const override { return "symmetric-dirichlet"; }
-  double lower_bound() const override { return 6.0; }
-  static InvariantDerivatives3 formula(double s, double c, double g);
-
- protected:
-  InvariantDerivatives3 derivatives(double s, double c, double g) const override { return formula(s, c, g); }
+  virtual InvariantDerivatives3D derivatives(double s, double c, double g) const = 0;
 };
 
 }  // namespace akvf

@@ -6,14 +6,14 @@ namespace akvf {
 
 namespace {
 
-FactorOptions with_problem_hessian(FactorOptions options, const TetObjective& objective) {
+FactorOptions with_problem_hessian(FactorOptions options, const MeshObjective3D& objective) {
   if (options.extra_diagonal.size() == 0) options.extra_diagonal = objective.added_hessian_diagonal();
   return options;
 }
 
 }  // namespace
 
-AkvfPreconditioner3D::AkvfPreconditioner3D(const TetObjective& objective, Akvf3DOptions options)
+AkvfPreconditioner3D::AkvfPreconditioner3D(const MeshObjective3D& objective, AkvfOptions3D options)
     : FactoredPreconditioner3D(
           objective.elements(), objective.num_vertices(),
           options.include_problem_hessian ? with_problem_hessian(options.factor, objective) : options.factor),

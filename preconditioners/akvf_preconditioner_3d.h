@@ -15,33 +15,33 @@
 // it (secant_scaling = false, s = 1) the direction is off by the energy's
 // scale (exp(6k) for the exponential energies) and the descent crawls; see
 // docs/deformation.md.
-#include "framework/optimization/distortion_objective.h"
+#include "framework/optimization/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 #include "preconditioners/killing_operator_3d.h"
 
 namespace akvf {
 
-struct Akvf3DOptions {
+struct AkvfOptions3D {
   FactorOptions factor = shifted_factor_options(1e-4);  // c of §6.2
   bool project_rigid = false;
   bool secant_scaling = true;
   // Include the Hessian of the terms the problem adds to the energy
-  // (DistortionObjective::added_hessian_diagonal: the constraints). Off is
+  // (MeshObjective::added_hessian_diagonal: the constraints). Off is
   // §6.2 as written, K + c I alone (--akvf-as-written).
   bool include_problem_hessian = true;
 };
 
 class AkvfPreconditioner3D final : public FactoredPreconditioner3D {
  public:
-  explicit AkvfPreconditioner3D(const TetObjective& objective, Akvf3DOptions options = {});
+  explicit AkvfPreconditioner3D(const MeshObjective3D& objective, AkvfOptions3D options = {});
   std::string name() const override { return "akvf"; }
 
  private:
   void assemble(const OptimizationState& state, ElementMatrix3D* matrix) override;
   Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override;
 
-  const TetObjective& objective_;
-  Akvf3DOptions options_;
+  const MeshObjective3D& objective_;
+  AkvfOptions3D options_;
   double scale_;  // s
   Eigen::VectorXd previous_x_, previous_gradient_;
 };

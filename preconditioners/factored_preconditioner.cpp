@@ -17,7 +17,7 @@ FactorOptions with_added_diagonal(FactorOptions options, const Eigen::VectorXd& 
 }  // namespace
 
 template <int D>
-FactoredPreconditioner<D>::FactoredPreconditioner(const DistortionObjective<D>& objective, FactorOptions options)
+FactoredPreconditioner<D>::FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options)
     : FactoredPreconditioner(objective.elements(), objective.num_vertices(),
                              with_added_diagonal(std::move(options), objective.added_hessian_diagonal())) {}
 
@@ -79,7 +79,11 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
 
 template <int D>
 void FactoredPreconditioner<D>::factorize_current() {
-  if (!cholesky_.analyzed()) cholesky_.analyze(matrix_.upper(), D);
+  if (!cholesky_.analyzed()) {
+    const bool computed = options_.analysis_cache ? options_.analysis_cache->analyze(matrix_.upper(), D, &cholesky_)
+                                                  : (cholesky_.analyze(matrix_.upper(), D), true);
+    if (computed) ++statistics_.symbolic_analyses;
+  }
   cholesky_.factorize(matrix_.upper());
   factored_null_basis_ = null_basis_;
   factor_is_current_ = true;

@@ -23,13 +23,15 @@
 // An attempt is abandoned as soon as its mean residual contraction, continued
 // to max_cg, would miss tau by more than 3x (that saves most of the cost of
 // a failed attempt; on horse_b it turns 1.05 s into 1.0 s).
+#include <memory>
 #include <string>
 
-#include "framework/optimization/distortion_objective.h"
 #include "framework/optimization/element_matrix.h"
+#include "framework/optimization/mesh_objective.h"
 #include "framework/optimization/preconditioner.h"
 #include "preconditioners/motion_bases.h"
 #include "solvers/sparse_cholesky.h"
+#include "solvers/symbolic_analysis_cache.h"
 
 namespace akvf {
 
@@ -47,6 +49,9 @@ struct FactorOptions {
   // quadratic term of the problem that P should include (soft positional
   // constraints: 2 w on the constrained coordinates).
   Eigen::VectorXd extra_diagonal;
+  // Set: analyses of sparsity patterns are taken from and added to it, so
+  // repeated solves on one mesh analyze once (symbolic_analysis_cache.h).
+  std::shared_ptr<SymbolicAnalysisCache> analysis_cache;
 };
 
 // Default options with an absolute Tikhonov shift c (P + c I).
@@ -73,9 +78,9 @@ class FactoredPreconditioner : public Preconditioner {
   //   elements  #E by D + 1 (faces or tets)
   FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices, FactorOptions options);
   // On the objective's elements, with the Hessian diagonal of the terms the
-  // problem adds to it (DistortionObjective::added_hessian_diagonal) as the
+  // problem adds to it (MeshObjective::added_hessian_diagonal) as the
   // extra diagonal, unless `options` already has one.
-  FactoredPreconditioner(const DistortionObjective<D>& objective, FactorOptions options);
+  FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options);
 
   // P's extra diagonal (FactorOptions::extra_diagonal as used).
   const Eigen::VectorXd& extra_diagonal() const { return options_.extra_diagonal; }

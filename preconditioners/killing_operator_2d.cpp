@@ -2,7 +2,7 @@
 
 namespace akvf {
 
-void killing_local_matrix(const Eigen::Vector2d p[3], double scale, ElementMatrix2D::Local* local) {
+void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, ElementMatrix2D::Local* local) {
   const Eigen::Vector2d e1 = p[1] - p[0], e2 = p[2] - p[0];
   const double area = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
   local->setZero();
@@ -20,8 +20,8 @@ void killing_local_matrix(const Eigen::Vector2d p[3], double scale, ElementMatri
   }
 }
 
-void assemble_killing_operator(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
-                               bool area_scaling, ElementMatrix2D* matrix) {
+void assemble_killing_operator_2d(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
+                                  bool area_scaling, ElementMatrix2D* matrix) {
   matrix->assemble([&](int f, ElementMatrix2D::Local* local) {
     Eigen::Vector2d p[3];
     for (int k = 0; k < 3; ++k) p[k] = x.segment<2>(2 * F(f, k));
@@ -30,7 +30,7 @@ void assemble_killing_operator(const Eigen::MatrixXi& F, const Eigen::VectorXd& 
       const Eigen::Vector2d e1 = p[1] - p[0], e2 = p[2] - p[0];
       scale = rest_area[f] / (0.5 * (e1.x() * e2.y() - e1.y() * e2.x()));
     }
-    killing_local_matrix(p, scale, local);
+    killing_local_matrix_2d(p, scale, local);
   });
 }
 

@@ -15,11 +15,11 @@ namespace akvf {
 
 // The 6x6 local matrix of Eq. (5) for one face with UV corners p[0..2]
 // (counter-clockwise) and face scale s_f.
-void killing_local_matrix(const Eigen::Vector2d p[3], double scale, ElementMatrix2D::Local* local);
+void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, ElementMatrix2D::Local* local);
 
 // Fills matrix with K(x) for the faces F (#F by 3) at the interleaved UV
 // positions x; rest_area (#F, A_hat_f) is used when area_scaling.
-void assemble_killing_operator(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
-                               bool area_scaling, ElementMatrix2D* matrix);
+void assemble_killing_operator_2d(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
+                                  bool area_scaling, ElementMatrix2D* matrix);
 
 }  // namespace akvf

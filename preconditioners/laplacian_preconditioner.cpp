@@ -5,7 +5,7 @@
 namespace akvf {
 
 template <int D>
-LaplacianPreconditioner<D>::LaplacianPreconditioner(const DistortionObjective<D>& objective, FactorOptions options,
+LaplacianPreconditioner<D>::LaplacianPreconditioner(const MeshObjective<D>& objective, FactorOptions options,
                                                     MotionProjection projection, double scale)
     : FactoredPreconditioner<D>(objective, std::move(options)),
       objective_(objective),

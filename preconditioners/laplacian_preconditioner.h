@@ -5,7 +5,7 @@
 // translations (projected in 2D; in 3D deformation the constraint term's
 // Hessian, FactorOptions::extra_diagonal, fixes them). The momentum of AQP
 // lives in the optimizer (OptimizerOptions::acceleration_eta).
-#include "framework/optimization/distortion_objective.h"
+#include "framework/optimization/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {
@@ -15,7 +15,7 @@ class LaplacianPreconditioner final : public FactoredPreconditioner<D> {
  public:
   // scale multiplies L (3D deformation: the energy's rest curvature over
   // L's, energy_scale.h, so that L sits beside the constraints' Hessian).
-  explicit LaplacianPreconditioner(const DistortionObjective<D>& objective, FactorOptions options = {},
+  explicit LaplacianPreconditioner(const MeshObjective<D>& objective, FactorOptions options = {},
                                    MotionProjection projection = D == 2 ? MotionProjection::kTranslations
                                                                         : MotionProjection::kNone,
                                    double scale = 1.0);
@@ -27,7 +27,7 @@ class LaplacianPreconditioner final : public FactoredPreconditioner<D> {
   Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return motion_basis(D, projection_, x); }
   bool is_constant() const override { return true; }
 
-  const DistortionObjective<D>& objective_;
+  const MeshObjective<D>& objective_;
   MotionProjection projection_;
   double scale_;
 };

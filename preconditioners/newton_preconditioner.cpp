@@ -5,7 +5,7 @@
 namespace akvf {
 
 template <int D>
-NewtonPreconditioner<D>::NewtonPreconditioner(const DistortionObjective<D>& objective, FactorOptions options,
+NewtonPreconditioner<D>::NewtonPreconditioner(const MeshObjective<D>& objective, FactorOptions options,
                                               MotionProjection projection)
     : FactoredPreconditioner<D>(objective, std::move(options)), objective_(objective), projection_(projection) {}
 

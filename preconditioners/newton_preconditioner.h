@@ -6,7 +6,7 @@
 // second-order solvers; shift, projection and factorization reuse as in
 // factored_preconditioner.h. In 3D deformation the constraint term's Hessian
 // comes in through FactorOptions::extra_diagonal.
-#include "framework/optimization/distortion_objective.h"
+#include "framework/optimization/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {
@@ -16,7 +16,7 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
  public:
   // projection: rigid motions by default in 2D (the energy's null space),
   // none in 3D (the constraints fix the motion).
-  explicit NewtonPreconditioner(const DistortionObjective<D>& objective, FactorOptions options = {},
+  explicit NewtonPreconditioner(const MeshObjective<D>& objective, FactorOptions options = {},
                                 MotionProjection projection = D == 2 ? MotionProjection::kRigidMotions
                                                                      : MotionProjection::kNone);
   std::string name() const override { return "newton"; }
@@ -26,7 +26,7 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   void assemble(const OptimizationState& state, Matrix* matrix) override;
   Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return motion_basis(D, projection_, x); }
 
-  const DistortionObjective<D>& objective_;
+  const MeshObjective<D>& objective_;
   MotionProjection projection_;
 };
 

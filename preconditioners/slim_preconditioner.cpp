@@ -11,7 +11,7 @@ namespace akvf {
 namespace {
 
 template <int D>
-const SingularValueDerivative<D>& singular_value_density(const DistortionObjective<D>& objective) {
+const SingularValueDerivative<D>& singular_value_density(const MeshObjective<D>& objective) {
   const auto* density = dynamic_cast<const SingularValueDerivative<D>*>(&objective.density());
   if (!density)
     throw OptionsError("the slim preconditioner needs an energy with a singular-value derivative; '" +
@@ -22,7 +22,7 @@ const SingularValueDerivative<D>& singular_value_density(const DistortionObjecti
 }  // namespace
 
 template <int D>
-SlimPreconditioner<D>::SlimPreconditioner(const DistortionObjective<D>& objective, FactorOptions options,
+SlimPreconditioner<D>::SlimPreconditioner(const MeshObjective<D>& objective, FactorOptions options,
                                           MotionProjection projection)
     : FactoredPreconditioner<D>(objective, std::move(options)),
       objective_(objective),

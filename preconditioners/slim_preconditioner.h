@@ -15,7 +15,7 @@
 // gradient property holds only approximately, as in SLIM's own code. In 3D
 // deformation SLIM's soft constraints enter through
 // FactorOptions::extra_diagonal, as in SLIM's own solve.
-#include "framework/optimization/distortion_objective.h"
+#include "framework/optimization/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {
@@ -26,7 +26,7 @@ class SlimPreconditioner final : public FactoredPreconditioner<D> {
   using Square = Eigen::Matrix<double, D, D>;
 
   // Throws OptionsError if the objective's density has no singular-value derivative.
-  explicit SlimPreconditioner(const DistortionObjective<D>& objective, FactorOptions options = {},
+  explicit SlimPreconditioner(const MeshObjective<D>& objective, FactorOptions options = {},
                               MotionProjection projection = D == 2 ? MotionProjection::kTranslations
                                                                    : MotionProjection::kNone);
   std::string name() const override { return "slim"; }
@@ -39,7 +39,7 @@ class SlimPreconditioner final : public FactoredPreconditioner<D> {
   void assemble(const OptimizationState& state, Matrix* matrix) override;
   Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return motion_basis(D, projection_, x); }
 
-  const DistortionObjective<D>& objective_;
+  const MeshObjective<D>& objective_;
   const SingularValueDerivative<D>& density_;
   MotionProjection projection_;
 };

@@ -209,6 +209,29 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
   m.permuted_rhs.resize(n);
 }
 
+void SparseCholesky::copy_analysis(const SparseCholesky& other) {
+  const Impl& from = *other.impl_;
+  if (!other.analyzed() || from.factor->xtype != CHOLMOD_PATTERN)
+    throw NumericalError("SparseCholesky::copy_analysis: the source must be analyzed and not factored");
+  Impl& m = *impl_;
+  cholmod_free_factor(&m.factor, &m.common);
+  m.supernodal_solver.reset();
+  // The settings analyze() leaves, so that factorize() runs as after it.
+  m.common.nmethods = 1;
+  m.common.method[0].ordering = CHOLMOD_NATURAL;
+  m.common.postorder = 0;
+  m.common.lnz = from.common.lnz;
+  m.common.fl = from.common.fl;
+  m.factor = cholmod_copy_factor(from.factor, &m.common);
+  m.check("copy of a symbolic analysis");
+  m.permutation = from.permutation;
+  m.lower_column_start = from.lower_column_start;
+  m.lower_row = from.lower_row;
+  m.lower_value.assign(from.lower_value.size(), 0.0);
+  m.value_map = from.value_map;
+  m.permuted_rhs.resize(from.permuted_rhs.size());
+}
+
 void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& upper) {
   if (!analyzed()) analyze(upper);
   Impl& m = *impl_;

@@ -23,6 +23,10 @@ class SparseCholesky {
   // (the coordinates of a vertex) that share their couplings; the ordering is
   // then found on the graph of the groups, which is b^2 times smaller.
   void analyze(const Eigen::SparseMatrix<double>& upper, int block_size = 1);
+  // Takes over the analysis of `other` (analyzed, not yet factored): what
+  // analyze() would compute for its pattern, without the ordering work
+  // (solvers/symbolic_analysis_cache.h).
+  void copy_analysis(const SparseCholesky& other);
   // Numeric factorization A = L L^T. Throws NumericalError if A is not
   // positive definite.
   void factorize(const Eigen::SparseMatrix<double>& upper);

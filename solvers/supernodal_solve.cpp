@@ -73,8 +73,8 @@ SupernodalSolve::SupernodalSolve(const SupernodalStructure& structure) : s_(stru
   double top_work = 0;
   double best_time = balance(frontier, subtree, &best_group);
   for (int step = 0; step < 256 && !frontier.empty(); ++step) {
-    const auto heaviest = std::max_element(frontier.begin(), frontier.end(),
-                                           [&](int a, int b) { return subtree[a] < subtree[b]; });
+    const auto heaviest =
+        std::max_element(frontier.begin(), frontier.end(), [&](int a, int b) { return subtree[a] < subtree[b]; });
     const int node = *heaviest;
     frontier.erase(heaviest);
     top_work += work[node];

@@ -79,6 +79,11 @@ TEST_CASE("a Parameterizer solves again with the same bits, from a given map, an
   const akvf::ParameterizeResult first = solver.solve(), second = solver.solve();
   CHECK(first.uv == second.uv);
   CHECK(first.uv == akvf::parameterize(mesh.V, mesh.F).uv);
+  // The symbolic analysis is done once per mesh: the second solve takes it
+  // from the first (and still gives the same bits).
+  CHECK(first.statistics.preconditioner.symbolic_analyses == 1);
+  CHECK(second.statistics.preconditioner.symbolic_analyses == 0);
+  CHECK(second.statistics.preconditioner.factorizations == first.statistics.preconditioner.factorizations);
   // From its own result (rescaled to the input's area, so not quite the
   // optimizer's last iterate): converged again at once.
   const akvf::ParameterizeResult again = solver.solve(first.uv);
@@ -92,6 +97,7 @@ TEST_CASE("a Parameterizer solves again with the same bits, from a given map, an
   const akvf::ParameterizeResult slim = solver.solve();
   CHECK(slim.status == akvf::TerminationStatus::kConverged);
   CHECK(slim.energy() == doctest::Approx(first.energy()).epsilon(1e-5));
+  CHECK(slim.statistics.preconditioner.symbolic_analyses == 0);  // SLIM's matrix has AKVF's pattern
   // A bad option is refused and the old ones kept.
   options.preconditioner = "slm";
   CHECK(akvf::test::error_message([&] { solver.set_options(options); }).find("unknown preconditioner 'slm'") == 0);
@@ -202,9 +208,11 @@ TEST_CASE("a Deformer solves for new targets and options on one prepared mesh, w
   const akvf::Deformer deformer(mesh.V, mesh.T);
   const akvf::DeformResult a = deformer.solve(constraints, options);
   CHECK(a.x == akvf::deform(mesh.V, mesh.T, constraints, options).x);
+  CHECK(a.statistics.preconditioner.symbolic_analyses == 1);
   options.preconditioner = "newton";
   constraints.targets *= 1.05;
   const akvf::DeformResult b = deformer.solve(constraints, options);
+  CHECK(b.statistics.preconditioner.symbolic_analyses == 0);  // taken from the first solve
   CHECK(akvf::is_normal_termination(b.status));
   CHECK(b.x.col(2).maxCoeff() > a.x.col(2).maxCoeff());
 }

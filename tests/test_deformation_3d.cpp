@@ -9,8 +9,13 @@
 #include "akvf/catalog.h"
 #include "akvf/deformation.h"
 #include "akvf/threads.h"
-#include "energies/distortion_energies_3d.h"
+#include "energies/amips.h"
+#include "energies/arap.h"
+#include "energies/exp_symmetric_dirichlet.h"
+#include "energies/mips.h"
+#include "energies/symmetric_dirichlet.h"
 #include "framework/optimization/constrained_objective.h"
+#include "framework/optimization/distortion_objective.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "preconditioners/energy_scale.h"
 #include "preconditioners/laplacian_preconditioner.h"
@@ -22,9 +27,9 @@
 
 namespace {
 
-akvf::TetObjective grid_objective(const akvf::TetMesh& mesh,
-                                  std::shared_ptr<const akvf::DistortionDensity<3>> density) {
-  return akvf::TetObjective(mesh.T, akvf::rest_tets(mesh), std::move(density), mesh.num_vertices());
+akvf::DistortionObjective3D grid_objective(const akvf::TetMesh& mesh,
+                                           std::shared_ptr<const akvf::DistortionDensity<3>> density) {
+  return akvf::DistortionObjective3D(mesh.T, akvf::rest_tets(mesh), std::move(density), mesh.num_vertices());
 }
 
 // The grid's bottom face fixed and its top face turned by `angle` about the vertical axis.
@@ -49,7 +54,7 @@ akvf::PositionConstraints twisted_top(const akvf::TetMesh& mesh, double angle) {
 
 TEST_CASE("3D Newton, Laplacian and SLIM: symmetric PSD, the expected null spaces, descent directions") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
-  const akvf::TetObjective objective = grid_objective(mesh, std::make_shared<akvf::SymmetricDirichlet3>());
+  const akvf::DistortionObjective3D objective = grid_objective(mesh, std::make_shared<akvf::SymmetricDirichlet3D>());
   const Eigen::VectorXd x = akvf::test::distorted_tet_positions(mesh, 3);
   Eigen::VectorXd g, d;
   objective.value_and_gradient(x, &g);
@@ -76,9 +81,9 @@ TEST_CASE("3D Newton, Laplacian and SLIM: symmetric PSD, the expected null space
 
 TEST_CASE("the 3D SLIM proxy's gradient equals the energy's gradient for the isometric energies") {
   // (For AMIPS and MIPS w_i^2 can be negative and is clamped: see slim_preconditioner.h.)
-  const akvf::SymmetricDirichlet3 sd;
-  const akvf::ExpSymmetricDirichlet3 exp_sd(0.2);
-  const akvf::Arap3 arap;
+  const akvf::SymmetricDirichlet3D sd;
+  const akvf::ExpSymmetricDirichlet3D exp_sd(0.2);
+  const akvf::Arap3D arap;
   std::mt19937 rng(5);
   for (const akvf::DistortionDensity<3>* density :
        std::initializer_list<const akvf::DistortionDensity<3>*>{&sd, &exp_sd, &arap}) {
@@ -97,14 +102,14 @@ TEST_CASE("the 3D SLIM proxy's gradient equals the energy's gradient for the iso
 
 TEST_CASE("3D AKVF scales K to the energy: rest shear curvature first, then the secant of the last step") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
-  const auto density = std::make_shared<akvf::ExpSymmetricDirichlet3>(0.5);
-  const akvf::TetObjective objective = grid_objective(mesh, density);
+  const auto density = std::make_shared<akvf::ExpSymmetricDirichlet3D>(0.5);
+  const akvf::DistortionObjective3D objective = grid_objective(mesh, density);
   const Eigen::VectorXd x1 = akvf::test::distorted_tet_positions(mesh, 11),
                         x2 = akvf::test::distorted_tet_positions(mesh, 12);
   Eigen::VectorXd g1, g2;
   objective.value_and_gradient(x1, &g1);
   objective.value_and_gradient(x2, &g2);
-  akvf::Akvf3DOptions options;
+  akvf::AkvfOptions3D options;
   options.factor.absolute_shift = 0;  // test s K alone (plus the 1e-8 relative shift)
   akvf::AkvfPreconditioner3D preconditioner(objective, options);
   preconditioner.update({x1, g1, 0.0, 1});
@@ -121,9 +126,9 @@ TEST_CASE("3D AKVF scales K to the energy: rest shear curvature first, then the 
 
 TEST_CASE("a stretched cube relaxes to symmetric Dirichlet 6 (a rigid motion of the rest shape) with 3D AKVF") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(3);
-  const akvf::TetObjective objective = grid_objective(mesh, std::make_shared<akvf::SymmetricDirichlet3>());
+  const akvf::DistortionObjective3D objective = grid_objective(mesh, std::make_shared<akvf::SymmetricDirichlet3D>());
   const Eigen::VectorXd stretched = akvf::stack_rows(mesh.V * Eigen::Vector3d(1.4, 0.8, 1.1).asDiagonal());
-  akvf::Akvf3DOptions options;
+  akvf::AkvfOptions3D options;
   options.project_rigid = true;  // no constraints: the energy is rigid-invariant
   akvf::AkvfPreconditioner3D preconditioner(objective, options);
   const akvf::BacktrackingLineSearch line_search(akvf::LineSearchSettings{});

@@ -4,10 +4,13 @@
 #include <Eigen/Eigenvalues>
 #include <random>
 
-#include "energies/distortion_energies.h"
+#include "energies/amips.h"
+#include "energies/arap.h"
+#include "energies/exp_symmetric_dirichlet.h"
+#include "energies/mips.h"
 #include "energies/symmetric_dirichlet.h"
 #include "framework/optimization/distortion_objective.h"
-#include "preconditioners/akvf_preconditioner.h"
+#include "preconditioners/akvf_preconditioner_2d.h"
 #include "preconditioners/killing_operator_2d.h"
 #include "preconditioners/laplacian_preconditioner.h"
 #include "preconditioners/newton_preconditioner.h"
@@ -20,7 +23,7 @@ namespace {
 Eigen::MatrixXd dense_killing(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
                               bool area_scaling) {
   akvf::ElementMatrix2D K(F, static_cast<int>(x.size() / 2));
-  akvf::assemble_killing_operator(F, x, rest_area, area_scaling, &K);
+  akvf::assemble_killing_operator_2d(F, x, rest_area, area_scaling, &K);
   return Eigen::MatrixXd(K.full());
 }
 
@@ -60,10 +63,10 @@ double killing_energy(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const 
 
 // Symmetric Dirichlet on the mesh scaled to area 1 (the mesh is returned too,
 // for building UV maps of matching size).
-akvf::ParamObjective unit_area_objective(akvf::TriMesh* mesh) {
+akvf::DistortionObjective2D unit_area_objective(akvf::TriMesh* mesh) {
   akvf::normalize_to_unit_area(mesh);
-  return akvf::ParamObjective(mesh->F, akvf::rest_triangles(*mesh), std::make_shared<akvf::SymmetricDirichlet2>(),
-                              mesh->num_vertices());
+  return akvf::DistortionObjective2D(mesh->F, akvf::rest_triangles(*mesh),
+                                     std::make_shared<akvf::SymmetricDirichlet2D>(), mesh->num_vertices());
 }
 
 struct PlanarMesh {
@@ -140,7 +143,7 @@ TEST_CASE("K is symmetric PSD with exactly the rigid motions as null space (rank
 
 TEST_CASE("the AKVF direction is K^+ grad E, a descent direction free of rigid motion") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(6, 6);
-  const akvf::ParamObjective objective = unit_area_objective(&normalized);
+  const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
   const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 4) * 0.9);
   Eigen::VectorXd g, d;
   objective.value_and_gradient(x, &g);
@@ -157,10 +160,10 @@ TEST_CASE("the AKVF direction is K^+ grad E, a descent direction free of rigid m
 
 TEST_CASE("with factorization reuse the direction solves K(x) d = g to the tolerance") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(8, 8);
-  const akvf::ParamObjective objective = unit_area_objective(&normalized);
+  const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
   const Eigen::VectorXd x1 = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 4) * 0.9);
   const Eigen::VectorXd x2 = x1 + 1e-3 * akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 5));
-  akvf::AkvfOptions options;
+  akvf::AkvfOptions2D options;
   options.factor.reuse_tolerance = 0.01;
   akvf::AkvfPreconditioner2D preconditioner(objective, options);
   Eigen::VectorXd g, d;
@@ -180,7 +183,7 @@ TEST_CASE("with factorization reuse the direction solves K(x) d = g to the toler
 
 TEST_CASE("Newton, Laplacian and SLIM matrices are symmetric PSD with the expected null spaces; directions descend") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
-  const akvf::ParamObjective objective = unit_area_objective(&normalized);
+  const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
   const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.8);
   Eigen::VectorXd g, d;
   objective.value_and_gradient(x, &g);
@@ -207,12 +210,12 @@ TEST_CASE("Newton, Laplacian and SLIM matrices are symmetric PSD with the expect
 
 TEST_CASE("the SLIM proxy's gradient equals the energy's gradient at the current iterate") {
   // Per face: d/dJ |W (J - R)|^2 = 2 W^T W (J - R) must be dD/dJ.
-  const akvf::SymmetricDirichlet2 sd;
-  const akvf::Arap2 arap;
-  const akvf::ExpSymmetricDirichlet2 exp_sd(0.3);
+  const akvf::SymmetricDirichlet2D sd;
+  const akvf::Arap2D arap;
+  const akvf::ExpSymmetricDirichlet2D exp_sd(0.3);
   std::mt19937 rng(31);
-  for (const akvf::InvariantDensity2* density :
-       std::initializer_list<const akvf::InvariantDensity2*>{&sd, &arap, &exp_sd}) {
+  for (const akvf::InvariantDensity2D* density :
+       std::initializer_list<const akvf::InvariantDensity2D*>{&sd, &arap, &exp_sd}) {
     CAPTURE(density->name());
     for (int trial = 0; trial < 20; ++trial) {
       const Eigen::Matrix2d J = akvf::test::random_jacobian<2>(rng, 0.3, 3.0);
@@ -226,7 +229,7 @@ TEST_CASE("the SLIM proxy's gradient equals the energy's gradient at the current
 }
 
 TEST_CASE("SLIM refuses an energy without a singular-value derivative") {
-  struct Plain final : akvf::DistortionDensity2 {
+  struct Plain final : akvf::DistortionDensity2D {
     std::string name() const override { return "plain"; }
     double lower_bound() const override { return 0; }
     double value(const Matrix& J) const override { return J.squaredNorm(); }
@@ -237,8 +240,8 @@ TEST_CASE("SLIM refuses an energy without a singular-value derivative") {
     Hessian hessian(const Matrix&) const override { return 2 * Hessian::Identity(); }
   };
   akvf::TriMesh mesh = akvf::test::grid_disk(3, 3);
-  const akvf::ParamObjective objective(mesh.F, akvf::rest_triangles(mesh), std::make_shared<Plain>(),
-                                       mesh.num_vertices());
+  const akvf::DistortionObjective2D objective(mesh.F, akvf::rest_triangles(mesh), std::make_shared<Plain>(),
+                                              mesh.num_vertices());
   CHECK(akvf::test::error_message([&] { akvf::SlimPreconditioner2D slim(objective); }) ==
         "the slim preconditioner needs an energy with a singular-value derivative; 'plain' has none");
 }

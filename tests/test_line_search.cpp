@@ -16,9 +16,9 @@ using akvf::smallest_positive_root;
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-akvf::ParamObjective make_objective(const akvf::TriMesh& mesh) {
-  return akvf::ParamObjective(mesh.F, akvf::rest_triangles(mesh), std::make_shared<akvf::SymmetricDirichlet2>(),
-                              mesh.num_vertices());
+akvf::DistortionObjective2D make_objective(const akvf::TriMesh& mesh) {
+  return akvf::DistortionObjective2D(mesh.F, akvf::rest_triangles(mesh), std::make_shared<akvf::SymmetricDirichlet2D>(),
+                                     mesh.num_vertices());
 }
 }  // namespace
 

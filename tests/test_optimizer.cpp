@@ -361,8 +361,8 @@ TEST_CASE("the assembled gradient of E matches finite differences of E for every
   for (const auto& entry : akvf::energies_2d().entries()) {
     const std::string& name = entry.first;  // clang 14 cannot capture a structured binding
     CAPTURE(name);
-    const akvf::ParamObjective objective(mesh.F, akvf::rest_triangles(mesh), akvf::energies_2d().create(name, settings),
-                                         mesh.num_vertices());
+    const akvf::DistortionObjective2D objective(mesh.F, akvf::rest_triangles(mesh),
+                                                akvf::energies_2d().create(name, settings), mesh.num_vertices());
     Eigen::VectorXd g;
     const double energy = objective.value_and_gradient(x, &g);
     REQUIRE(std::isfinite(energy));

@@ -20,7 +20,7 @@ akvf::ElementMatrix2D shifted_killing(int nx) {
   Eigen::VectorXd area(grid.F.rows());
   for (int f = 0; f < grid.F.rows(); ++f) area[f] = 1.0 / static_cast<double>(grid.F.rows());
   akvf::ElementMatrix2D K(grid.F, static_cast<int>(grid.V.rows()));
-  akvf::assemble_killing_operator(grid.F, x, area, true, &K);
+  akvf::assemble_killing_operator_2d(grid.F, x, area, true, &K);
   K.add_to_diagonal(1e-3 * K.mean_diagonal());
   return K;
 }

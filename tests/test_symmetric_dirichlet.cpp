@@ -6,23 +6,25 @@
 #include <cmath>
 #include <limits>
 
-#include "energies/distortion_energies.h"
-#include "energies/distortion_energies_3d.h"
+#include "energies/amips.h"
+#include "energies/arap.h"
+#include "energies/exp_symmetric_dirichlet.h"
+#include "energies/mips.h"
 #include "energies/symmetric_dirichlet.h"
 #include "tests/density_checks.h"
 
 TEST_CASE("symmetric Dirichlet derivatives match finite differences") {
-  akvf::SymmetricDirichlet2 density;
+  akvf::SymmetricDirichlet2D density;
   akvf::test::check_density_derivatives<2>(density, 0.5, 2.0);
 }
 
 TEST_CASE("symmetric Dirichlet derivatives near degenerate J") {
-  akvf::SymmetricDirichlet2 density;
+  akvf::SymmetricDirichlet2D density;
   akvf::test::check_density_derivatives<2>(density, 0.05, 20.0, 50, 11);
 }
 
 TEST_CASE("symmetric Dirichlet is 4 at every rotation and larger elsewhere") {
-  akvf::SymmetricDirichlet2 density;
+  akvf::SymmetricDirichlet2D density;
   for (double angle : {0.0, 0.3, 2.0, -1.0}) {
     const Eigen::Matrix2d R = Eigen::Rotation2Dd(angle).toRotationMatrix();
     CHECK(density.value(R) == doctest::Approx(4.0).epsilon(1e-15));
@@ -34,7 +36,7 @@ TEST_CASE("symmetric Dirichlet is 4 at every rotation and larger elsewhere") {
 }
 
 TEST_CASE("symmetric Dirichlet is infinite for inverted or degenerate J") {
-  akvf::SymmetricDirichlet2 density;
+  akvf::SymmetricDirichlet2D density;
   Eigen::Matrix2d reflection;
   reflection << 1, 0, 0, -1;
   CHECK(density.value(reflection) == std::numeric_limits<double>::infinity());
@@ -44,12 +46,12 @@ TEST_CASE("symmetric Dirichlet is infinite for inverted or degenerate J") {
 }
 
 TEST_CASE("every energy's derivatives match finite differences, including near-degenerate J") {
-  const akvf::Arap2 arap;
-  const akvf::Mips2 mips;
-  const akvf::ExpSymmetricDirichlet2 exp_sd(0.5);
-  const akvf::Amips2 amips(2.0);
-  for (const akvf::DistortionDensity2* density :
-       std::initializer_list<const akvf::DistortionDensity2*>{&arap, &mips, &exp_sd, &amips}) {
+  const akvf::Arap2D arap;
+  const akvf::Mips2D mips;
+  const akvf::ExpSymmetricDirichlet2D exp_sd(0.5);
+  const akvf::Amips2D amips(2.0);
+  for (const akvf::DistortionDensity2D* density :
+       std::initializer_list<const akvf::DistortionDensity2D*>{&arap, &mips, &exp_sd, &amips}) {
     CAPTURE(density->name());
     akvf::test::check_density_derivatives<2>(*density, 0.5, 2.0);
     if (density != &exp_sd) akvf::test::check_density_derivatives<2>(*density, 0.1, 10.0, 30, 5);
@@ -57,15 +59,15 @@ TEST_CASE("every energy's derivatives match finite differences, including near-d
 }
 
 TEST_CASE("every energy attains its lower bound at rotations and is infinite when inverted") {
-  const akvf::Arap2 arap;
-  const akvf::Mips2 mips;
-  const akvf::ExpSymmetricDirichlet2 exp_sd(0.5);
-  const akvf::Amips2 amips(2.0);
+  const akvf::Arap2D arap;
+  const akvf::Mips2D mips;
+  const akvf::ExpSymmetricDirichlet2D exp_sd(0.5);
+  const akvf::Amips2D amips(2.0);
   const Eigen::Matrix2d R = Eigen::Rotation2Dd(0.7).toRotationMatrix();
   Eigen::Matrix2d reflection;
   reflection << 1, 0, 0, -1;
-  for (const akvf::DistortionDensity2* density :
-       std::initializer_list<const akvf::DistortionDensity2*>{&arap, &mips, &exp_sd, &amips}) {
+  for (const akvf::DistortionDensity2D* density :
+       std::initializer_list<const akvf::DistortionDensity2D*>{&arap, &mips, &exp_sd, &amips}) {
     CAPTURE(density->name());
     CHECK(density->value(R) == doctest::Approx(density->lower_bound()).epsilon(1e-14));
     CHECK(density->value(R * Eigen::Vector2d(1.3, 0.9).asDiagonal()) > density->lower_bound());
@@ -76,18 +78,18 @@ TEST_CASE("every energy attains its lower bound at rotations and is infinite whe
 }
 
 TEST_CASE("the singular-value gradient is the derivative of D along the singular values") {
-  const akvf::Arap2 arap;
-  const akvf::SymmetricDirichlet2 sd;
-  for (const akvf::DistortionDensity2* density : std::initializer_list<const akvf::DistortionDensity2*>{&arap, &sd})
+  const akvf::Arap2D arap;
+  const akvf::SymmetricDirichlet2D sd;
+  for (const akvf::DistortionDensity2D* density : std::initializer_list<const akvf::DistortionDensity2D*>{&arap, &sd})
     akvf::test::check_singular_value_gradient<2>(*density, Eigen::Vector2d(1.7, 0.6));
 }
 
 TEST_CASE("every 3D energy: derivatives by finite differences, bounds, inversion") {
-  const akvf::SymmetricDirichlet3 sd;
-  const akvf::ExpSymmetricDirichlet3 exp_sd(0.2);
-  const akvf::Mips3 mips;
-  const akvf::Amips3 amips(0.5);
-  const akvf::Arap3 arap;
+  const akvf::SymmetricDirichlet3D sd;
+  const akvf::ExpSymmetricDirichlet3D exp_sd(0.2);
+  const akvf::Mips3D mips;
+  const akvf::Amips3D amips(0.5);
+  const akvf::Arap3D arap;
   for (const akvf::DistortionDensity<3>* density :
        std::initializer_list<const akvf::DistortionDensity<3>*>{&sd, &exp_sd, &mips, &amips, &arap}) {
     CAPTURE(density->name());
@@ -104,9 +106,9 @@ TEST_CASE("every 3D energy: derivatives by finite differences, bounds, inversion
 }
 
 TEST_CASE("3D singular-value derivatives match finite differences in sigma") {
-  const akvf::SymmetricDirichlet3 sd;
-  const akvf::Amips3 amips(0.5);
-  const akvf::Arap3 arap;
+  const akvf::SymmetricDirichlet3D sd;
+  const akvf::Amips3D amips(0.5);
+  const akvf::Arap3D arap;
   for (const akvf::DistortionDensity<3>* density :
        std::initializer_list<const akvf::DistortionDensity<3>*>{&sd, &amips, &arap}) {
     CAPTURE(density->name());

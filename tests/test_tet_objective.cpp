@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "akvf/deformation.h"
-#include "energies/invariant_density_3d.h"
+#include "energies/symmetric_dirichlet.h"
 #include "framework/mesh/constraints_io.h"
 #include "framework/optimization/constrained_objective.h"
 #include "framework/optimization/distortion_objective.h"
@@ -16,16 +16,16 @@
 
 namespace {
 
-akvf::TetObjective cube_objective(const akvf::TetMesh& mesh) {
-  return akvf::TetObjective(mesh.T, akvf::rest_tets(mesh), std::make_shared<akvf::SymmetricDirichlet3>(),
-                            mesh.num_vertices());
+akvf::DistortionObjective3D cube_objective(const akvf::TetMesh& mesh) {
+  return akvf::DistortionObjective3D(mesh.T, akvf::rest_tets(mesh), std::make_shared<akvf::SymmetricDirichlet3D>(),
+                                     mesh.num_vertices());
 }
 
 }  // namespace
 
 TEST_CASE("tet objective: rest state is the lower bound, the gradient matches finite differences") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
-  const akvf::TetObjective objective = cube_objective(mesh);
+  const akvf::DistortionObjective3D objective = cube_objective(mesh);
   Eigen::VectorXd g;
   CHECK(objective.value_and_gradient(akvf::stack_rows(mesh.V), &g) == doctest::Approx(6.0).epsilon(1e-12));
   CHECK(g.norm() <= 1e-10);
@@ -44,7 +44,7 @@ TEST_CASE("tet objective: rest state is the lower bound, the gradient matches fi
 
 TEST_CASE("tet objective: the flip-free bound is tight and no step below it inverts a tet") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
-  const akvf::TetObjective objective = cube_objective(mesh);
+  const akvf::DistortionObjective3D objective = cube_objective(mesh);
   std::mt19937 rng(3);
   std::normal_distribution<double> n;
   for (int trial = 0; trial < 10; ++trial) {
@@ -60,13 +60,13 @@ TEST_CASE("tet objective: the flip-free bound is tight and no step below it inve
 
 TEST_CASE("3D AKVF preconditioner: K + c I gives a descent direction; with rigid projection, none of it rigid") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
-  const akvf::TetObjective objective = cube_objective(mesh);
+  const akvf::DistortionObjective3D objective = cube_objective(mesh);
   const Eigen::VectorXd x = akvf::test::distorted_tet_positions(mesh, 5);
   Eigen::VectorXd g, d;
   objective.value_and_gradient(x, &g);
   for (bool project : {false, true}) {
     CAPTURE(project);
-    akvf::Akvf3DOptions options;
+    akvf::AkvfOptions3D options;
     options.project_rigid = project;
     akvf::AkvfPreconditioner3D preconditioner(objective, options);
     preconditioner.update({x, g, 0.0, 1});
@@ -82,7 +82,7 @@ TEST_CASE("3D AKVF preconditioner: K + c I gives a descent direction; with rigid
 
 TEST_CASE("soft positional constraints add w |x_i - p_i|^2 with its gradient; bad constraints are rejected") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(1);
-  const akvf::TetObjective base = cube_objective(mesh);
+  const akvf::DistortionObjective3D base = cube_objective(mesh);
   akvf::PositionConstraints constraints;
   constraints.vertices = {0, 7};
   constraints.targets.resize(2, 3);
@@ -123,11 +123,11 @@ TEST_CASE("constraints files: rows, comments, and each malformed line named") {
 
 TEST_CASE("3D AKVF with conjugate gradients solves (K + c I) d = g to the tolerance without factoring") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
-  const akvf::TetObjective objective = cube_objective(mesh);
+  const akvf::DistortionObjective3D objective = cube_objective(mesh);
   const Eigen::VectorXd x = akvf::test::distorted_tet_positions(mesh, 6);
   Eigen::VectorXd g, d;
   objective.value_and_gradient(x, &g);
-  akvf::Akvf3DOptions options;
+  akvf::AkvfOptions3D options;
   options.factor.cg_tolerance = 0.01;
   akvf::AkvfPreconditioner3D preconditioner(objective, options);
   preconditioner.update({x, g, 0.0, 1});

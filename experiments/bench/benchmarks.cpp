@@ -17,7 +17,7 @@
 #include "energies/symmetric_dirichlet.h"
 #include "experiments/cli/native_runtime.h"
 #include "framework/mesh/mesh_io.h"
-#include "preconditioners/akvf_preconditioner.h"
+#include "preconditioners/akvf_preconditioner_2d.h"
 #include "solvers/backtracking_line_search.h"
 #include "solvers/sparse_cholesky.h"
 
@@ -63,10 +63,10 @@ Fixture* fixture(const std::string& mesh) {
 
 void BM_KillingAssembly(benchmark::State& state, const std::string& mesh) {
   REQUIRE_FIXTURE(state, mesh);
-  const akvf::ParamObjective& objective = *f->setup.objective;
+  const akvf::DistortionObjective2D& objective = *f->setup.objective;
   akvf::ElementMatrix2D K(objective.elements(), objective.num_vertices());
   for (auto _ : state) {
-    akvf::assemble_killing_operator(objective.elements(), f->x, objective.rest().area, true, &K);
+    akvf::assemble_killing_operator_2d(objective.elements(), f->x, objective.rest().area, true, &K);
     benchmark::DoNotOptimize(K.upper().valuePtr());
   }
 }
@@ -84,9 +84,9 @@ void BM_Energy(benchmark::State& state, const std::string& mesh) {
 
 // K(x) + eps I of the fixture's iterate, as the AKVF preconditioner factors it.
 akvf::ElementMatrix2D shifted_killing_operator(const Fixture& f) {
-  const akvf::ParamObjective& objective = *f.setup.objective;
+  const akvf::DistortionObjective2D& objective = *f.setup.objective;
   akvf::ElementMatrix2D K(objective.elements(), objective.num_vertices());
-  akvf::assemble_killing_operator(objective.elements(), f.x, objective.rest().area, true, &K);
+  akvf::assemble_killing_operator_2d(objective.elements(), f.x, objective.rest().area, true, &K);
   K.add_to_diagonal(1e-8 * K.mean_diagonal());
   return K;
 }
@@ -138,8 +138,8 @@ void BM_SymmetricProduct(benchmark::State& state, const std::string& mesh) {
 
 void BM_WholeIteration(benchmark::State& state, const std::string& mesh) {
   REQUIRE_FIXTURE(state, mesh);
-  const akvf::ParamObjective& objective = *f->setup.objective;
-  akvf::AkvfOptions options;
+  const akvf::DistortionObjective2D& objective = *f->setup.objective;
+  akvf::AkvfOptions2D options;
   options.factor.reuse_tolerance = 0;  // Algorithm 1: a numeric factorization every iteration
   akvf::AkvfPreconditioner2D preconditioner(objective, options);
   const akvf::BacktrackingLineSearch line_search;  // default settings
@@ -168,11 +168,11 @@ struct TemplateSymmetricDirichlet {
 // density differentiated automatically.
 void BM_DensityDerivatives(benchmark::State& state, const std::string& mesh, bool automatic) {
   REQUIRE_FIXTURE(state, mesh);
-  const akvf::ParamObjective& objective = *f->setup.objective;
-  const akvf::SymmetricDirichlet2 hand_written;
+  const akvf::DistortionObjective2D& objective = *f->setup.objective;
+  const akvf::SymmetricDirichlet2D hand_written;
   const akvf::AutodiffDensity<2, TemplateSymmetricDirichlet> differentiated("sd", 4, {});
-  const akvf::DistortionDensity2& density =
-      automatic ? static_cast<const akvf::DistortionDensity2&>(differentiated) : hand_written;
+  const akvf::DistortionDensity2D& density =
+      automatic ? static_cast<const akvf::DistortionDensity2D&>(differentiated) : hand_written;
   std::vector<Eigen::Matrix2d> jacobians;
   for (int e = 0; e < objective.elements().rows(); ++e) jacobians.push_back(objective.jacobian(f->x, e));
   for (auto _ : state) {

@@ -36,7 +36,8 @@ class DistortionDensity {
   }
 };
 
-using DistortionDensity2 = DistortionDensity<2>;
+using DistortionDensity2D = DistortionDensity<2>;
+using DistortionDensity3D = DistortionDensity<3>;
 
 // Densities that expose dD/dsigma_i, the derivative in the signed singular
 // values of J (J = U diag(sigma) V^T with U V^T a rotation): what the SLIM

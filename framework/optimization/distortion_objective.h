@@ -17,15 +17,15 @@
 #include "framework/mesh/mesh_topology.h"
 #include "framework/mesh/rest_geometry.h"
 #include "framework/optimization/distortion_density.h"
-#include "framework/optimization/objective.h"
+#include "framework/optimization/mesh_objective.h"
 
 namespace akvf {
 
 template <int D>
-class DistortionObjective final : public Objective {
+class DistortionObjective final : public MeshObjective<D> {
  public:
-  using Matrix = Eigen::Matrix<double, D, D>;
-  using Rest = std::conditional_t<D == 2, RestTriangles, RestTets>;
+  using Matrix = typename MeshObjective<D>::Matrix;
+  using Rest = typename MeshObjective<D>::Rest;
   static constexpr int kCorners = D + 1;
 
   //   elements  #E by D + 1 vertex indices (faces or tets)
@@ -43,13 +43,9 @@ class DistortionObjective final : public Objective {
   std::string first_bad_element(const Eigen::VectorXd& x) const override;
   double lower_bound() const override { return density_->lower_bound(); }
 
-  // The Hessian diagonal (one value per variable, or empty) of quadratic
-  // terms the problem adds to this energy: soft positional constraints
-  // (2 w on the constrained coordinates) or the pins of hard ones. Every
-  // matrix preconditioner built on this objective includes it, so a new
-  // preconditioner gets the constraints without being listed anywhere.
+  // MeshObjective::added_hessian_diagonal: the constraints' Hessian diagonal.
   void set_added_hessian_diagonal(Eigen::VectorXd diagonal) { added_hessian_diagonal_ = std::move(diagonal); }
-  const Eigen::VectorXd& added_hessian_diagonal() const { return added_hessian_diagonal_; }
+  const Eigen::VectorXd& added_hessian_diagonal() const override { return added_hessian_diagonal_; }
 
   // How messages number vertices and elements: vertex v is called
   // vertex_number[v] + index_base (the source's numbering after unused
@@ -59,18 +55,17 @@ class DistortionObjective final : public Objective {
     index_base_ = index_base;
   }
 
-  // J_e = Ds Dm^-1 (§3) for element e at x.
-  Matrix jacobian(const Eigen::VectorXd& x, int e) const;
+  Matrix jacobian(const Eigen::VectorXd& x, int e) const override;
   // D(J_e) per element; +infinity for inverted elements.
   Eigen::VectorXd face_distortion(const Eigen::VectorXd& x) const;
 
-  // #E by D + 1: the faces (D = 2) or tets (D = 3).
-  const Eigen::MatrixXi& elements() const { return elements_; }
-  const Rest& rest() const { return rest_; }
-  // M_e / sum M: the weight of element e in E.
-  const Eigen::VectorXd& weights() const { return weights_; }
-  const DistortionDensity<D>& density() const { return *density_; }
-  int num_vertices() const { return num_vertices_; }
+  // MeshObjective: the faces (D = 2) or tets (D = 3), their rest shapes,
+  // M_e / sum M as the weights, the density.
+  const Eigen::MatrixXi& elements() const override { return elements_; }
+  const Rest& rest() const override { return rest_; }
+  const Eigen::VectorXd& weights() const override { return weights_; }
+  const DistortionDensity<D>& density() const override { return *density_; }
+  int num_vertices() const override { return num_vertices_; }
 
  private:
   Matrix edge_matrix(const Eigen::VectorXd& x, int e) const;
@@ -90,8 +85,8 @@ class DistortionObjective final : public Objective {
   mutable std::vector<Matrix> element_gradient_;  // dE/dDs per element
 };
 
-using ParamObjective = DistortionObjective<2>;  // triangle mesh -> plane
-using TetObjective = DistortionObjective<3>;    // tet mesh -> space
+using DistortionObjective2D = DistortionObjective<2>;  // triangle mesh -> plane
+using DistortionObjective3D = DistortionObjective<3>;  // tet mesh -> space
 
 // Stack a #V by D matrix into interleaved x, and back.
 Eigen::VectorXd stack_rows(const Eigen::MatrixXd& P);

@@ -16,10 +16,11 @@ struct OptimizationState {
 // The work a preconditioner did, as numbers (all zero for those that do no
 // linear algebra of their own).
 struct PreconditionerStatistics {
-  int factorizations = 0;  // numeric Cholesky factorizations
-  int cg_solves = 0;       // directions from plain (Jacobi) CG
-  int reused_solves = 0;   // directions from CG with an older factorization
-  int cg_iterations = 0;   // over both kinds of CG solve
+  int factorizations = 0;     // numeric Cholesky factorizations
+  int cg_solves = 0;          // directions from plain (Jacobi) CG
+  int reused_solves = 0;      // directions from CG with an older factorization
+  int cg_iterations = 0;      // over both kinds of CG solve
+  int symbolic_analyses = 0;  // sparsity patterns analyzed (not taken from an earlier solve)
 };
 
 class Preconditioner {

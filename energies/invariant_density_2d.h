@@ -11,11 +11,11 @@
 namespace akvf {
 
 // f and its first and second partial derivatives at (s, g).
-struct InvariantDerivatives {
+struct InvariantDerivatives2D {
   double f = 0, f_s = 0, f_g = 0, f_ss = 0, f_sg = 0, f_gg = 0;
 };
 
-class InvariantDensity2 : public DistortionDensity2, public SingularValueDerivative<2> {
+class InvariantDensity2D : public DistortionDensity2D, public SingularValueDerivative<2> {
  public:
   double value(const Matrix& J) const final;
   double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const final;
@@ -27,7 +27,7 @@ class InvariantDensity2 : public DistortionDensity2, public SingularValueDerivat
  protected:
   // f and its partials (g > 0). value() uses the same f, so the energy the
   // line search sees and the one reported with the gradient agree bitwise.
-  virtual InvariantDerivatives derivatives(double s, double g) const = 0;
+  virtual InvariantDerivatives2D derivatives(double s, double g) const = 0;
 };
 
 }  // namespace akvf

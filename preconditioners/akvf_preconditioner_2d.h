@@ -3,13 +3,13 @@
 // d = -K(x)^+ grad E (Eq. 11-12), with K(x) of Eq. (5), area-scaled
 // (§4.2.1). Its null space is exactly the rigid motions of x. Shift,
 // projection and factorization reuse: factored_preconditioner.h.
-#include "framework/optimization/distortion_objective.h"
+#include "framework/optimization/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 #include "preconditioners/killing_operator_2d.h"
 
 namespace akvf {
 
-struct AkvfOptions {
+struct AkvfOptions2D {
   // Reuse tau 0.03 measured in docs/performance.md.
   FactorOptions factor = [] {
     FactorOptions o;
@@ -22,15 +22,15 @@ struct AkvfOptions {
 
 class AkvfPreconditioner2D final : public FactoredPreconditioner2D {
  public:
-  explicit AkvfPreconditioner2D(const ParamObjective& objective, AkvfOptions options = {});
+  explicit AkvfPreconditioner2D(const MeshObjective2D& objective, AkvfOptions2D options = {});
   std::string name() const override { return "akvf"; }
 
  private:
   void assemble(const OptimizationState& state, ElementMatrix2D* matrix) override;
   Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return rigid_motion_basis_2d(x); }
 
-  const ParamObjective& objective_;
-  AkvfOptions options_;
+  const MeshObjective2D& objective_;
+  AkvfOptions2D options_;
 };
 
 }  // namespace akvf

@@ -1,0 +1,33 @@
+#pragma once
+// ARAP [Liu et al. 2008]: |J - R(J)|_F^2 with R the closest rotation,
+// sum_i (sigma_i - 1)^2, minimum 0 at rotations. +infinity when det J <= 0,
+// as every density here (ARAP itself has no barrier).
+#include "energies/invariant_density_2d.h"
+
+namespace akvf {
+
+// In 2D sigma_1 + sigma_2 = sqrt(s + 2g) for g > 0, so f = s - 2 sqrt(s + 2g) + 2.
+class Arap2D final : public InvariantDensity2D {
+ public:
+  std::string name() const override { return "arap"; }
+  double lower_bound() const override { return 0.0; }
+
+ protected:
+  InvariantDerivatives2D derivatives(double s, double g) const override;
+};
+
+// In 3D through the SVD J = U diag(sigma) V^T, R = U V^T. Gradient 2 (J - R);
+// Hessian 2 I - 2 dR/dJ, where dR/dJ has the eigenvalue 2 / (sigma_i +
+// sigma_j) on each twist U (e_i e_j^T - e_j e_i^T) V^T / sqrt(2) and 0
+// elsewhere.
+class Arap3D final : public DistortionDensity3D, public SingularValueDerivative<3> {
+ public:
+  std::string name() const override { return "arap"; }
+  double lower_bound() const override { return 0.0; }
+  double value(const Matrix& J) const override;
+  double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const override;
+  Hessian hessian(const Matrix& J) const override;
+  Eigen::Vector3d singular_value_gradient(const Eigen::Vector3d& sigma) const override;
+};
+
+}  // namespace akvf

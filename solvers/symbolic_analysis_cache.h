@@ -1,0 +1,35 @@
+#pragma once
+// Symbolic analyses (fill-reducing ordering, elimination tree, supernodes)
+// kept for the sparsity patterns already seen, so that repeated solves on one
+// mesh (akvf::Parameterizer, akvf::Deformer) analyze each pattern once: the
+// matrix preconditioners of a mesh all have the pattern of its vertex
+// adjacency in D x D blocks. A copied analysis is the one analyze() computes
+// for that pattern, so the factors and every iterate are bitwise the same.
+// Safe to share between threads (a lock guards the entries).
+#include <Eigen/SparseCore>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "solvers/sparse_cholesky.h"
+
+namespace akvf {
+
+class SymbolicAnalysisCache {
+ public:
+  // Gives `cholesky` the analysis of the pattern of `upper` with the given
+  // block size: a copy of the cached one, or a new one (then cached).
+  // Returns true if it was computed.
+  bool analyze(const Eigen::SparseMatrix<double>& upper, int block_size, SparseCholesky* cholesky);
+
+ private:
+  struct Entry {
+    std::vector<int> column_start, row;
+    int block_size = 1;
+    std::unique_ptr<SparseCholesky> analysis;  // analyzed, never factored
+  };
+  std::mutex mutex_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace akvf
