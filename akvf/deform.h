@@ -63,7 +63,8 @@ DeformResult deform(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const Po
 
 // Repeated deformations of one mesh (new targets, new options): validation,
 // normalization to unit rest volume and the rest geometry are done once, at
-// construction. Each solve starts from the rest shape and gives the bits
+// construction; the symbolic analysis of the sparse factorizations at the
+// first solve. Each solve starts from the rest shape and gives the bits
 // deform() gives.
 class Deformer {
  public:

@@ -83,7 +83,9 @@ ParameterizeResult parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi&
 // Repeated solves on one mesh: validation, normalization and the initial map
 // are done once, at construction; then solve, change the options or the
 // start map, and solve again. Each solve builds its preconditioner anew, so
-// it gives the bits parameterize() gives for the same options and start.
+// it gives the bits parameterize() gives for the same options and start; the
+// symbolic analysis of the sparse factorizations is computed by the first
+// solve and copied by the later ones (statistics.preconditioner.symbolic_analyses).
 class Parameterizer {
  public:
   //   V  #V by 3, F  #F by 3 (0-based). Throws as parameterize() does.
