@@ -7,25 +7,27 @@
 #include <sstream>
 
 #include "framework/mesh/text_reader.h"
+#include "framework/optimization/trace_columns.h"
 #include "framework/process/error.h"
 #include "framework/process/output_file.h"
 
 namespace akvf {
 
 void write_trace_csv(std::ostream& out, const OptimizerResult& result) {
-  out << "iter,seconds,energy,grad_norm,step,ls_evals,flips,max_step,precond_seconds,line_search_seconds,status\n";
+  for (const TraceColumn& column : trace_columns()) out << column.name << ',';
+  out << "status\n";
   out << std::setprecision(17);
   std::string status_cell = status_with_reason(result);  // one CSV field: no commas
   std::replace(status_cell.begin(), status_cell.end(), ',', ';');
   for (std::size_t i = 0; i < result.trace.size(); ++i) {
-    const IterationSummary& s = result.trace[i];
-    out << s.iteration << ',' << s.seconds << ',' << s.energy << ',' << s.grad_norm << ',' << s.step << ','
-        << s.ls_evals << ',' << s.flips << ',' << s.max_step << ',' << s.precond_seconds << ',' << s.line_search_seconds
-        << ','
-        << (i + 1 == result.trace.size() ? status_cell
-            : s.warm_start               ? "warm-start"
-                                         : "")
-        << '\n';
+    for (const TraceColumn& column : trace_columns()) {
+      const double value = column.value(result.trace[i]);
+      if (column.integer)
+        out << static_cast<long long>(value) << ',';
+      else
+        out << value << ',';
+    }
+    out << trace_status_cell(result.trace, i, status_cell) << '\n';
   }
 }
 

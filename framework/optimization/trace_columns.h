@@ -1,0 +1,44 @@
+#pragma once
+// The columns of a run's trace, in one place: the trace CSV
+// (experiments/report/trace_csv.h) and the Python module's `trace` dict have
+// these, in this order, then `status`.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "framework/optimization/optimizer.h"
+
+namespace akvf {
+
+struct TraceColumn {
+  const char* name;
+  bool integer;  // written without a fraction
+  double (*value)(const IterationSummary&);
+};
+
+inline const std::array<TraceColumn, 10>& trace_columns() {
+  static const std::array<TraceColumn, 10> columns{{
+      {"iter", true, [](const IterationSummary& s) { return double(s.iteration); }},
+      {"seconds", false, [](const IterationSummary& s) { return s.seconds; }},
+      {"energy", false, [](const IterationSummary& s) { return s.energy; }},
+      {"grad_norm", false, [](const IterationSummary& s) { return s.grad_norm; }},
+      {"step", false, [](const IterationSummary& s) { return s.step; }},
+      {"ls_evals", true, [](const IterationSummary& s) { return double(s.ls_evals); }},
+      {"flips", true, [](const IterationSummary& s) { return double(s.flips); }},
+      {"max_step", false, [](const IterationSummary& s) { return s.max_step; }},
+      {"precond_seconds", false, [](const IterationSummary& s) { return s.precond_seconds; }},
+      {"line_search_seconds", false, [](const IterationSummary& s) { return s.line_search_seconds; }},
+  }};
+  return columns;
+}
+
+// The status column: on the last row why the run stopped (`final_status`,
+// as status_with_reason gives it), "warm-start" on the rows of a warm start,
+// empty elsewhere.
+inline std::string trace_status_cell(const std::vector<IterationSummary>& trace, std::size_t row,
+                                     const std::string& final_status) {
+  if (row + 1 == trace.size()) return final_status;
+  return trace[row].warm_start ? "warm-start" : "";
+}
+
+}  // namespace akvf

@@ -1,0 +1,158 @@
+"""akvf: flip-free minimization of mesh distortion energies (Claici et al. 2017).
+
+Parameterize a disk-topology triangle mesh or deform a tet mesh with any
+energy and preconditioner of the C++ library, from NumPy arrays::
+
+    import akvf
+    V, F = akvf.read_mesh("horse.obj")
+    result = akvf.parameterize(V, F)          # AKVF, symmetric Dirichlet
+    result.uv, result.status, result.trace["energy"]
+
+Every option of ``akvf param`` / ``akvf deform`` is a keyword argument named
+by its key in the options schema (``akvf.options("parameterize")`` lists them,
+docs/options.md documents them). The GIL is released while optimizing, and
+Ctrl-C stops a run within one iteration with KeyboardInterrupt.
+
+The module is built for Debian's interpreter, /usr/bin/python3 (docs/python.md).
+"""
+
+import sys as _sys
+
+try:
+    import numpy as _np
+except ImportError as _error:  # the interpreter on the PATH may not be Debian's
+    raise ImportError(
+        "akvf needs NumPy, which this interpreter (%s, Python %s) does not have. "
+        "akvf is built for Debian's /usr/bin/python3 with python3-numpy (bash scripts/setup.sh "
+        "installs it): run /usr/bin/python3 instead." % (_sys.executable, _sys.version.split()[0])
+    ) from _error
+
+from . import _akvf
+from ._akvf import (  # noqa: F401  (the exceptions are part of the API)
+    Error,
+    InputError,
+    NumericalError,
+    OptionsError,
+    OutputError,
+    ValidationError,
+)
+
+__version__ = _akvf.__version__
+__all__ = [
+    "parameterize", "deform", "read_mesh", "write_obj", "energies", "preconditioners",
+    "line_searches", "solvers", "options", "Result", "Error", "InputError", "ValidationError",
+    "OptionsError", "NumericalError", "OutputError", "__version__",
+]
+
+
+class Result:
+    """What a run did.
+
+    Attributes: ``uv`` (parameterize: (n, 2) float64, at the input's scale) or
+    ``x`` (deform: (n, 3)); ``status`` (as the command line prints it:
+    "converged", "max-iterations", "time-limit", "user-stopped", ...);
+    ``message``; ``iterations``; ``energy`` and ``grad_norm`` at the end;
+    ``trace`` (a dict of NumPy arrays with the trace CSV's columns, row 0 =
+    the start); ``statistics`` (the preconditioner's work: factorizations,
+    reused_solves, cg_solves, cg_iterations, symbolic_analyses, and seconds per
+    phase); ``preconditioner_report``; ``warnings``.
+    """
+
+    def __init__(self, fields):
+        self.__dict__.update(fields)
+
+    def __repr__(self):
+        return "akvf.Result(status=%r, iterations=%d, energy=%.10g, grad_norm=%.3e)" % (
+            self.status, self.iterations, self.energy, self.grad_norm)
+
+
+def _warn(messages):
+    import warnings
+    for message in messages:
+        warnings.warn(message, stacklevel=3)
+
+
+def parameterize(V, F, *, uv0=None, callback=None, **options):
+    """Parameterize a disk-topology triangle mesh; returns a Result with ``uv``.
+
+    V: (n, 3) reals; F: (m, 3) integers (any integer dtype), 0-based.
+    uv0: an (n, 2) start map instead of the initial map (must not invert a
+    triangle). callback(row, uv): called after every iteration (row 0 = the
+    start) with the trace row as a dict and the current map (n, 2) at the
+    input's scale; returning False stops the run ("user-stopped").
+    options: every option of ``akvf param`` by key (see below).
+    """
+    result = Result(_akvf.parameterize(V, F, uv0, callback, options))
+    _warn(result.warnings)
+    return result
+
+
+def deform(V, T, constraints, *, callback=None, **options):
+    """Deform a tet mesh with positional constraints; returns a Result with ``x``.
+
+    V: (n, 3) reals; T: (m, 4) integers, 0-based. constraints: (indices,
+    targets), indices a 1-D integer array into V, targets (len(indices), 3).
+    callback(row, x) as for parameterize, x (n, 3).
+    options: every option of ``akvf deform`` by key (see below).
+    """
+    indices, targets = constraints
+    result = Result(_akvf.deform(V, T, indices, targets, callback, options))
+    _warn(result.warnings)
+    return result
+
+
+def read_mesh(path, kind=None):
+    """(V, F) of a triangle mesh (.obj, .off) or (V, T) of a tet mesh (.mesh, .tet).
+
+    kind: "triangles" or "tets"; by default from the extension (.obj is read
+    as triangles: pass kind="tets" for a tet OBJ). Errors name the file and line.
+    """
+    import os
+    path = os.fspath(path)
+    if kind is None:
+        kind = "tets" if path.lower().endswith((".mesh", ".tet")) else "triangles"
+    V, elements, warnings = _akvf.read_mesh(path, kind)
+    _warn(warnings)
+    return V, elements
+
+
+def write_obj(path, V, F, uv):
+    """Write the mesh with one ``vt`` per vertex (atomically, as the command line does)."""
+    import os
+    _akvf.write_obj(os.fspath(path), V, F, uv)
+
+
+def energies(dimension=2):
+    """[(name, description)] of the energies (dimension 2: parameterize, 3: deform)."""
+    return _akvf.energies(dimension)
+
+
+def preconditioners(dimension=2):
+    """[(name, description)] of the preconditioners (dimension 2 or 3)."""
+    return _akvf.preconditioners(dimension)
+
+
+def line_searches():
+    """[(name, description)] of the line searches."""
+    return _akvf.line_searches()
+
+
+def solvers():
+    """[(name, description)] of the solvers of parameterize (descent, lbfgs)."""
+    return _akvf.solvers()
+
+
+def options(problem="parameterize"):
+    """The keyword options of parameterize or deform: dicts of key, kind, default, flag, help."""
+    return _akvf.options(problem)
+
+
+def _options_doc(problem):
+    lines = ["", "Options (keyword = default: help):"]
+    for o in _akvf.options(problem):
+        lines.append("    %s = %s: %s" % (o["key"], o["default"], o["help"]))
+    return "\n".join(lines)
+
+
+parameterize.__doc__ += _options_doc("parameterize")
+deform.__doc__ += _options_doc("deform")

@@ -1,0 +1,287 @@
+// The Python module akvf._akvf: the public C++ API (akvf/akvf.h) for NumPy
+// arrays. Options arrive as keyword arguments named by the options schema
+// (akvf/option_schema.h), so every option of the command line is a keyword
+// with the same checks and messages. The package akvf/__init__.py wraps this
+// module (results as objects, docstrings from the schema).
+//
+// While a run optimizes, the GIL is released and SIGINT (Ctrl-C) raises the
+// library's interrupt flag, which the optimizer checks once per iteration;
+// the run then ends and KeyboardInterrupt is raised. Callbacks take the GIL
+// for their call.
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <csignal>
+#include <optional>
+
+#include "akvf/akvf.h"
+#include "akvf/option_schema.h"
+#include "framework/process/interrupt.h"
+#include "framework/optimization/trace_columns.h"
+#include "python/arrays.h"
+#include "python/errors.h"
+#include "python/keyword_options.h"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace {
+
+extern "C" void on_interrupt_signal(int) { akvf::request_interrupt(); }
+
+// For the lifetime of a run from the main thread: SIGINT sets the library's
+// interrupt flag instead of running Python's handler (which cannot run while
+// the GIL is released). The previous handler is restored afterwards.
+class InterruptScope {
+ public:
+  InterruptScope() : active_(is_main_thread()) {
+    if (!active_) return;
+    akvf::clear_interrupt();
+    struct sigaction ours {};
+    ours.sa_handler = on_interrupt_signal;
+    sigemptyset(&ours.sa_mask);
+    sigaction(SIGINT, &ours, &previous_);
+  }
+  ~InterruptScope() {
+    if (active_) sigaction(SIGINT, &previous_, nullptr);
+  }
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
+
+  // KeyboardInterrupt if a SIGINT arrived during the run (call with the GIL).
+  void raise_if_interrupted() const {
+    if (!active_ || !akvf::interrupt_requested()) return;
+    akvf::clear_interrupt();
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw py::error_already_set();
+  }
+
+ private:
+  static bool is_main_thread() {
+    const py::module_ threading = py::module_::import("threading");
+    return threading.attr("current_thread")().is(threading.attr("main_thread")());
+  }
+  bool active_;
+  struct sigaction previous_ {};
+};
+
+// One trace row as a dict with the trace CSV's columns.
+py::dict row_dict(const akvf::IterationSummary& row) {
+  py::dict d;
+  for (const akvf::TraceColumn& column : akvf::trace_columns()) {
+    const double value = column.value(row);
+    if (column.integer)
+      d[column.name] = static_cast<long long>(value);
+    else
+      d[column.name] = value;
+  }
+  d["warm_start"] = row.warm_start;
+  return d;
+}
+
+// The user's callback(row, x) as an iteration callback: x converted by
+// `to_map`; a false return value (not None) stops the run; an exception in
+// the callback stops it too and is raised when the run has ended.
+class PythonCallback {
+ public:
+  PythonCallback(py::object callback, std::function<Eigen::MatrixXd(const Eigen::VectorXd&)> to_map)
+      : callback_(std::move(callback)), to_map_(std::move(to_map)) {}
+
+  std::vector<akvf::IterationCallback> callbacks() {
+    if (callback_.is_none()) return {};
+    return {[this](const akvf::IterationSummary& row, const Eigen::VectorXd& x) {
+      const py::gil_scoped_acquire gil;
+      try {
+        const py::object answer = callback_(row_dict(row), to_map_(x));
+        if (!answer.is_none() && !py::bool_(answer)) return akvf::CallbackAction::kStop;
+        return akvf::CallbackAction::kContinue;
+      } catch (py::error_already_set& e) {
+        error_.emplace(std::move(e));
+        return akvf::CallbackAction::kStop;
+      }
+    }};
+  }
+  // Raises the callback's exception, if there was one (call with the GIL).
+  void raise_if_failed() {
+    if (error_) {
+      py::error_already_set e = std::move(*error_);
+      error_.reset();
+      throw e;
+    }
+  }
+
+ private:
+  py::object callback_;
+  std::function<Eigen::MatrixXd(const Eigen::VectorXd&)> to_map_;
+  std::optional<py::error_already_set> error_;
+};
+
+// The fields ParameterizeResult and DeformResult share, as a dict for
+// akvf/__init__.py's Result.
+template <class Result>
+py::dict result_dict(const Result& r) {
+  py::dict d;
+  d["status"] = akvf::to_string(r.status);
+  d["message"] = r.message;
+  d["iterations"] = r.iterations();
+  d["energy"] = r.energy();
+  d["grad_norm"] = r.grad_norm();
+  const std::string final_status = akvf::status_with_reason({Eigen::VectorXd(), r.trace, r.status, r.message});
+  py::dict trace;
+  const auto rows = static_cast<py::ssize_t>(r.trace.size());
+  for (const akvf::TraceColumn& column : akvf::trace_columns()) {
+    if (column.integer) {
+      py::array_t<long long> values(rows);
+      for (py::ssize_t i = 0; i < rows; ++i) values.mutable_at(i) = static_cast<long long>(column.value(r.trace[i]));
+      trace[column.name] = values;
+    } else {
+      py::array_t<double> values(rows);
+      for (py::ssize_t i = 0; i < rows; ++i) values.mutable_at(i) = column.value(r.trace[i]);
+      trace[column.name] = values;
+    }
+  }
+  py::list status;
+  for (std::size_t i = 0; i < r.trace.size(); ++i) status.append(akvf::trace_status_cell(r.trace, i, final_status));
+  trace["status"] = py::module_::import("numpy").attr("array")(status, "dtype"_a = "object");
+  d["trace"] = trace;
+  const akvf::RunStatistics& s = r.statistics;
+  py::dict statistics;
+  statistics["iterations"] = s.iterations;
+  statistics["seconds"] = s.seconds;
+  statistics["preconditioner_seconds"] = s.preconditioner_seconds;
+  statistics["line_search_seconds"] = s.line_search_seconds;
+  statistics["factorizations"] = s.preconditioner.factorizations;
+  statistics["reused_solves"] = s.preconditioner.reused_solves;
+  statistics["cg_solves"] = s.preconditioner.cg_solves;
+  statistics["cg_iterations"] = s.preconditioner.cg_iterations;
+  statistics["symbolic_analyses"] = s.preconditioner.symbolic_analyses;
+  d["statistics"] = statistics;
+  d["preconditioner_report"] = r.preconditioner_report;
+  d["warnings"] = py::cast(r.warnings);
+  return d;
+}
+
+py::dict parameterize(const py::handle& V, const py::handle& F, const py::object& uv0, const py::object& callback,
+                      const py::dict& keywords) {
+  const Eigen::MatrixXd vertices = akvf::python::float_matrix(V, "V", 3);
+  const Eigen::MatrixXi faces = akvf::python::index_matrix(F, "F", 3);
+  akvf::ParameterizeOptions options =
+      akvf::python::options_from_keywords(keywords, akvf::parameterize_option_fields(), "parameterize");
+  std::optional<Eigen::MatrixXd> start;
+  if (!uv0.is_none()) start = akvf::python::float_matrix(uv0, "uv0", 2);
+  std::unique_ptr<akvf::Parameterizer> solver;
+  PythonCallback hooks(callback, [&solver](const Eigen::VectorXd& x) { return solver->uv_of(x); });
+  options.callbacks = hooks.callbacks();
+  const InterruptScope interrupts;
+  akvf::ParameterizeResult result;
+  {
+    const py::gil_scoped_release release;
+    solver = std::make_unique<akvf::Parameterizer>(vertices, faces, options);
+    result = start ? solver->solve(*start) : solver->solve();
+  }
+  interrupts.raise_if_interrupted();
+  hooks.raise_if_failed();
+  py::dict d = result_dict(result);
+  d["uv"] = result.uv;
+  return d;
+}
+
+py::dict deform(const py::handle& V, const py::handle& T, const py::handle& indices, const py::handle& targets,
+                const py::object& callback, const py::dict& keywords) {
+  const Eigen::MatrixXd vertices = akvf::python::float_matrix(V, "V", 3);
+  const Eigen::MatrixXi tets = akvf::python::index_matrix(T, "T", 4);
+  akvf::PositionConstraints constraints;
+  const Eigen::MatrixXi constrained = akvf::python::index_vector(indices, "constraints[0] (vertex indices)");
+  constraints.vertices.assign(constrained.data(), constrained.data() + constrained.size());
+  constraints.targets = akvf::python::float_matrix(targets, "constraints[1] (targets)", 3);
+  if (constraints.targets.rows() != constrained.size())
+    throw akvf::InputError("constraints: " + std::to_string(constrained.size()) + " vertex indices but " +
+                           std::to_string(constraints.targets.rows()) + " targets");
+  akvf::DeformOptions options =
+      akvf::python::options_from_keywords(keywords, akvf::deform_option_fields(), "deform");
+  const auto n = vertices.rows();
+  PythonCallback hooks(callback, [n](const Eigen::VectorXd& x) {
+    return Eigen::MatrixXd(Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(x.data(), n, 3));
+  });
+  options.callbacks = hooks.callbacks();
+  const InterruptScope interrupts;
+  akvf::DeformResult result;
+  {
+    const py::gil_scoped_release release;
+    result = akvf::deform(vertices, tets, constraints, options);
+  }
+  interrupts.raise_if_interrupted();
+  hooks.raise_if_failed();
+  py::dict d = result_dict(result);
+  d["x"] = result.x;
+  return d;
+}
+
+// (V, F) of a triangle mesh or (V, T) of a tet mesh, with the readers of the
+// command line; their warnings are returned for Python's warnings module.
+py::tuple read_mesh(const std::string& path, const std::string& kind) {
+  akvf::Warnings warnings;
+  if (kind == "triangles") {
+    const akvf::TriMesh mesh = akvf::read_triangle_mesh(path, &warnings);
+    return py::make_tuple(mesh.V, mesh.F, warnings);
+  }
+  if (kind == "tets") {
+    const akvf::TetMesh mesh = akvf::read_tet_mesh(path, &warnings);
+    return py::make_tuple(mesh.V, mesh.T, warnings);
+  }
+  throw akvf::OptionsError("kind must be 'triangles' or 'tets', found '" + kind + "'");
+}
+
+void write_obj(const std::string& path, const py::handle& V, const py::handle& F, const py::handle& uv) {
+  akvf::TriMesh mesh;
+  mesh.V = akvf::python::float_matrix(V, "V", 3);
+  mesh.F = akvf::python::index_matrix(F, "F", 3);
+  const Eigen::MatrixXd UV = akvf::python::float_matrix(uv, "uv", 2);
+  if (UV.rows() != mesh.V.rows())
+    throw akvf::InputError("uv must have one row per vertex (" + std::to_string(mesh.V.rows()) + "), found " +
+                           std::to_string(UV.rows()));
+  akvf::write_obj_with_uv(path, mesh, UV);
+}
+
+template <class Options>
+py::list option_list(const std::vector<akvf::OptionField<Options>>& fields) {
+  static const char* kinds[] = {"text", "number", "integer", "switch"};
+  py::list list;
+  const Options defaults;
+  for (const auto& field : fields)
+    list.append(py::dict("key"_a = field.key, "kind"_a = kinds[static_cast<int>(field.kind)],
+                         "default"_a = field.format(defaults), "flag"_a = "--" + field.flag, "help"_a = field.help));
+  return list;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_akvf, m) {
+  m.doc() = "akvf's C++ library for NumPy arrays; use the package `akvf`, which wraps this module.";
+  m.attr("__version__") = akvf::kVersion;
+  akvf::python::register_errors(m);
+
+  m.def("parameterize", &parameterize, py::arg("V"), py::arg("F"), py::arg("uv0"), py::arg("callback"),
+        py::arg("keywords"));
+  m.def("deform", &deform, py::arg("V"), py::arg("T"), py::arg("indices"), py::arg("targets"), py::arg("callback"),
+        py::arg("keywords"));
+  m.def("read_mesh", &read_mesh, py::arg("path"), py::arg("kind"));
+  m.def("write_obj", &write_obj, py::arg("path"), py::arg("V"), py::arg("F"), py::arg("uv"));
+  m.def("energies", [](int dimension) {
+    if (dimension != 2 && dimension != 3) throw akvf::OptionsError("dimension must be 2 or 3");
+    return dimension == 2 ? akvf::energies_2d().entries() : akvf::energies_3d().entries();
+  });
+  m.def("preconditioners", [](int dimension) {
+    if (dimension != 2 && dimension != 3) throw akvf::OptionsError("dimension must be 2 or 3");
+    return dimension == 2 ? akvf::preconditioners_2d().entries() : akvf::preconditioners_3d().entries();
+  });
+  m.def("line_searches", [] { return akvf::line_searches().entries(); });
+  m.def("solvers", [] { return akvf::solvers(); });
+  m.def("options", [](const std::string& problem) {
+    if (problem == "parameterize") return option_list(akvf::parameterize_option_fields());
+    if (problem == "deform") return option_list(akvf::deform_option_fields());
+    throw akvf::OptionsError("problem must be 'parameterize' or 'deform', found '" + problem + "'");
+  });
+}
