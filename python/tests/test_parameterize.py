@@ -1,0 +1,155 @@
+"""akvf.parameterize from Python: shapes, statuses, the trace, options as
+keywords, and the same bits as the command line."""
+
+import re
+import subprocess
+
+import numpy as np
+import pytest
+
+import akvf
+from conftest import bumpy_disk, signed_areas
+
+
+def test_version_matches_the_program(program):
+    out = subprocess.run([program, "--version"], capture_output=True, text=True, check=True).stdout
+    assert out.split()[-1] == akvf.__version__
+
+
+def test_default_run_converges_without_inverted_triangles(disk):
+    V, F = disk
+    r = akvf.parameterize(V, F)
+    assert r.status == "converged"
+    assert r.uv.shape == (len(V), 2) and r.uv.dtype == np.float64
+    assert (signed_areas(r.uv, F) > 0).all()
+    # At the input's scale: the UV area equals the surface area.
+    a, b, c = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
+    area = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1).sum()
+    assert signed_areas(r.uv, F).sum() == pytest.approx(area, rel=1e-12)
+    assert r.grad_norm < 1e-3 and r.iterations == r.trace["iter"][-1]
+    assert r.energy == r.trace["energy"][-1] >= 4
+    assert r.statistics["factorizations"] >= 1 and r.statistics["symbolic_analyses"] == 1
+    assert (r.trace["flips"] == 0).all()
+
+
+def test_trace_has_the_columns_of_the_trace_csv(disk, program, tmp_path):
+    V, F = disk
+    mesh = tmp_path / "disk.obj"
+    akvf.write_obj(mesh, V, F, np.zeros((len(V), 2)))
+    trace = tmp_path / "trace.csv"
+    subprocess.run([program, "param", str(mesh), "--trace", str(trace), "-q"], check=True)
+    header = trace.read_text().splitlines()[0].split(",")
+    r = akvf.parameterize(V, F)
+    assert list(r.trace) == header
+    assert r.trace["iter"].dtype == np.int64 and r.trace["energy"].dtype == np.float64
+    assert r.trace["status"][-1] == "converged" and r.trace["status"][0] == ""
+
+
+def read_vt(path):
+    return np.array([[float(t) for t in line.split()[1:3]] for line in open(path) if line.startswith("vt ")])
+
+
+@pytest.mark.parametrize("args,keywords", [
+    ([], {}),
+    (["--precond", "newton", "--energy", "arap"], {"precond": "newton", "energy": "arap"}),
+    (["--precond", "slim", "--max-iters", "7", "--flaps", "off", "--init", "cotan"],
+     {"precond": "slim", "max_iters": 7, "flaps": False, "init": "cotan"}),
+    (["--energy", "exp-symmetric-dirichlet", "--exponent", "0.25", "--grad-tol", "1e-4"],
+     {"energy": "exp-symmetric-dirichlet", "exponent": 0.25, "grad_tol": 1e-4}),
+])
+def test_bitwise_the_command_line(disk, program, tmp_path, args, keywords):
+    V, F = disk
+    mesh, out = tmp_path / "disk.obj", tmp_path / "uv.obj"
+    akvf.write_obj(mesh, V, F, np.zeros((len(V), 2)))
+    V_read, F_read = akvf.read_mesh(mesh)
+    subprocess.run([program, "param", str(mesh), "--out", str(out), "-q"] + args, check=True)
+    r = akvf.parameterize(V_read, F_read, **keywords)
+    assert np.array_equal(r.uv, read_vt(out))
+
+
+def test_shared_mesh_bitwise_the_command_line(meshes, program, tmp_path):
+    out = tmp_path / "uv.obj"
+    subprocess.run([program, "param", str(meshes / "tri" / "camelhead.off"), "--out", str(out), "-q"], check=True)
+    V, F = akvf.read_mesh(meshes / "tri" / "camelhead.off")
+    assert np.array_equal(akvf.parameterize(V, F).uv, read_vt(out))
+
+
+def test_arrays_are_converted_not_refused(disk):
+    V, F = disk
+    reference = akvf.parameterize(V, F, max_iters=5).uv
+    for V2, F2 in [(np.asfortranarray(V), F.astype(np.int32)), (V[:, ::-1][:, ::-1], F.astype(np.uint16)),
+                   (V.tolist(), F.tolist())]:
+        assert np.array_equal(akvf.parameterize(V2, F2, max_iters=5).uv, reference)
+
+
+def test_start_map_and_callback(disk):
+    V, F = disk
+    first = akvf.parameterize(V, F)
+    again = akvf.parameterize(V, F, uv0=first.uv)
+    assert again.status == "converged" and again.iterations <= 3
+    rows, shapes = [], []
+
+    def record(row, uv):
+        rows.append(row)
+        shapes.append(uv.shape)
+        return row["iter"] < 3  # False at iteration 3 stops the run
+
+    stopped = akvf.parameterize(V, F, callback=record)
+    assert stopped.status == "user-stopped" and stopped.iterations == 3
+    assert [row["iter"] for row in rows] == [0, 1, 2, 3]
+    assert shapes == [(len(V), 2)] * 4
+    assert set(rows[0]) == set(first.trace) - {"status"} | {"warm_start"}
+
+
+def test_callback_exception_propagates(disk):
+    V, F = disk
+
+    def fail(row, uv):
+        if row["iter"] == 2:
+            raise ZeroDivisionError("from the callback")
+
+    with pytest.raises(ZeroDivisionError, match="from the callback"):
+        akvf.parameterize(V, F, callback=fail)
+
+
+def test_every_option_of_the_schema_is_a_keyword(disk):
+    V, F = disk
+    as_python = {"text": str, "number": float, "integer": int, "switch": lambda text: text == "true"}
+    reference = akvf.parameterize(V, F, max_iters=2).uv
+    for option in akvf.options("parameterize"):
+        # Each key accepts its default, as a Python value or as None, with the default's result.
+        for value in (as_python[option["kind"]](option["default"]), None):
+            keywords = {"max_iters": 2, option["key"]: value} if option["key"] != "max_iters" else {"max_iters": 2}
+            assert np.array_equal(akvf.parameterize(V, F, **keywords).uv, reference), option["key"]
+    keys = {o["key"] for o in akvf.options("parameterize")}
+    assert {"energy", "precond", "solver", "exponent", "line_search", "acceleration", "grad_tol", "max_iters",
+            "time_limit", "threads", "akvf_reuse", "ls_rho", "init", "flaps", "warm_start_iters"} <= keys
+    assert {"weight", "hard", "cg_tol", "akvf_as_written"} <= {o["key"] for o in akvf.options("deform")}
+    assert "grad_tol = 0.001" in akvf.parameterize.__doc__
+
+
+def test_registries():
+    names = [name for name, _ in akvf.energies()]
+    assert names[0] == "symmetric-dirichlet" and "amips" in names
+    assert "akvf" in [name for name, _ in akvf.preconditioners()]
+    assert "akvf" in [name for name, _ in akvf.preconditioners(3)]
+    assert "backtracking" in [name for name, _ in akvf.line_searches()]
+    assert [name for name, _ in akvf.solvers()] == ["descent", "lbfgs"]
+
+
+def test_threads_are_honoured(disk):
+    V, F = disk
+    one = akvf.parameterize(V, F, threads=1)
+    two = akvf.parameterize(V, F, threads=2)
+    assert np.array_equal(one.uv, two.uv)  # the assembly is deterministic for any thread count
+
+
+def test_a_mesh_file_round_trip(disk, tmp_path):
+    V, F = disk
+    r = akvf.parameterize(V, F)
+    path = tmp_path / "out.obj"
+    akvf.write_obj(path, V, F, r.uv)
+    text = path.read_text()
+    assert len(re.findall(r"^vt ", text, re.M)) == len(V)
+    V2, F2 = akvf.read_mesh(path)
+    assert np.array_equal(V2, V) and np.array_equal(F2, F)
