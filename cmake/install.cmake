@@ -6,10 +6,10 @@
 include(CMakePackageConfigHelpers)
 set(AKVF_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/akvf)
 
-foreach(part framework energies solvers preconditioners)
+foreach(part headers framework energies solvers preconditioners)
   set_target_properties(akvf_${part} PROPERTIES EXPORT_NAME ${part})
 endforeach()
-install(TARGETS akvf_framework akvf_energies akvf_solvers akvf_preconditioners akvf_api
+install(TARGETS akvf_headers akvf_framework akvf_energies akvf_solvers akvf_preconditioners akvf_api
   EXPORT akvfTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

@@ -22,6 +22,7 @@
 #include "framework/optimization/trace_columns.h"
 #include "python/arrays.h"
 #include "python/errors.h"
+#include "python/extensions.h"
 #include "python/keyword_options.h"
 
 namespace py = pybind11;
@@ -277,6 +278,7 @@ PYBIND11_MODULE(_akvf, m) {
     if (dimension != 2 && dimension != 3) throw akvf::OptionsError("dimension must be 2 or 3");
     return dimension == 2 ? akvf::preconditioners_2d().entries() : akvf::preconditioners_3d().entries();
   });
+  m.def("load_extension", &akvf::python::load_extension, py::arg("path"));
   m.def("line_searches", [] { return akvf::line_searches().entries(); });
   m.def("solvers", [] { return akvf::solvers(); });
   m.def("options", [](const std::string& problem) {

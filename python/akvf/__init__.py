@@ -40,7 +40,7 @@ from ._akvf import (  # noqa: F401  (the exceptions are part of the API)
 __version__ = _akvf.__version__
 __all__ = [
     "parameterize", "deform", "read_mesh", "write_obj", "energies", "preconditioners",
-    "line_searches", "solvers", "options", "Result", "Error", "InputError", "ValidationError",
+    "line_searches", "solvers", "options", "load_extension", "Result", "Error", "InputError", "ValidationError",
     "OptionsError", "NumericalError", "OutputError", "__version__",
 ]
 
@@ -140,6 +140,19 @@ def line_searches():
 def solvers():
     """[(name, description)] of the solvers of parameterize (descent, lbfgs)."""
     return _akvf.solvers()
+
+
+def load_extension(path):
+    """Load a C++ extension that registers energies, preconditioners or line searches.
+
+    The extension is a shared library built against akvf's headers alone
+    (CMake: akvf::headers) defining ``extern "C" void akvf_register_extension()``,
+    which registers its parts (akvf/extend.h); they are then usable by name
+    everywhere and appear in energies(), preconditioners(), line_searches().
+    Loading the same file again does nothing. See docs/python.md.
+    """
+    import os
+    _akvf.load_extension(os.fspath(path))
 
 
 def options(problem="parameterize"):
