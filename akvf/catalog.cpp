@@ -11,10 +11,27 @@
 #include "preconditioners/laplacian_preconditioner.h"
 #include "preconditioners/newton_preconditioner.h"
 #include "preconditioners/slim_preconditioner.h"
+#include "preconditioners/switching_preconditioner.h"
 #include "solvers/backtracking_line_search.h"
 #include "solvers/wolfe_bisection_line_search.h"
 
 namespace akvf {
+
+namespace {
+
+// AKVF, then projected Newton on the same matrix pattern: both take their
+// symbolic analysis from one cache (the settings' own, or a new one).
+template <int D, class Akvf, class Settings>
+std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objective, const Settings& settings) {
+  Settings shared = settings;
+  if (!shared.akvf.factor.analysis_cache) shared.share_analyses(std::make_shared<SymbolicAnalysisCache>());
+  const FactorOptions newton = shared.newton;
+  return std::make_unique<SwitchingPreconditioner>(
+      "akvf-newton", std::make_unique<Akvf>(objective, shared.akvf),
+      [&objective, newton] { return std::make_unique<NewtonPreconditioner<D>>(objective, newton); });
+}
+
+}  // namespace
 
 DensityRegistry2D& mutable_energies_2d() {
   static DensityRegistry2D registry = [] {
@@ -63,6 +80,12 @@ PreconditionerRegistry3D& mutable_preconditioners_3d() {
           [](const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
             return std::make_unique<NewtonPreconditioner3D>(objective, settings.newton);
           });
+    r.add("akvf-newton",
+          "AKVF while the flip-free bound sets the step, projected Newton once the curvature does "
+          "(preconditioners/switching_preconditioner.h)",
+          [](const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
+            return akvf_then_newton<3, AkvfPreconditioner3D>(objective, settings);
+          });
     r.add("laplacian",
           "AQP proxy: the rest Laplacian per coordinate at the energy's scale, plus the constraints' Hessian",
           [](const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
@@ -94,6 +117,12 @@ PreconditionerRegistry2D& mutable_preconditioners_2d() {
     r.add("newton", "projected Newton: element Hessians clamped to PSD, CHOLMOD",
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return std::make_unique<NewtonPreconditioner2D>(objective, settings.newton);
+          });
+    r.add("akvf-newton",
+          "AKVF while the flip-free bound sets the step, projected Newton once the curvature does "
+          "(preconditioners/switching_preconditioner.h)",
+          [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
+            return akvf_then_newton<2, AkvfPreconditioner2D>(objective, settings);
           });
     r.add("laplacian",
           "AQP proxy: cotangent Laplacian of the 3D mesh per coordinate, factored once; AQP momentum by default",

@@ -142,7 +142,7 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                               "descent (Algorithm 1 with --precond) or lbfgs (L-BFGS through Ceres)", &O::solver,
                               [](const O& o) { require_solver(o.solver); }));
     f.push_back(text_field<O>("precond", "precond", "NAME",
-                              "akvf, newton, laplacian, slim, identity (or lbfgs, an alias of --solver lbfgs)",
+                              "akvf, newton, akvf-newton, laplacian, slim, identity (or lbfgs, an alias of --solver lbfgs)",
                               &O::preconditioner, [](const O& o) { require_method(o.preconditioner); }));
     add_common_fields(&f);
     f.push_back(number_field<O>("akvf_reuse", "akvf-reuse", "TAU",
@@ -173,7 +173,7 @@ const std::vector<OptionField<DeformOptions>>& deform_option_fields() {
     std::vector<OptionField<O>> f;
     f.push_back(text_field<O>("energy", "energy", "NAME", "3D distortion energy (see `akvf list`)", &O::energy,
                               [](const O& o) { energies_3d().require(o.energy); }));
-    f.push_back(text_field<O>("precond", "precond", "NAME", "akvf (K + 1e-4 I), newton, laplacian, slim, identity",
+    f.push_back(text_field<O>("precond", "precond", "NAME", "akvf (K + 1e-4 I), newton, akvf-newton, laplacian, slim, identity",
                               &O::preconditioner, [](const O& o) { preconditioners_3d().require(o.preconditioner); }));
     add_common_fields(&f);
     f.push_back(number_field<O>("weight", "weight", "W", "soft constraint weight w (at rest volume 1)", &O::weight,

@@ -1,5 +1,6 @@
 #include "energies/invariant_density_2d.h"
 
+#include <cmath>
 #include <limits>
 
 namespace akvf {
@@ -40,6 +41,48 @@ InvariantDensity2D::Hessian InvariantDensity2D::hessian(const Matrix& J) const {
   det_hessian(0, 3) = det_hessian(3, 0) = 1;
   det_hessian(1, 2) = det_hessian(2, 1) = -1;
   return 2 * d.f_s * Hessian::Identity() + d.f_g * det_hessian + G * second * G.transpose();
+}
+
+InvariantDensity2D::Hessian InvariantDensity2D::projected_hessian(const Matrix& J) const {
+  // Signed SVD in closed form: J = R(phi) diag(s1, s2) R(theta), R(t) the
+  // rotation by t, so U = R(phi) and V = R(-theta); s2 < 0 iff det J < 0.
+  const double E = (J(0, 0) + J(1, 1)) / 2, F = (J(0, 0) - J(1, 1)) / 2;
+  const double G = (J(1, 0) + J(0, 1)) / 2, H = (J(1, 0) - J(0, 1)) / 2;
+  const double Q = std::hypot(E, H), R = std::hypot(F, G);
+  const double s1 = Q + R, s2 = Q - R;
+  const double a1 = std::atan2(G, F), a2 = std::atan2(H, E);
+  const double theta = (a2 - a1) / 2, phi = (a2 + a1) / 2;
+  Eigen::Matrix2d U, Vt;
+  U << std::cos(phi), -std::sin(phi), std::sin(phi), std::cos(phi);
+  Vt << std::cos(theta), -std::sin(theta), std::sin(theta), std::cos(theta);
+
+  const InvariantDerivatives2D d = derivatives(J.squaredNorm(), J.determinant());
+  Eigen::Matrix2d B, S, A;
+  B << 2 * s1, 2 * s2, s2, s1;
+  S << d.f_ss, d.f_sg, d.f_sg, d.f_gg;
+  A << 2 * d.f_s, d.f_g, d.f_g, 2 * d.f_s;
+  A += B.transpose() * S * B;
+  // Eigenpairs of the symmetric 2x2 A.
+  const double mean = (A(0, 0) + A(1, 1)) / 2, half_gap = std::hypot((A(0, 0) - A(1, 1)) / 2, A(0, 1));
+  const double angle = 0.5 * std::atan2(2 * A(0, 1), A(0, 0) - A(1, 1));
+  const Eigen::Vector2d e1(std::cos(angle), std::sin(angle)), e2(-std::sin(angle), std::cos(angle));
+
+  Hessian P = Hessian::Zero();
+  const auto add = [&](double lambda, const Eigen::Matrix2d& M) {
+    if (!(lambda > 0)) return;
+    const Eigen::Matrix2d mode = U * M * Vt;
+    const Eigen::Vector4d v = vec(mode);
+    P += lambda * v * v.transpose();
+  };
+  const double r = 1 / std::sqrt(2.0);
+  Eigen::Matrix2d twist, flip;
+  twist << 0, -r, r, 0;
+  flip << 0, r, r, 0;
+  add(2 * d.f_s + d.f_g, twist);
+  add(2 * d.f_s - d.f_g, flip);
+  add(mean + half_gap, e1.asDiagonal().toDenseMatrix());
+  add(mean - half_gap, e2.asDiagonal().toDenseMatrix());
+  return P;
 }
 
 Eigen::Vector2d InvariantDensity2D::singular_value_gradient(const Eigen::Vector2d& sigma) const {

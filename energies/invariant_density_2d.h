@@ -20,6 +20,15 @@ class InvariantDensity2D : public DistortionDensity2D, public SingularValueDeriv
   double value(const Matrix& J) const final;
   double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const final;
   Hessian hessian(const Matrix& J) const final;
+  // The Hessian with its negative eigenvalues clamped to 0, in closed form
+  // [Smith, de Goes and Kim 2019]: with J = U diag(sigma) V^T (signed, U and
+  // V rotations) the eigenvectors are U M V^T for the twist M = [0 -1; 1 0]
+  // / sqrt(2) (eigenvalue 2 f_s + f_g), the flip [0 1; 1 0] / sqrt(2)
+  // (2 f_s - f_g), and two scalings diag(e) with e the eigenvectors of
+  //   A = 2 f_s I + f_g [0 1; 1 0] + B^T [f_ss f_sg; f_sg f_gg] B,
+  //   B = [2 sigma_1, 2 sigma_2; sigma_2, sigma_1]
+  // (the rows are ds and dg along diag(e)). No iterative eigensolver.
+  Hessian projected_hessian(const Matrix& J) const final;
 
   // dD/dsigma_i = 2 f_s sigma_i + f_g sigma_j (j != i).
   Eigen::Vector2d singular_value_gradient(const Eigen::Vector2d& sigma) const final;

@@ -78,7 +78,10 @@ Eigen::MatrixXd float_matrix(const py::handle& array, const std::string& name, i
       const double v = data[r * columns + c];
       if (!std::isfinite(v))
         throw InputError(name + ": row " + std::to_string(r) + " has a coordinate that is not finite (" +
-                         (std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf") + ")");
+                         (std::isnan(v) ? "nan"
+                          : v > 0       ? "inf"
+                                        : "-inf") +
+                         ")");
       out(r, c) = v;
     }
   return out;

@@ -18,8 +18,8 @@
 
 #include "akvf/akvf.h"
 #include "akvf/option_schema.h"
-#include "framework/process/interrupt.h"
 #include "framework/optimization/trace_columns.h"
+#include "framework/process/interrupt.h"
 #include "python/arrays.h"
 #include "python/errors.h"
 #include "python/extensions.h"
@@ -200,8 +200,7 @@ py::dict deform(const py::handle& V, const py::handle& T, const py::handle& indi
   if (constraints.targets.rows() != constrained.size())
     throw akvf::InputError("constraints: " + std::to_string(constrained.size()) + " vertex indices but " +
                            std::to_string(constraints.targets.rows()) + " targets");
-  akvf::DeformOptions options =
-      akvf::python::options_from_keywords(keywords, akvf::deform_option_fields(), "deform");
+  akvf::DeformOptions options = akvf::python::options_from_keywords(keywords, akvf::deform_option_fields(), "deform");
   const auto n = vertices.rows();
   PythonCallback hooks(callback, [n](const Eigen::VectorXd& x) {
     return Eigen::MatrixXd(Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(x.data(), n, 3));

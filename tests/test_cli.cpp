@@ -71,7 +71,7 @@ TEST_CASE("bad command lines exit 2 with a message") {
   const Outcome precond = akvf_run({"demo", "--precond", "slim2", "--quiet", "--out-dir", scratch_dir("x").string()});
   CHECK(precond.code == akvf::kExitUsageError);
   CHECK(precond.err ==
-        "error: unknown preconditioner 'slim2' (valid: akvf, newton, laplacian, slim, identity, lbfgs)\n");
+        "error: unknown preconditioner 'slim2' (valid: akvf, newton, akvf-newton, laplacian, slim, identity, lbfgs)\n");
   CHECK(akvf_run({"frobnicate"}).code == akvf::kExitUsageError);
 }
 

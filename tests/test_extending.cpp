@@ -153,7 +153,8 @@ TEST_CASE("every 3D preconditioner, by name, runs on an objective of one's own t
   options.max_iterations = 300;
   options.gradient_tolerance = 1e-6;
   std::vector<double> minima;
-  for (const auto& [name, description] : akvf::preconditioners_3d().entries()) {
+  for (const auto& entry : akvf::preconditioners_3d().entries()) {
+    const std::string& name = entry.first;  // not a structured binding: clang 14 cannot capture one
     CAPTURE(name);
     const auto preconditioner = akvf::preconditioners_3d().create(name, objective, akvf::PreconditionerSettings3D{});
     const akvf::OptimizerResult r = akvf::minimize(objective, *preconditioner, line_search, rest, options);

@@ -252,7 +252,7 @@ TEST_CASE("invalid options and unknown names are reported") {
   config = {};
   config.preconditioner = "magic";
   CHECK(akvf::test::error_message([&] { run(akvf::bent_bar(), config); }) ==
-        "unknown preconditioner 'magic' (valid: akvf, newton, laplacian, slim, identity, lbfgs)");
+        "unknown preconditioner 'magic' (valid: akvf, newton, akvf-newton, laplacian, slim, identity, lbfgs)");
   config = {};
   config.energy = "arap2";
   CHECK(akvf::test::error_message([&] { run(akvf::bent_bar(), config); }).find("unknown energy 'arap2' (valid: ") == 0);

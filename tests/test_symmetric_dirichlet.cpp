@@ -2,9 +2,11 @@
 // bound at rotations, +infinity for inverted J.
 #include <doctest/doctest.h>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "energies/amips.h"
 #include "energies/arap.h"
@@ -114,4 +116,33 @@ TEST_CASE("3D singular-value derivatives match finite differences in sigma") {
     CAPTURE(density->name());
     akvf::test::check_singular_value_gradient<3>(*density, Eigen::Vector3d(1.7, 0.8, 0.45));
   }
+}
+
+TEST_CASE("the closed-form projected Hessian of every 2D energy is the eigenvalue-clamped Hessian") {
+  const akvf::SymmetricDirichlet2D sd;
+  const akvf::Arap2D arap;
+  const akvf::Mips2D mips;
+  const akvf::ExpSymmetricDirichlet2D exp_sd(0.5);
+  const akvf::Amips2D amips(2.0);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> angle(-3.14, 3.14), stretch(0.2, 3.0);
+  int indefinite = 0;
+  for (const akvf::DistortionDensity2D* density :
+       std::initializer_list<const akvf::DistortionDensity2D*>{&sd, &arap, &mips, &exp_sd, &amips}) {
+    CAPTURE(density->name());
+    for (int trial = 0; trial < 200; ++trial) {
+      // J = R(a) diag(s1, s2) R(b), with equal singular values now and then.
+      const double s1 = stretch(rng), s2 = trial % 10 == 0 ? s1 : stretch(rng);
+      const Eigen::Matrix2d J = Eigen::Rotation2Dd(angle(rng)).toRotationMatrix() *
+                                Eigen::Vector2d(s1, s2).asDiagonal() *
+                                Eigen::Rotation2Dd(angle(rng)).toRotationMatrix();
+      if (density == &exp_sd && J.squaredNorm() > 8) continue;  // exp(k (s + s/g^2)) overflows the tolerance
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eig(density->hessian(J));
+      indefinite += eig.eigenvalues().minCoeff() < 0;
+      const Eigen::Matrix4d clamped =
+          eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
+      CHECK((density->projected_hessian(J) - clamped).norm() <= 1e-10 * (1 + clamped.norm()));
+    }
+  }
+  CHECK(indefinite > 100);  // the clamping was exercised
 }

@@ -145,7 +145,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     const double start_energy = accelerated ? extrapolation.energy : energy;
 
     const auto precond_start = Clock::now();
-    preconditioner.update({start_x, start_gradient, start_energy, k});
+    preconditioner.update({start_x, start_gradient, start_energy, k, row.step, row.max_step});
     preconditioner.apply(start_gradient, &preconditioned);
     const double precond_seconds = std::chrono::duration<double>(Clock::now() - precond_start).count();
 

@@ -11,6 +11,10 @@ struct OptimizationState {
   const Eigen::VectorXd& gradient;
   double energy;
   int iteration;
+  // The previous iteration's accepted step and its flip-free bound alpha_max
+  // (0 before the first step).
+  double previous_step = 0;
+  double previous_max_step = 0;
 };
 
 // The work a preconditioner did, as numbers (all zero for those that do no

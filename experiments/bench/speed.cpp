@@ -1,0 +1,273 @@
+// akvf_speed: time to a solution per method, in units of one numeric
+// Cholesky factorization of the rest Killing operator of the same mesh,
+// measured in the same run (the unit cancels the machine's speed).
+//
+//   2D: every disk mesh in DATA/tri with at least 10 000 faces; seconds of
+//       optimizer time to a gradient norm below 1e-3 (symmetric Dirichlet).
+//   3D: the SLIM cube (cube_4k.obj, slim-cube preset) and two lifted tet
+//       meshes (octopus-low.mesh, bar.tet: the bottom 5 % of the vertices by
+//       height fixed, the top 5 % lifted by 20 % of the height, w = 1e5);
+//       seconds to reach within 1e-4 relative of the lowest energy any
+//       method reaches.
+//
+// The unit: K (Eq. 5, area-scaled) at the initial map in 2D, K (Eq. 9-10) +
+// 1e-4 I at the rest shape in 3D, analyzed once, then the median of 5
+// numeric factorizations. Prints a Markdown table (docs/performance.md).
+//
+// Usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim] [--repeat N] [--only 2d|3d]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "akvf/akvf.h"
+#include "akvf/parameterization.h"
+#include "akvf/slim_cube.h"
+#include "akvf/threads.h"
+#include "framework/mesh/mesh_io.h"
+#include "framework/mesh/rest_geometry.h"
+#include "framework/mesh/tet_mesh_io.h"
+#include "preconditioners/killing_operator_2d.h"
+#include "preconditioners/killing_operator_3d.h"
+#include "solvers/sparse_cholesky.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+// Median seconds of 5 numeric factorizations of `matrix` (analyzed once).
+template <int D>
+double factorization_seconds(const akvf::ElementMatrix<D, D + 1>& matrix) {
+  akvf::SparseCholesky cholesky;
+  cholesky.analyze(matrix.upper(), D);
+  std::vector<double> seconds;
+  for (int i = 0; i < 5; ++i) {
+    const auto start = Clock::now();
+    cholesky.factorize(matrix.upper());
+    seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  return median(seconds);
+}
+
+double unit_2d(const akvf::TriMesh& mesh) {
+  const akvf::ThreadLimit threads(0);
+  const akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "mesh", akvf::ParamConfig{});
+  const akvf::DistortionObjective2D& objective = *setup.objective;
+  akvf::ElementMatrix2D K(objective.elements(), objective.num_vertices());
+  akvf::assemble_killing_operator_2d(objective.elements(), setup.x0, objective.rest().area, true, &K);
+  K.add_to_diagonal(1e-8 * K.mean_diagonal());
+  return factorization_seconds<2>(K);
+}
+
+double unit_3d(const akvf::TetMesh& mesh) {
+  const akvf::ThreadLimit threads(0);
+  akvf::TetMesh unit = mesh;
+  akvf::ElementMatrix3D K(unit.T, unit.num_vertices());
+  akvf::assemble_killing_operator_3d(unit.T, akvf::stack_rows(unit.V), &K);
+  K.add_to_diagonal(1e-4);
+  return factorization_seconds<3>(K);
+}
+
+struct Row {
+  std::string method;
+  int iterations = 0;
+  double seconds = 0;
+  std::string status;
+  double energy = 0;
+};
+
+void print_rows(const std::string& mesh, long elements, double unit, const std::vector<Row>& rows) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Row& r : rows)
+    if (r.status == "converged" || r.status == "reached") best = std::min(best, r.seconds);
+  for (const Row& r : rows) {
+    char line[400];
+    std::snprintf(line, sizeof line, "| %s | %ld | %.1f | %s | %d | %.3f | %.1f | %.2f | %s | %.10g |", mesh.c_str(),
+                  elements, 1e3 * unit, r.method.c_str(), r.iterations, r.seconds, r.seconds / unit, r.seconds / best,
+                  r.status.c_str(), r.energy);
+    std::cout << line << std::endl;
+  }
+}
+
+std::string method_name(const std::string& method, const std::string& default_name) {
+  return method == "default" ? default_name : method;
+}
+
+void run_2d(const std::filesystem::path& data, const std::vector<std::string>& methods, int repeat) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(data / "tri")) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  std::cout << "| mesh | faces | unit (ms) | method | iterations | seconds | units | / best | status | energy |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& file : files) {
+    akvf::TriMesh mesh;
+    try {
+      mesh = akvf::read_triangle_mesh(file.string());
+    } catch (const akvf::Error&) {
+      continue;
+    }
+    if (mesh.num_faces() < 10000) continue;
+    double unit = 0;
+    try {
+      unit = unit_2d(mesh);
+    } catch (const akvf::Error& e) {
+      std::cerr << file.filename().string() << ": skipped (" << e.what() << ")\n";
+      continue;
+    }
+    std::vector<Row> rows;
+    for (const std::string& method : methods) {
+      akvf::ParameterizeOptions options;
+      options.preconditioner = method_name(method, options.preconditioner);
+      std::vector<double> seconds;
+      akvf::ParameterizeResult result;
+      for (int i = 0; i < repeat; ++i) {
+        result = akvf::parameterize(mesh.V, mesh.F, options);
+        seconds.push_back(result.statistics.seconds);
+      }
+      rows.push_back({method == "default" ? "default (" + options.preconditioner + ")" : method, result.iterations(),
+                      median(seconds), akvf::to_string(result.status), result.energy()});
+    }
+    print_rows(file.filename().string(), mesh.num_faces(), unit, rows);
+  }
+}
+
+// Bottom 5 % of the vertices by height fixed, top 5 % lifted by 20 % of the height.
+akvf::PositionConstraints lifted(const akvf::TetMesh& mesh) {
+  std::vector<int> order(mesh.num_vertices());
+  for (int v = 0; v < mesh.num_vertices(); ++v) order[v] = v;
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return mesh.V(a, 2) < mesh.V(b, 2); });
+  const int count = std::max(1, mesh.num_vertices() / 20);
+  const double height = mesh.V.col(2).maxCoeff() - mesh.V.col(2).minCoeff();
+  akvf::PositionConstraints constraints;
+  constraints.targets.resize(2 * count, 3);
+  for (int i = 0; i < count; ++i) {
+    const int low = order[i], high = order[mesh.num_vertices() - 1 - i];
+    constraints.vertices.push_back(low);
+    constraints.targets.row(2 * i) = mesh.V.row(low);
+    constraints.vertices.push_back(high);
+    constraints.targets.row(2 * i + 1) = mesh.V.row(high) + Eigen::RowVector3d(0, 0, 0.2 * height);
+  }
+  return constraints;
+}
+
+void run_3d(const std::filesystem::path& data, const std::vector<std::string>& methods, int repeat) {
+  struct Case {
+    std::string file, label;
+    bool cube;
+  };
+  const std::vector<Case> cases = {{"cube_4k.obj", "cube_4k (slim-cube)", true},
+                                   {"octopus-low.mesh", "octopus-low (lifted)", false},
+                                   {"bar.tet", "bar (lifted)", false}};
+  std::cout << "\n| tet mesh | tets | unit (ms) | method | iterations to 1e-4 | seconds | units | / best | status | "
+               "energy |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Case& c : cases) {
+    const std::filesystem::path path = data / "tet" / c.file;
+    if (!std::filesystem::exists(path)) continue;
+    const akvf::TetMesh mesh = akvf::read_tet_mesh(path.string());
+    const akvf::PositionConstraints constraints = c.cube ? akvf::slim_cube_constraints(mesh) : lifted(mesh);
+    // The unit at the rest shape scaled to volume 1, as the run sees it.
+    akvf::TetMesh unit_mesh = mesh;
+    const double volume_scale = 1.0 / std::cbrt(akvf::rest_tets(mesh).total_volume);
+    unit_mesh.V *= volume_scale;
+    const double unit = unit_3d(unit_mesh);
+    std::vector<akvf::DeformResult> results;
+    std::vector<double> seconds_to;
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const std::string& method : methods) {
+      akvf::DeformOptions options;
+      options.preconditioner = method_name(method, options.preconditioner);
+      options.max_iters = 200;
+      results.push_back(akvf::deform(mesh.V, mesh.T, constraints, options));
+      for (const auto& row : results.back().trace) lowest = std::min(lowest, row.energy);
+    }
+    std::vector<Row> rows;
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      Row row;
+      akvf::DeformOptions options;
+      row.method = methods[m] == "default" ? "default (" + options.preconditioner + ")" : methods[m];
+      row.status = "not reached";
+      std::vector<double> seconds;
+      for (int i = 0; i < repeat; ++i) {
+        const akvf::DeformResult& r =
+            i == 0 ? results[m] : (results[m] = akvf::deform(mesh.V, mesh.T, constraints, [&] {
+                                     akvf::DeformOptions o;
+                                     o.preconditioner = method_name(methods[m], o.preconditioner);
+                                     o.max_iters = 200;
+                                     return o;
+                                   }()));
+        for (const auto& trace_row : r.trace)
+          if (trace_row.energy - lowest <= 1e-4 * std::abs(lowest)) {
+            seconds.push_back(trace_row.seconds);
+            row.iterations = trace_row.iteration;
+            row.status = "reached";
+            row.energy = trace_row.energy;
+            break;
+          }
+      }
+      if (seconds.empty()) {
+        row.iterations = results[m].iterations();
+        row.seconds = results[m].statistics.seconds;
+        row.energy = results[m].energy();
+      } else {
+        row.seconds = median(seconds);
+      }
+      rows.push_back(row);
+    }
+    print_rows(c.label, mesh.num_tets(), unit, rows);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::filesystem::path data = std::getenv("AKVF_DATA_DIR") ? std::getenv("AKVF_DATA_DIR") : "../shared/meshes";
+  std::vector<std::string> methods = {"default", "akvf", "newton", "slim"};
+  int repeat = 1;
+  std::string only;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::cerr << "akvf_speed: " << arg << " needs a value\n";
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (arg == "--data") {
+      data = value();
+    } else if (arg == "--methods") {
+      methods.clear();
+      std::stringstream list(value());
+      for (std::string m; std::getline(list, m, ',');) methods.push_back(m);
+    } else if (arg == "--repeat") {
+      repeat = std::max(1, std::atoi(value().c_str()));
+    } else if (arg == "--only") {
+      only = value();
+    } else {
+      std::cerr << "usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim] [--repeat N] [--only 2d|3d]\n";
+      return arg == "--help" || arg == "-h" ? 0 : 2;
+    }
+  }
+  if (!std::filesystem::is_directory(data / "tri")) {
+    std::cerr << "akvf_speed: meshes not found in " << data.string() << " (set AKVF_DATA_DIR or --data)\n";
+    return 2;
+  }
+  try {
+    if (only != "3d") run_2d(data, methods, repeat);
+    if (only != "2d") run_3d(data, methods, repeat);
+  } catch (const akvf::Error& e) {
+    std::cerr << "akvf_speed: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,46 @@
+#include "preconditioners/switching_preconditioner.h"
+
+namespace akvf {
+
+SwitchingPreconditioner::SwitchingPreconditioner(std::string name, std::unique_ptr<Preconditioner> first,
+                                                 Factory second, SwitchRule rule)
+    : name_(std::move(name)), first_(std::move(first)), make_second_(std::move(second)), rule_(rule) {}
+
+void SwitchingPreconditioner::update(const OptimizationState& state) {
+  if (!second_) {
+    const bool curvature_limited =
+        state.previous_step > 0 && state.previous_step < rule_.bound_share * state.previous_max_step;
+    curvature_limited_steps_ = curvature_limited ? curvature_limited_steps_ + 1 : 0;
+    if (curvature_limited_steps_ >= rule_.patience) {
+      second_ = make_second_();
+      switch_iteration_ = state.iteration;
+    }
+  }
+  (second_ ? *second_ : *first_).update(state);
+}
+
+void SwitchingPreconditioner::apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) {
+  (second_ ? *second_ : *first_).apply(gradient, result);
+}
+
+std::string SwitchingPreconditioner::report() const {
+  const std::string first = first_->name() + ": " + first_->report();
+  if (!second_) return first + "; no switch";
+  return first + "; from iteration " + std::to_string(switch_iteration_) + " " + second_->name() + ": " +
+         second_->report();
+}
+
+PreconditionerStatistics SwitchingPreconditioner::statistics() const {
+  PreconditionerStatistics sum = first_->statistics();
+  if (second_) {
+    const PreconditionerStatistics more = second_->statistics();
+    sum.factorizations += more.factorizations;
+    sum.cg_solves += more.cg_solves;
+    sum.reused_solves += more.reused_solves;
+    sum.cg_iterations += more.cg_iterations;
+    sum.symbolic_analyses += more.symbolic_analyses;
+  }
+  return sum;
+}
+
+}  // namespace akvf
