@@ -164,29 +164,51 @@ py::dict result_dict(const Result& r) {
   return d;
 }
 
-py::dict parameterize(const py::handle& V, const py::handle& F, const py::object& uv0, const py::object& callback,
-                      const py::dict& keywords) {
-  const Eigen::MatrixXd vertices = akvf::python::float_matrix(V, "V", 3);
-  const Eigen::MatrixXi faces = akvf::python::index_matrix(F, "F", 3);
-  akvf::ParameterizeOptions options =
-      akvf::python::options_from_keywords(keywords, akvf::parameterize_option_fields(), "parameterize");
+// A solve of `solver` from its initial map or from `uv0`, with the GIL
+// released, `callback` called per iteration and Ctrl-C as KeyboardInterrupt.
+py::dict solve(akvf::Parameterizer& solver, const py::object& uv0, const py::object& callback) {
   std::optional<Eigen::MatrixXd> start;
   if (!uv0.is_none()) start = akvf::python::float_matrix(uv0, "uv0", 2);
-  std::unique_ptr<akvf::Parameterizer> solver;
-  PythonCallback hooks(callback, [&solver](const Eigen::VectorXd& x) { return solver->uv_of(x); });
+  PythonCallback hooks(callback, [&solver](const Eigen::VectorXd& x) { return solver.uv_of(x); });
+  akvf::ParameterizeOptions options = solver.options();
   options.callbacks = hooks.callbacks();
+  solver.set_options(options);  // callbacks alone: the initial map is kept
   const InterruptScope interrupts;
   akvf::ParameterizeResult result;
   {
     const py::gil_scoped_release release;
-    solver = std::make_unique<akvf::Parameterizer>(vertices, faces, options);
-    result = start ? solver->solve(*start) : solver->solve();
+    result = start ? solver.solve(*start) : solver.solve();
   }
+  options.callbacks.clear();
+  solver.set_options(options);
   interrupts.raise_if_interrupted();
   hooks.raise_if_failed();
   py::dict d = result_dict(result);
   d["uv"] = result.uv;
   return d;
+}
+
+// Validation, normalization and the initial map, with the GIL released.
+std::unique_ptr<akvf::Parameterizer> make_parameterizer(const py::handle& V, const py::handle& F,
+                                                        const py::dict& keywords) {
+  const Eigen::MatrixXd vertices = akvf::python::float_matrix(V, "V", 3);
+  const Eigen::MatrixXi faces = akvf::python::index_matrix(F, "F", 3);
+  const akvf::ParameterizeOptions options =
+      akvf::python::options_from_keywords(keywords, akvf::parameterize_option_fields(), "parameterize");
+  const InterruptScope interrupts;
+  std::unique_ptr<akvf::Parameterizer> solver;
+  {
+    const py::gil_scoped_release release;
+    solver = std::make_unique<akvf::Parameterizer>(vertices, faces, options);
+  }
+  interrupts.raise_if_interrupted();
+  return solver;
+}
+
+py::dict parameterize(const py::handle& V, const py::handle& F, const py::object& uv0, const py::object& callback,
+                      const py::dict& keywords) {
+  const std::unique_ptr<akvf::Parameterizer> solver = make_parameterizer(V, F, keywords);
+  return solve(*solver, uv0, callback);
 }
 
 py::dict deform(const py::handle& V, const py::handle& T, const py::handle& indices, const py::handle& targets,
@@ -267,6 +289,15 @@ PYBIND11_MODULE(_akvf, m) {
         py::arg("keywords"));
   m.def("deform", &deform, py::arg("V"), py::arg("T"), py::arg("indices"), py::arg("targets"), py::arg("callback"),
         py::arg("keywords"));
+  py::class_<akvf::Parameterizer>(m, "Parameterizer")
+      .def(py::init(&make_parameterizer), py::arg("V"), py::arg("F"), py::arg("keywords"))
+      .def("solve", &solve, py::arg("uv0"), py::arg("callback"))
+      .def("set_options",
+           [](akvf::Parameterizer& solver, const py::dict& keywords) {
+             solver.set_options(akvf::python::options_from_keywords(keywords, akvf::parameterize_option_fields(),
+                                                                    "Parameterizer.set_options"));
+           })
+      .def("initial_uv", &akvf::Parameterizer::initial_uv);
   m.def("read_mesh", &read_mesh, py::arg("path"), py::arg("kind"));
   m.def("write_obj", &write_obj, py::arg("path"), py::arg("V"), py::arg("F"), py::arg("uv"));
   m.def("energies", [](int dimension) {

@@ -39,7 +39,7 @@ from ._akvf import (  # noqa: F401  (the exceptions are part of the API)
 
 __version__ = _akvf.__version__
 __all__ = [
-    "parameterize", "deform", "read_mesh", "write_obj", "energies", "preconditioners",
+    "parameterize", "Parameterizer", "deform", "read_mesh", "write_obj", "energies", "preconditioners",
     "line_searches", "solvers", "options", "load_extension", "Result", "Error", "InputError", "ValidationError",
     "OptionsError", "NumericalError", "OutputError", "__version__",
 ]
@@ -85,6 +85,47 @@ def parameterize(V, F, *, uv0=None, callback=None, **options):
     result = Result(_akvf.parameterize(V, F, uv0, callback, options))
     _warn(result.warnings)
     return result
+
+
+class Parameterizer:
+    """Repeated solves on one mesh: validation, normalization, the initial map
+    and the symbolic analysis are done once.
+
+        solver = akvf.Parameterizer(V, F, precond="newton")
+        a = solver.solve()
+        solver.set_options(energy="arap")     # changes these keys, keeps the others
+        b = solver.solve(uv0=a.uv)
+
+    Each solve gives the bits akvf.parameterize gives for the same options
+    and start. Keyword options as for parameterize.
+    """
+
+    def __init__(self, V, F, **options):
+        self._options = dict(options)
+        self._solver = _akvf.Parameterizer(V, F, self._options)
+
+    def solve(self, *, uv0=None, callback=None):
+        """A Result from the initial map, or from uv0 ((n, 2), any scale and placement)."""
+        result = Result(self._solver.solve(uv0, callback))
+        _warn(result.warnings)
+        return result
+
+    def set_options(self, **options):
+        """Change the given options for the next solves; the initial map is
+        recomputed only when init, flaps, energy, exponent or warm_start_iters change."""
+        merged = dict(self._options, **options)
+        self._solver.set_options(merged)
+        self._options = merged
+
+    @property
+    def options(self):
+        """The options set so far (keys not set have their defaults)."""
+        return dict(self._options)
+
+    @property
+    def initial_uv(self):
+        """The initial map, (n, 2) at the input's scale."""
+        return self._solver.initial_uv()
 
 
 def deform(V, T, constraints, *, callback=None, **options):

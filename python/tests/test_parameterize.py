@@ -153,3 +153,21 @@ def test_a_mesh_file_round_trip(disk, tmp_path):
     assert len(re.findall(r"^vt ", text, re.M)) == len(V)
     V2, F2 = akvf.read_mesh(path)
     assert np.array_equal(V2, V) and np.array_equal(F2, F)
+
+
+def test_a_parameterizer_solves_again_with_the_same_bits(disk):
+    V, F = disk
+    solver = akvf.Parameterizer(V, F, precond="newton")
+    first, second = solver.solve(), solver.solve()
+    assert np.array_equal(first.uv, second.uv)
+    assert np.array_equal(first.uv, akvf.parameterize(V, F, precond="newton").uv)
+    assert first.statistics["symbolic_analyses"] == 1 and second.statistics["symbolic_analyses"] == 0
+    assert solver.initial_uv.shape == (len(V), 2)
+    solver.set_options(energy="arap")
+    assert solver.options == {"precond": "newton", "energy": "arap"}
+    assert solver.solve(callback=lambda row, uv: row["iter"] < 2).status == "user-stopped"
+    assert solver.solve(uv0=first.uv).status == "converged"
+    assert np.array_equal(solver.solve().uv, akvf.parameterize(V, F, precond="newton", energy="arap").uv)
+    with pytest.raises(akvf.OptionsError, match="unknown preconditioner"):
+        solver.set_options(precond="nope")
+    assert solver.options["precond"] == "newton"
