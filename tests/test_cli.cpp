@@ -7,8 +7,12 @@
 #include <sstream>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "akvf/demo_mesh.h"
 #include "experiments/cli/exit_codes.h"
 #include "tests/cli_support.h"
+#include "tests/test_support.h"
 
 namespace fs = std::filesystem;
 
@@ -207,4 +211,48 @@ TEST_CASE(
     CHECK(svg[r] == svg[0]);
     CHECK(trace[r] == trace[0]);
   }
+}
+
+TEST_CASE("--summary writes the run's options, outcome and machine as JSON, for param and deform") {
+  const fs::path dir = scratch_dir("summary");
+  akvf::test::write_obj(dir / "bar.obj", akvf::bent_bar(21, 5));
+  const Outcome param = akvf_run({"param", (dir / "bar.obj").string(), "--summary", (dir / "run.json").string(),
+                                  "--max-iters", "7", "--precond", "newton", "-q"});
+  CHECK(param.code == akvf::kExitOk);
+  const nlohmann::json p = nlohmann::json::parse(read_text(dir / "run.json"));
+  CHECK(p["problem"] == "param");
+  CHECK(p["settings"]["precond"] == "newton");
+  CHECK(p["settings"]["max_iters"] == 7);
+  CHECK(p["settings"]["time_limit"] == "inf");
+  CHECK(p["iterations"].get<int>() <= 7);
+  CHECK(p["lower_bound"] == 4.0);
+  CHECK(p["max_flips"] == 0);
+  CHECK(p["elements"] == 2 * 20 * 4);
+  for (const char* key : {"status", "message", "reached", "seconds", "final_energy", "grad_norm", "vertices",
+                          "peak_memory_mb", "machine"})
+    CHECK(p.contains(key));
+  // Deformation, with the preset in its settings.
+  const akvf::TetMesh cube = akvf::test::tet_grid(3);
+  std::ofstream mesh(dir / "cube.mesh");
+  mesh << "MeshVersionFormatted 1\nDimension 3\nVertices\n" << cube.num_vertices() << "\n";
+  for (int v = 0; v < cube.num_vertices(); ++v) mesh << cube.V.row(v) << " 0\n";
+  mesh << "Tetrahedra\n" << cube.num_tets() << "\n";
+  for (int t = 0; t < cube.num_tets(); ++t) mesh << (cube.T.row(t).array() + 1) << " 0\n";
+  mesh << "End\n";
+  mesh.close();
+  const Outcome deform = akvf_run({"deform", (dir / "cube.mesh").string(), "--preset", "slim-cube", "--summary",
+                                   (dir / "d.json").string(), "--max-iters", "3", "-q"});
+  CHECK(deform.code == akvf::kExitOk);
+  const nlohmann::json d = nlohmann::json::parse(read_text(dir / "d.json"));
+  CHECK(d["problem"] == "deform");
+  CHECK(d["settings"]["preset"] == "slim-cube");
+  CHECK(d["lower_bound"] == 6.0);
+  CHECK(d["elements"] == cube.num_tets());
+  // A summary that names another output is refused before any work.
+  const Outcome clash = akvf_run({"param", (dir / "bar.obj").string(), "--summary", (dir / "t.csv").string(), "--trace",
+                                  (dir / "t.csv").string(), "-q"});
+  CHECK(clash.code == akvf::kExitUsageError);
+  CHECK(clash.err.find("--summary") != std::string::npos);
+  CHECK(!fs::exists(dir / "t.csv"));
+  fs::remove_all(dir);
 }

@@ -1,5 +1,6 @@
 #include "experiments/cli/deform_command.h"
 
+#include "akvf/catalog.h"
 #include "akvf/deformation.h"
 #include "akvf/options.h"
 #include "akvf/slim_cube.h"
@@ -9,6 +10,7 @@
 #include "experiments/cli/file_arguments.h"
 #include "experiments/cli/run_reporting.h"
 #include "experiments/cli/schema_options.h"
+#include "experiments/report/run_summary.h"
 #include "experiments/report/trace_csv.h"
 #include "framework/mesh/constraints_io.h"
 #include "framework/mesh/mesh_text.h"
@@ -23,6 +25,8 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
       {"preset", "NAME", "slim-cube: the SLIM paper's twisted cube (Figure 8)"},
       {"out", "OUT.mesh", "write the deformed mesh (.mesh MEDIT or .vtk VTK legacy)"},
       {"trace", "TRACE.csv", "one CSV row per iteration; flips counts inverted tets"},
+      {"summary", "RUN.json",
+       "write the run's summary: options, status, iterations, energy, memory (docs/experiments.md)"},
   };
   for (const OptionSpec& spec : schema_option_specs(deform_option_fields())) specs.push_back(spec);
   specs.push_back({"quiet", "", "no per-iteration progress on stderr (also -q)"});
@@ -44,13 +48,16 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
     throw OptionsError("unknown preset '" + preset + "' (valid: slim-cube)");
   if (cl.has("hard") && cl.has("weight")) throw OptionsError("option --weight has no effect with --hard");
   // Checked by the schema, converted as for library users (akvf/options.h).
-  const DeformConfig config = deform_config(schema_options_from(cl, deform_option_fields()));
-  const std::string out_path = cl.text("out", ""), trace_path = cl.text("trace", "");
+  const DeformOptions options = schema_options_from(cl, deform_option_fields());
+  const DeformConfig config = deform_config(options);
+  const std::string out_path = cl.text("out", ""), trace_path = cl.text("trace", ""),
+                    summary_path = cl.text("summary", "");
   require_extension("--out", out_path, {".mesh", ".vtk"});
   const std::string& path = cl.positional()[0];
   check_file_arguments({{"the input mesh", path}, {"--constraints", cl.text("constraints", "")}},
-                       {{"--out", out_path}, {"--trace", trace_path}});
+                       {{"--out", out_path}, {"--trace", trace_path}, {"--summary", summary_path}});
   const ThreadLimit threads(config.threads);
+  reset_peak_memory();
 
   Warnings read_warnings;
   const TetMesh input = read_tet_mesh(path, &read_warnings);
@@ -78,6 +85,20 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
       write_medit(out_path, deformed);
   }
   if (!trace_path.empty()) write_trace_csv(trace_path, run.result);
+  if (!summary_path.empty()) {
+    Json summary;
+    summary["problem"] = "deform";
+    summary["mesh_file"] = path;
+    Json settings;
+    record_options(deform_option_fields(), options, &settings);
+    settings["preset"] = preset;
+    settings["constraints"] = cl.text("constraints", "");
+    summary["settings"] = settings;
+    summary.update(run_record(run.result, energies_3d().create(options.energy, {options.exponent})->lower_bound(),
+                              mesh.num_vertices(), mesh.num_tets()));
+    summary["machine"] = machine_record();
+    write_summary(summary_path, summary);
+  }
   return exit_code_of(run.result);
 }
 

@@ -13,6 +13,7 @@
 #include "experiments/cli/file_arguments.h"
 #include "experiments/cli/run_reporting.h"
 #include "experiments/cli/schema_options.h"
+#include "experiments/report/run_summary.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/report/uv_svg.h"
 #include "framework/mesh/mesh_io.h"
@@ -24,7 +25,7 @@ namespace akvf {
 namespace {
 
 struct Outputs {
-  std::string obj, trace, svg;
+  std::string obj, trace, svg, summary;
 };
 
 std::vector<OptionSpec> optimization_options() {
@@ -34,14 +35,30 @@ std::vector<OptionSpec> optimization_options() {
   return specs;
 }
 
-// The command line's values into the API's options, checked by the schema,
-// then converted as for library users (akvf/options.h).
-ParamConfig config_from(const CommandLine& cl) {
-  return param_config(schema_options_from(cl, parameterize_option_fields()));
+// The command line's values into the API's options, checked by the schema
+// (and converted as for library users, akvf/options.h, when run).
+ParameterizeOptions options_from(const CommandLine& cl) {
+  return schema_options_from(cl, parameterize_option_fields());
 }
 
-int run_and_write(const TriMesh& input, const std::string& name, const ParamConfig& config, const Outputs& outputs,
-                  bool quiet, std::ostream& out, std::ostream& err) {
+// The --summary record: the run's options, then its outcome and the machine.
+Json param_summary(const std::string& mesh_file, const ParameterizeOptions& options, const ParamSetup& setup,
+                   const OptimizerResult& result) {
+  Json summary;
+  summary["problem"] = "param";
+  summary["mesh_file"] = mesh_file;
+  Json settings;
+  record_options(parameterize_option_fields(), options, &settings);
+  summary["settings"] = settings;
+  summary.update(
+      run_record(result, setup.objective->lower_bound(), setup.disk.mesh.num_vertices(), setup.disk.mesh.num_faces()));
+  summary["machine"] = machine_record();
+  return summary;
+}
+
+int run_and_write(const TriMesh& input, const std::string& name, const ParameterizeOptions& options,
+                  const Outputs& outputs, bool quiet, std::ostream& out, std::ostream& err) {
+  const ParamConfig config = param_config(options);
   const ParamSetup setup = prepare_parameterization(input, name, config);
   for (const auto& warning : setup.warnings) err << "warning: " << warning << '\n';
   const TriMesh& mesh = setup.disk.mesh;
@@ -64,6 +81,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const ParamConf
     write_layout_svg(outputs.svg, setup, result.x,
                      name + " - " + run.preconditioner_name + ", " + std::to_string(last.iteration) +
                          " iterations, E = " + std::to_string(last.energy));
+  if (!outputs.summary.empty()) write_summary(outputs.summary, param_summary(name, options, setup, result));
   return exit_code_of(result);
 }
 
@@ -74,6 +92,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
       {"out", "UV.obj", "write the input mesh with one `vt` per vertex"},
       {"trace", "TRACE.csv", "write one CSV row per iteration (row 0 = initial map)"},
       {"svg", "LAYOUT.svg", "write the UV layout shaded by distortion"},
+      {"summary", "RUN.json",
+       "write the run's summary: options, status, iterations, energy, memory (docs/experiments.md)"},
   };
   for (auto& spec : optimization_options()) specs.push_back(spec);
   CommandLine cl(
@@ -87,17 +107,19 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
     return kExitOk;
   }
   if (cl.positional().size() != 1) throw OptionsError("expected exactly one mesh file (see --help)");
-  const ParamConfig config = config_from(cl);
+  const ParameterizeOptions options = options_from(cl);
   const std::string& path = cl.positional()[0];
-  const Outputs outputs{cl.text("out", ""), cl.text("trace", ""), cl.text("svg", "")};
+  const Outputs outputs{cl.text("out", ""), cl.text("trace", ""), cl.text("svg", ""), cl.text("summary", "")};
   require_extension("--out", outputs.obj, {".obj"});
-  check_file_arguments({{"the input mesh", path}},
-                       {{"--out", outputs.obj}, {"--trace", outputs.trace}, {"--svg", outputs.svg}});
-  const ThreadLimit threads(config.threads);
+  check_file_arguments(
+      {{"the input mesh", path}},
+      {{"--out", outputs.obj}, {"--trace", outputs.trace}, {"--svg", outputs.svg}, {"--summary", outputs.summary}});
+  const ThreadLimit threads(options.threads);
+  reset_peak_memory();
   Warnings warnings;
   const TriMesh input = read_triangle_mesh(path, &warnings);
   for (const auto& warning : warnings) err << "warning: " << warning << '\n';
-  return run_and_write(input, path, config, outputs, cl.has("quiet"), out, err);
+  return run_and_write(input, path, options, outputs, cl.has("quiet"), out, err);
 }
 
 int demo_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -115,14 +137,14 @@ int demo_command(const std::vector<std::string>& args, std::ostream& out, std::o
     return kExitOk;
   }
   if (!cl.positional().empty()) throw OptionsError("demo takes no mesh file (see --help)");
-  const ParamConfig config = config_from(cl);
+  const ParameterizeOptions options = options_from(cl);
   const std::filesystem::path dir = cl.text("out-dir", "akvf-demo");
   create_output_folder(dir.string());
   const Outputs outputs{(dir / "demo_uv.obj").string(), (dir / "demo_trace.csv").string(),
-                        (dir / "demo_layout.svg").string()};
+                        (dir / "demo_layout.svg").string(), ""};
   check_file_arguments({}, {{"the UV OBJ", outputs.obj}, {"the trace", outputs.trace}, {"the layout", outputs.svg}});
-  const ThreadLimit threads(config.threads);
-  const int code = run_and_write(bent_bar(), "bent-bar", config, outputs, cl.has("quiet"), out, err);
+  const ThreadLimit threads(options.threads);
+  const int code = run_and_write(bent_bar(), "bent-bar", options, outputs, cl.has("quiet"), out, err);
   out << "wrote " << (dir / "demo_uv.obj").string() << ", " << (dir / "demo_trace.csv").string() << ", "
       << (dir / "demo_layout.svg").string() << '\n';
   return code;

@@ -15,6 +15,7 @@
 #include "akvf/parameterization.h"
 #include "akvf/slim_cube.h"
 #include "experiments/cli/run_reporting.h"
+#include "experiments/report/run_summary.h"
 #include "experiments/report/text_utilities.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/report/uv_svg.h"
@@ -26,68 +27,11 @@
 #include "framework/process/output_file.h"
 #include "solvers/sparse_cholesky.h"
 
-#ifndef AKVF_VERSION
-#define AKVF_VERSION "unknown"
-#endif
-
 namespace akvf {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
 
 namespace {
-
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown";
-}
-
-// Linux: resets the process's peak resident set size (VmHWM) so that the
-// value read after a case is that case's peak (writing 5 to clear_refs).
-void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
-
-// VmHWM of /proc/self/status in MiB (0 where unavailable).
-double peak_memory_mb() {
-  std::ifstream in("/proc/self/status");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // reported in kB
-  return 0;
-}
-
-// Where and with what the case ran: the same for every case of a run.
-Json machine_record() {
-  Json machine;
-  machine["cpu"] = cpu_model();
-  machine["cores"] = std::thread::hardware_concurrency();
-  machine["threads"] = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
-  machine["versions"] = {{"akvf", AKVF_VERSION},
-                         {"eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) +
-                                       "." + std::to_string(EIGEN_MINOR_VERSION)},
-                         {"cholmod", cholmod_version()},
-                         {"compiler", __VERSION__}};
-  return machine;
-}
-
-// The case's options as the schema writes them (numbers as numbers, switches
-// as booleans), with the problem and its constraints.
-template <class Options>
-void record_options(const std::vector<OptionField<Options>>& fields, const Options& options, Json* out) {
-  for (const auto& field : fields) {
-    const std::string text = field.format(options);
-    if (field.kind == OptionKind::kNumber || field.kind == OptionKind::kInteger) {
-      const double value = std::stod(text);
-      (*out)[field.key] = std::isfinite(value) ? Json(value) : Json(text);
-    } else if (field.kind == OptionKind::kSwitch) {
-      (*out)[field.key] = text == "true";
-    } else {
-      (*out)[field.key] = text;
-    }
-  }
-}
 
 Json settings_record(const CaseSettings& s) {
   Json j = {{"problem", s.problem}};
@@ -188,22 +132,8 @@ Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOpt
     reset_peak_memory();
     const CaseResult r = c.settings.problem == "param" ? run_param_case(c, mesh, path, case_dir)
                                                        : run_deform_case(c, path, manifest, options.data_dir);
-    const IterationSummary& last = r.result.trace.back();
-    int max_flips = 0;
-    for (const IterationSummary& row : r.result.trace) max_flips = std::max(max_flips, row.flips);
     write_trace_csv(join_path(case_dir, "trace.csv"), r.result);
-    summary["status"] = to_string(r.result.status);
-    summary["message"] = r.result.message;
-    summary["reached"] = r.result.status == TerminationStatus::kConverged;
-    summary["iterations"] = last.iteration;
-    summary["seconds"] = last.seconds;
-    summary["final_energy"] = last.energy;
-    summary["lower_bound"] = r.lower_bound;
-    summary["grad_norm"] = last.grad_norm;
-    summary["max_flips"] = max_flips;
-    summary["vertices"] = r.vertices;
-    summary["elements"] = r.elements;
-    summary["peak_memory_mb"] = peak_memory_mb();
+    summary.update(run_record(r.result, r.lower_bound, r.vertices, r.elements));
   } catch (const Error& e) {
     summary["status"] = "error";
     summary["message"] = e.what();
@@ -266,7 +196,7 @@ RunnerOutcome run_experiment(const Manifest& manifest, const RunnerOptions& opti
       outcome.interrupted = true;
       break;
     }
-    write_file_atomically(summary_path, [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+    write_summary(summary_path, summary);
     ran_seconds += std::chrono::duration<double>(Clock::now() - case_start).count();
     ++outcome.ran;
     if (summary["status"] == "error") ++outcome.failed;

@@ -1,0 +1,77 @@
+#include "experiments/report/run_summary.h"
+
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <fstream>
+#include <thread>
+
+#include "framework/process/output_file.h"
+#include "solvers/sparse_cholesky.h"
+
+#ifndef AKVF_VERSION
+#define AKVF_VERSION "unknown"
+#endif
+
+namespace akvf {
+
+namespace {
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown";
+}
+
+}  // namespace
+
+void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }  // 5 clears VmHWM
+
+double peak_memory_mb() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // reported in kB
+  return 0;
+}
+
+Json machine_record() {
+  Json machine;
+  machine["cpu"] = cpu_model();
+  machine["cores"] = std::thread::hardware_concurrency();
+  machine["threads"] = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+  machine["versions"] = {{"akvf", AKVF_VERSION},
+                         {"eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) +
+                                       "." + std::to_string(EIGEN_MINOR_VERSION)},
+                         {"cholmod", cholmod_version()},
+                         {"compiler", __VERSION__}};
+  return machine;
+}
+
+Json run_record(const OptimizerResult& result, double lower_bound, int vertices, int elements) {
+  const IterationSummary& last = result.trace.back();
+  int max_flips = 0;
+  for (const IterationSummary& row : result.trace) max_flips = std::max(max_flips, row.flips);
+  Json record;
+  record["status"] = to_string(result.status);
+  record["message"] = result.message;
+  record["reached"] = result.status == TerminationStatus::kConverged;
+  record["iterations"] = last.iteration;
+  record["seconds"] = last.seconds;
+  record["final_energy"] = last.energy;
+  record["lower_bound"] = lower_bound;
+  record["grad_norm"] = last.grad_norm;
+  record["max_flips"] = max_flips;
+  record["vertices"] = vertices;
+  record["elements"] = elements;
+  record["peak_memory_mb"] = peak_memory_mb();
+  return record;
+}
+
+void write_summary(const std::string& path, const Json& summary) {
+  write_file_atomically(path, [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+}
+
+}  // namespace akvf

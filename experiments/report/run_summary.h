@@ -1,0 +1,55 @@
+#pragma once
+// The JSON summary of one run: what `akvf param --summary`, `akvf deform
+// --summary` and every case of the experiment runner (cases/<id>/summary.json)
+// write. Schema: docs/experiments.md, "summary.json".
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "akvf/option_schema.h"
+#include "framework/optimization/optimizer.h"
+
+namespace akvf {
+
+using Json = nlohmann::ordered_json;
+
+// Linux: resets the process's peak resident set size (VmHWM), so that
+// peak_memory_mb() after a run is that run's peak.
+void reset_peak_memory();
+// VmHWM of /proc/self/status in MiB (0 where unavailable).
+double peak_memory_mb();
+
+// Where and with what a run ran: CPU, cores, TBB threads, versions of akvf
+// (`git describe` at configure time), Eigen, CHOLMOD and the compiler.
+Json machine_record();
+
+// The outcome of a finished run: status, message, reached (gradient below
+// the tolerance), iterations, seconds, final_energy, lower_bound, grad_norm,
+// max_flips (over all iterates), vertices, elements, peak_memory_mb.
+Json run_record(const OptimizerResult& result, double lower_bound, int vertices, int elements);
+
+// The options as the schema writes them: numbers as numbers, integers as
+// integers (a time limit of inf as the text "inf"), switches as booleans,
+// names as text.
+template <class Options>
+void record_options(const std::vector<OptionField<Options>>& fields, const Options& options, Json* out) {
+  for (const auto& field : fields) {
+    const std::string text = field.format(options);
+    if (field.kind == OptionKind::kInteger) {
+      (*out)[field.key] = std::stoll(text);
+    } else if (field.kind == OptionKind::kNumber) {
+      const double value = std::stod(text);
+      (*out)[field.key] = std::isfinite(value) ? Json(value) : Json(text);
+    } else if (field.kind == OptionKind::kSwitch) {
+      (*out)[field.key] = text == "true";
+    } else {
+      (*out)[field.key] = text;
+    }
+  }
+}
+
+// Writes `summary` (indented) to `path` through a temporary file.
+void write_summary(const std::string& path, const Json& summary);
+
+}  // namespace akvf
