@@ -115,8 +115,8 @@ TEST_CASE("OFF rejects polygons, short faces and bad indices") {
 }
 
 TEST_CASE("reading a file checks the extension and that it exists") {
-  CHECK(error_message([] { akvf::read_triangle_mesh("mesh.ply"); }) ==
-        "mesh.ply: unsupported mesh format '.ply' (expected .obj or .off)");
+  CHECK(error_message([] { akvf::read_triangle_mesh("mesh.3ds"); }) ==
+        "mesh.3ds: unsupported mesh format '.3ds' (expected .obj, .off, .ply or .stl)");
   CHECK(error_message([] { akvf::read_triangle_mesh("/nonexistent/cow.obj"); }) ==
         "/nonexistent/cow.obj: cannot open: No such file or directory");
 }

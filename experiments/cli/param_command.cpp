@@ -97,7 +97,7 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   };
   for (auto& spec : optimization_options()) specs.push_back(spec);
   CommandLine cl(
-      "akvf param MESH.{obj,off} [options]\n\n"
+      "akvf param MESH.{obj,off,ply,stl} [options]\n\n"
       "Parameterizes a disk-topology triangle mesh by minimizing a distortion energy\n"
       "with a preconditioned, flip-free descent (Claici et al. 2017, Algorithm 1).",
       specs);

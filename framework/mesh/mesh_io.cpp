@@ -7,6 +7,8 @@
 #include <iomanip>
 
 #include "framework/mesh/mesh_text.h"
+#include "framework/mesh/ply_reader.h"
+#include "framework/mesh/stl_reader.h"
 #include "framework/mesh/text_reader.h"
 #include "framework/process/error.h"
 #include "framework/process/output_file.h"
@@ -72,9 +74,11 @@ TriMesh read_off(std::istream& in, const std::string& file_name) {
 
 TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings) {
   const std::string ext = lowercase_extension(path);
-  if (ext != ".obj" && ext != ".off")
-    throw InputError(path, 0, "unsupported mesh format '" + ext + "' (expected .obj or .off)");
+  if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
+    throw InputError(path, 0, "unsupported mesh format '" + ext + "' (expected .obj, .off, .ply or .stl)");
   std::ifstream in = open_mesh_file(path);
+  if (ext == ".ply") return read_ply(in, path);
+  if (ext == ".stl") return read_stl(in, path);
   return ext == ".obj" ? read_obj(in, path, warnings) : read_off(in, path);
 }
 

@@ -20,7 +20,8 @@ TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warni
 // either direction, are errors naming the line.
 TriMesh read_off(std::istream& in, const std::string& file_name);
 
-// Dispatches on the extension (.obj or .off, case-insensitive).
+// Dispatches on the extension (.obj, .off, .ply or .stl, case-insensitive;
+// ply_reader.h, stl_reader.h).
 TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings = nullptr);
 
 // Writes the mesh with one `vt` per vertex and faces `f a/a b/b c/c`, so the

@@ -143,7 +143,7 @@ def deform(V, T, constraints, *, callback=None, **options):
 
 
 def read_mesh(path, kind=None):
-    """(V, F) of a triangle mesh (.obj, .off) or (V, T) of a tet mesh (.mesh, .tet).
+    """(V, F) of a triangle mesh (.obj, .off, .ply, .stl) or (V, T) of a tet mesh (.mesh, .tet).
 
     kind: "triangles" or "tets"; by default from the extension (.obj is read
     as triangles: pass kind="tets" for a tet OBJ). Errors name the file and line.

@@ -1,0 +1,25 @@
+#pragma once
+// PLY triangle meshes (Turk's polygon file format), ASCII and binary (little
+// and big endian), as MeshLab, Blender, CloudCompare and scanners write them.
+//
+// Read: the `vertex` element's x, y, z (any numeric type) and, when present,
+// a per-vertex start map from u,v or s,t or texture_u,texture_v; the `face`
+// element's list `vertex_indices` (or `vertex_index`), which must hold
+// triangles (0-based). Other properties and elements are skipped. Errors
+// name the file and the header line, the ASCII line, or the binary byte
+// offset, and the problem; counts are never trusted for allocation (at most
+// kMaxReserve rows are reserved ahead of the data, and a binary file must be
+// long enough for what its header declares before anything is read).
+#include <Eigen/Core>
+#include <istream>
+#include <string>
+
+#include "framework/mesh/mesh.h"
+
+namespace akvf {
+
+// uv (if given) receives #V by 2 texture coordinates, or 0 rows when the
+// file has none.
+TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd* uv = nullptr);
+
+}  // namespace akvf

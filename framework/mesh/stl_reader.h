@@ -1,0 +1,25 @@
+#pragma once
+// STL triangle soups, ASCII and binary, welded into an indexed mesh.
+//
+// STL stores every facet's three corners by value. Corners closer than the
+// weld tolerance become one vertex: 4 float32 ulps of the bounding box's
+// diagonal (4 * 2^-23 * diagonal, about 5e-7 of it), because binary STL
+// rounds every coordinate to float32 and writers that compute a shared
+// corner twice may differ by a rounding or two; anything farther apart is a
+// different point. Vertices are numbered by first appearance. Binary is
+// recognized by its size (84 + 50 n bytes for n facets), not by the first
+// word, since many binary files also begin with "solid". Errors name the
+// file and the line (ASCII) or the facet (binary).
+#include <istream>
+#include <string>
+
+#include "framework/mesh/mesh.h"
+
+namespace akvf {
+
+// The weld tolerance relative to the bounding-box diagonal.
+constexpr double kStlWeldTolerance = 4.0 / (1 << 23);
+
+TriMesh read_stl(std::istream& in, const std::string& file_name);
+
+}  // namespace akvf

@@ -1,0 +1,13 @@
+// libFuzzer target: the PLY reader (ASCII and binary), then disk validation (the path of `akvf param mesh.ply`).
+#include "framework/mesh/ply_reader.h"
+#include "tests/fuzz/fuzz_mesh_reader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return akvf::fuzz::fuzz_triangle_reader(
+      data, size,
+      [](std::istream& in, const std::string& name) {
+        Eigen::MatrixXd uv;
+        return akvf::read_ply(in, name, &uv);
+      },
+      "fuzz.ply");
+}

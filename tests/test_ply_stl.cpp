@@ -1,0 +1,230 @@
+// PLY (ASCII, binary little and big endian) and STL (ASCII, binary, welded)
+// readers: the same mesh from every encoding, the start map a PLY carries,
+// and one test per malformed input naming the file, the line or byte, and
+// the problem.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <iomanip>
+#include <sstream>
+
+#include "akvf/parameterize.h"
+#include "framework/mesh/ply_reader.h"
+#include "framework/mesh/stl_reader.h"
+#include "tests/test_support.h"
+
+using akvf::test::error_message;
+
+namespace {
+
+// Appends `value` as `bytes` bytes in the given byte order.
+template <class T>
+void put(std::string* out, T value, bool big_endian) {
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  if (big_endian) std::reverse(bytes, bytes + sizeof(T));
+  out->append(bytes, sizeof(T));
+}
+
+// The mesh as PLY: x y z (double, or float when `single`), u v if given,
+// faces as uchar-counted int lists, and an extra vertex property and element.
+std::string ply(const akvf::TriMesh& mesh, const std::string& format, const Eigen::MatrixXd& uv = {}) {
+  const bool binary = format != "ascii", big = format == "binary_big_endian";
+  std::ostringstream header;
+  header << "ply\nformat " << format << " 1.0\ncomment made by test_ply_stl\nelement vertex " << mesh.num_vertices()
+         << "\nproperty double x\nproperty double y\nproperty double z\nproperty uchar red\n";
+  if (uv.rows() > 0) header << "property float s\nproperty float t\n";
+  header << "element face " << mesh.num_faces() << "\nproperty list uchar int vertex_indices\n"
+         << "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n";
+  std::string out = header.str();
+  std::ostringstream text;
+  text << std::setprecision(17);
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    if (binary) {
+      for (int k = 0; k < 3; ++k) put<double>(&out, mesh.V(v, k), big);
+      put<std::uint8_t>(&out, 200, big);
+      if (uv.rows() > 0)
+        for (int k = 0; k < 2; ++k) put<float>(&out, static_cast<float>(uv(v, k)), big);
+    } else {
+      text << mesh.V(v, 0) << ' ' << mesh.V(v, 1) << ' ' << mesh.V(v, 2) << " 200";
+      if (uv.rows() > 0) text << ' ' << static_cast<float>(uv(v, 0)) << ' ' << static_cast<float>(uv(v, 1));
+      text << '\n';
+    }
+  }
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    if (binary) {
+      put<std::uint8_t>(&out, 3, big);
+      for (int k = 0; k < 3; ++k) put<std::int32_t>(&out, mesh.F(f, k), big);
+    } else {
+      text << "3 " << mesh.F(f, 0) << ' ' << mesh.F(f, 1) << ' ' << mesh.F(f, 2) << '\n';
+    }
+  }
+  if (binary) {
+    put<std::int32_t>(&out, 0, big);
+    put<std::int32_t>(&out, 1, big);
+  } else {
+    text << "0 1\n";
+  }
+  return out + text.str();
+}
+
+std::string stl(const akvf::TriMesh& mesh, bool binary) {
+  std::string out;
+  std::ostringstream text;
+  text << std::setprecision(17) << "solid test\n";
+  if (binary) {
+    out.assign(80, ' ');
+    out.replace(0, 5, "solid");  // many binary files begin so too
+    put<std::uint32_t>(&out, static_cast<std::uint32_t>(mesh.num_faces()), false);
+  }
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    if (binary) {
+      for (int k = 0; k < 3; ++k) put<float>(&out, 0.0f, false);
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) put<float>(&out, static_cast<float>(mesh.V(mesh.F(f, c), k)), false);
+      put<std::uint16_t>(&out, 0, false);
+    } else {
+      text << "  facet normal 0 0 1\n    outer loop\n";
+      for (int c = 0; c < 3; ++c)
+        text << "      vertex " << mesh.V(mesh.F(f, c), 0) << ' ' << mesh.V(mesh.F(f, c), 1) << ' '
+             << mesh.V(mesh.F(f, c), 2) << '\n';
+      text << "    endloop\n  endfacet\n";
+    }
+  }
+  text << "endsolid test\n";
+  return binary ? out : text.str();
+}
+
+akvf::TriMesh read_ply_text(const std::string& data, Eigen::MatrixXd* uv = nullptr) {
+  std::istringstream in(data);
+  return akvf::read_ply(in, "m.ply", uv);
+}
+akvf::TriMesh read_stl_text(const std::string& data) {
+  std::istringstream in(data);
+  return akvf::read_stl(in, "m.stl");
+}
+std::string ply_error(const std::string& data) {
+  return error_message([&] { read_ply_text(data); });
+}
+std::string stl_error(const std::string& data) {
+  return error_message([&] { read_stl_text(data); });
+}
+
+}  // namespace
+
+TEST_CASE("PLY: ASCII, binary little and big endian give the same mesh; extra properties and elements are skipped") {
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(6, 5);
+  for (const char* format : {"ascii", "binary_little_endian", "binary_big_endian"}) {
+    CAPTURE(format);
+    const akvf::TriMesh read = read_ply_text(ply(mesh, format));
+    CHECK(read.V == mesh.V);
+    CHECK(read.F == mesh.F);
+    CHECK(read.index_base == 0);
+  }
+}
+
+TEST_CASE("PLY: s,t (or u,v, texture_u,texture_v) are read as the start map") {
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(6, 5);
+  const Eigen::MatrixXd uv = mesh.V.leftCols(2) * 0.5;
+  for (const char* format : {"ascii", "binary_big_endian"}) {
+    Eigen::MatrixXd read_uv;
+    read_ply_text(ply(mesh, format, uv), &read_uv);
+    REQUIRE(read_uv.rows() == mesh.num_vertices());
+    CHECK((read_uv - uv).cwiseAbs().maxCoeff() < 1e-7);  // stored as float
+  }
+  Eigen::MatrixXd none;
+  read_ply_text(ply(mesh, "ascii"), &none);
+  CHECK(none.rows() == 0);
+}
+
+TEST_CASE("PLY: malformed headers and bodies name the line or byte and the problem") {
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(3, 3);
+  const std::string good = ply(mesh, "ascii"), binary = ply(mesh, "binary_little_endian");
+  CHECK(ply_error("plx\n") == "line 1 of m.ply: not a PLY file (the first line must be 'ply')");
+  CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 3\n") ==
+        "line 3 of m.ply: the header has no 'end_header' line");
+  CHECK(ply_error("ply\nformat utf8 1.0\nend_header\n") == "line 2 of m.ply: unknown PLY format 'utf8'");
+  CHECK(
+      ply_error("ply\nformat ascii 1.0\nelement vertex -4\nend_header\n").find("line 3 of m.ply: element count '-4'") ==
+      0);
+  CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n") ==
+        "line 4 of m.ply: unknown property type 'quad'");
+  CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+                  "end_header\n0 0 0\n") ==
+        "line 7 of m.ply: the header declares no 'face' element (a point cloud is "
+        "not a mesh)");
+  CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nelement face 1\n"
+                  "property list uchar int vertex_indices\nend_header\n") ==
+        "line 3 of m.ply: the vertex element has no 'z' property");
+  // A quad, an index out of range, a short row, a stray row (ASCII).
+  std::string quad = good;
+  quad.replace(quad.find("\n3 "), 3, "\n4 9 ");
+  CHECK(ply_error(quad).find("face 0 has 4 corners; only triangles are supported") != std::string::npos);
+  std::string out_of_range = good;
+  out_of_range.replace(out_of_range.find("\n3 ") + 3, 1, "99");
+  CHECK(ply_error(out_of_range).find("face 0: vertex index 99") != std::string::npos);
+  std::string huge_index = good;
+  huge_index.replace(huge_index.find("\n3 ") + 3, 1, "99999999999");
+  CHECK(ply_error(huge_index)
+            .find("'99999999999' is not an integer of the declared type (item 0 of property "
+                  "'vertex_indices' of face 0)") != std::string::npos);
+  CHECK(ply_error(good + "1 2\n").find("more rows than the header's element counts declare") != std::string::npos);
+  std::string short_row = good;
+  short_row.replace(short_row.find(" 200\n"), 5, "\n");
+  CHECK(ply_error(short_row).find("the line ends before property 'red' of vertex 0") != std::string::npos);
+  // Binary: truncated, or counts far larger than the file (refused before allocating).
+  CHECK(ply_error(binary.substr(0, binary.size() - 3)).find("m.ply: byte ") == 0);
+  CHECK(ply_error(binary.substr(0, binary.size() - 3)).find("(truncated?)") != std::string::npos);
+  std::string huge = binary;
+  huge.replace(huge.find("element face 8"), 14, "element face 2000000000");
+  CHECK(ply_error(huge).find("the header declares at least") != std::string::npos);
+  CHECK(ply_error(binary + "xx").find("2 bytes follow the last element") != std::string::npos);
+}
+
+TEST_CASE("STL: ASCII and binary are welded back into the indexed mesh") {
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(7, 6);
+  for (const bool binary : {false, true}) {
+    CAPTURE(binary);
+    const akvf::TriMesh read = read_stl_text(stl(mesh, binary));
+    REQUIRE(read.num_vertices() == mesh.num_vertices());
+    REQUIRE(read.num_faces() == mesh.num_faces());
+    // Vertices by first appearance: map them back through the faces.
+    for (int f = 0; f < mesh.num_faces(); ++f)
+      for (int c = 0; c < 3; ++c)
+        CHECK((read.V.row(read.F(f, c)) - mesh.V.row(mesh.F(f, c))).norm() <= (binary ? 1e-6 : 0.0));
+  }
+}
+
+TEST_CASE("STL: corners within the weld tolerance are one vertex, farther ones are not") {
+  const std::string two_facets_far =
+      "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+      "endloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 1 0 0\nvertex 1 1 0\n"
+      "vertex 0 1.000001 0\nendloop\nendfacet\nendsolid s\n";
+  CHECK(read_stl_text(two_facets_far).num_vertices() == 5);  // 1e-6 apart > 4.8e-7 x sqrt(2)
+  std::string near = two_facets_far;
+  near.replace(near.find("0 1.000001 0"), 12, "0 1.0000001 0");
+  CHECK(read_stl_text(near).num_vertices() == 4);  // 1e-7 apart: within the tolerance
+}
+
+TEST_CASE("STL: malformed files name the line or the problem") {
+  CHECK(stl_error("sold\n").find("m.stl: too short for an STL file") == 0);
+  CHECK(stl_error("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n") ==
+        "line 4 of m.stl: a vertex line needs three coordinates");
+  CHECK(stl_error("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nvertex 1 1 0\n")
+            .find("line 7 of m.stl: a facet with more than 3 vertices") == 0);
+  CHECK(stl_error("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n") ==
+        "line 4 of m.stl: the file ends where 'vertex' was expected");
+  CHECK(stl_error("solid s\nendsolid s\n") == "m.stl: the file has no facets");
+  CHECK(stl_error(std::string(100, 'x')).find("m.stl: neither ASCII STL") == 0);
+}
+
+TEST_CASE("a disk mesh from PLY or STL parameterizes as from OBJ") {
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(9, 8);
+  const double reference = akvf::parameterize(mesh.V, mesh.F).energy();
+  const akvf::TriMesh from_ply = read_ply_text(ply(mesh, "binary_little_endian"));
+  CHECK(akvf::parameterize(from_ply.V, from_ply.F).energy() == reference);
+  const akvf::TriMesh from_stl = read_stl_text(stl(mesh, false));
+  CHECK(akvf::parameterize(from_stl.V, from_stl.F).energy() == doctest::Approx(reference).epsilon(1e-9));
+}
