@@ -141,9 +141,10 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
     f.push_back(text_field<O>("solver", "solver", "NAME",
                               "descent (Algorithm 1 with --precond) or lbfgs (L-BFGS through Ceres)", &O::solver,
                               [](const O& o) { require_solver(o.solver); }));
-    f.push_back(text_field<O>("precond", "precond", "NAME",
-                              "akvf, newton, akvf-newton, laplacian, slim, identity (or lbfgs, an alias of --solver lbfgs)",
-                              &O::preconditioner, [](const O& o) { require_method(o.preconditioner); }));
+    f.push_back(
+        text_field<O>("precond", "precond", "NAME",
+                      "akvf, newton, akvf-newton, laplacian, slim, identity (or lbfgs, an alias of --solver lbfgs)",
+                      &O::preconditioner, [](const O& o) { require_method(o.preconditioner); }));
     add_common_fields(&f);
     f.push_back(number_field<O>("akvf_reuse", "akvf-reuse", "TAU",
                                 "AKVF: reuse the last factorization through CG to relative residual TAU "
@@ -151,8 +152,15 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                 &O::akvf_reuse, "in [0, 1)", [](double t) { return t >= 0 && t < 1; }));
     f.push_back(number_field<O>("ls_rho", "ls-rho", "X", "backtracking shrink factor (the paper's text says 0.9)",
                                 &O::ls_rho, "in (0, 1)", [](double r) { return r > 0 && r < 1; }));
-    f.push_back(text_field<O>("init", "init", "NAME", "initial map: tutte (uniform weights) or cotan", &O::init,
-                              [](const O& o) { parse_tutte_weights(o.init); }));
+    f.push_back(text_field<O>("init", "init", "NAME",
+                              "initial map: tutte (uniform weights), cotan, or file (the mesh file's texture "
+                              "coordinates: OBJ vt, PLY u,v)",
+                              &O::init, [](const O& o) {
+                                if (o.init != "file" && o.init != "tutte" && o.init != "uniform" && o.init != "cotan" &&
+                                    o.init != "cotangent")
+                                  throw OptionsError("unknown initialization '" + o.init +
+                                                     "' (valid: tutte, cotan, file)");
+                              }));
     OptionField<O> flaps =
         switch_field<O>("flaps", "flaps", "on|off", "flap optimization of Sec. 5.4 after the Tutte map", &O::flaps);
     flaps.kind = OptionKind::kText;  // --flaps on|off on the command line
@@ -173,8 +181,9 @@ const std::vector<OptionField<DeformOptions>>& deform_option_fields() {
     std::vector<OptionField<O>> f;
     f.push_back(text_field<O>("energy", "energy", "NAME", "3D distortion energy (see `akvf list`)", &O::energy,
                               [](const O& o) { energies_3d().require(o.energy); }));
-    f.push_back(text_field<O>("precond", "precond", "NAME", "akvf (K + 1e-4 I), newton, akvf-newton, laplacian, slim, identity",
-                              &O::preconditioner, [](const O& o) { preconditioners_3d().require(o.preconditioner); }));
+    f.push_back(text_field<O>("precond", "precond", "NAME",
+                              "akvf (K + 1e-4 I), newton, akvf-newton, laplacian, slim, identity", &O::preconditioner,
+                              [](const O& o) { preconditioners_3d().require(o.preconditioner); }));
     add_common_fields(&f);
     f.push_back(number_field<O>("weight", "weight", "W", "soft constraint weight w (at rest volume 1)", &O::weight,
                                 "> 0", [](double w) { return w > 0; }));

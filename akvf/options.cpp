@@ -15,7 +15,8 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.acceleration = o.acceleration;
   c.preconditioner_settings.akvf.factor.reuse_tolerance = o.akvf_reuse;
   c.line_search_settings.rho = o.ls_rho;
-  c.init = parse_tutte_weights(o.init);
+  c.init_from_file = o.init == "file";
+  if (!c.init_from_file) c.init = parse_tutte_weights(o.init);
   c.optimize_flaps = o.flaps;
   c.optimizer.gradient_tolerance = o.grad_tol;
   c.optimizer.max_iterations = o.max_iters;

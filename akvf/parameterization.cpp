@@ -49,12 +49,21 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   TriMesh normalized = setup.disk.mesh;
   setup.normalization = normalize_to_unit_area(&normalized);
 
-  Eigen::MatrixXd UV = tutte_embedding(normalized, setup.disk.boundary_loop, config.init, &setup.warnings);
-  if (config.optimize_flaps) setup.flaps_moved = optimize_flaps(normalized, &UV);
-  setup.x0 = stack_uv(UV);
   setup.objective = std::make_shared<DistortionObjective2D>(normalized.F, rest_triangles(normalized), density,
                                                             normalized.num_vertices());
   setup.objective->set_file_numbering(setup.disk.input_vertex, input.index_base);
+  if (config.init_from_file) {
+    if (config.start_uv.rows() == 0)
+      throw OptionsError(
+          "init 'file' starts from the texture coordinates of the mesh file (akvf param --init file with an OBJ "
+          "that has vt or a PLY with u,v); through the API pass the start map instead (Parameterizer::solve(uv0), "
+          "Python uv0=)");
+    setup.x0 = start_from_map(setup, config.start_uv, name + ": the texture coordinates", true, &setup.warnings);
+  } else {
+    Eigen::MatrixXd UV = tutte_embedding(normalized, setup.disk.boundary_loop, config.init, &setup.warnings);
+    if (config.optimize_flaps) setup.flaps_moved = optimize_flaps(normalized, &UV);
+    setup.x0 = stack_uv(UV);
+  }
   if (!usable_start(*setup.objective, setup.x0) && config.energy != kWarmStartEnergy) warm_start(config, &setup);
   return setup;
 }
@@ -117,6 +126,32 @@ Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(setup.disk.num_input_vertices, 2);
   for (int v = 0; v < UV.rows(); ++v) out.row(setup.disk.input_vertex[v]) = scale * UV.row(v);
   return out;
+}
+
+Eigen::VectorXd start_from_map(const ParamSetup& setup, const Eigen::MatrixXd& uv, const std::string& what,
+                               bool allow_mirror, Warnings* warnings) {
+  if (uv.rows() != setup.disk.num_input_vertices || uv.cols() != 2)
+    throw OptionsError(what + " must be #V by 2 (" + std::to_string(setup.disk.num_input_vertices) + " by 2), found " +
+                       std::to_string(uv.rows()) + " by " + std::to_string(uv.cols()));
+  // The optimizer works on the mesh scaled to area 1: the map is scaled
+  // alike (its vertices in the compacted numbering).
+  const double scale = setup.unit_scale * setup.normalization.scale;
+  Eigen::MatrixXd compact(setup.disk.mesh.num_vertices(), 2);
+  for (int v = 0; v < compact.rows(); ++v) compact.row(v) = scale * uv.row(setup.disk.input_vertex[v]);
+  if (!compact.allFinite()) throw ValidationError(what + " has a coordinate that is not finite");
+  Eigen::VectorXd x0 = stack_uv(compact);
+  const int inverted = setup.objective->count_inverted(x0);
+  if (allow_mirror && inverted == setup.disk.mesh.num_faces()) {
+    compact.col(0) *= -1;
+    x0 = stack_uv(compact);
+    if (warnings)
+      warnings->push_back(what + " invert every triangle (the other orientation convention): mirrored (u -> -u)");
+    return x0;
+  }
+  if (inverted > 0)
+    throw ValidationError(what + (allow_mirror ? " invert a triangle: " : " inverts a triangle: ") +
+                          setup.objective->first_bad_element(x0));
+  return x0;
 }
 
 namespace {

@@ -23,6 +23,10 @@ struct ParamConfig {
   LineSearchSettings line_search_settings;
   PreconditionerSettings2D preconditioner_settings;
   TutteWeights init = TutteWeights::kUniform;
+  // init "file": start from `start_uv` (#V of the input by 2, any scale and
+  // placement; a file's texture coordinates) instead of Tutte and flaps.
+  bool init_from_file = false;
+  Eigen::MatrixXd start_uv;
   // §5.4 flap optimization after the Tutte map (see docs/performance.md for
   // the measurement behind the default).
   bool optimize_flaps = true;
@@ -69,5 +73,15 @@ ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config
 // The UV map in the input's numbering (#input V by 2), scaled so that the
 // UV area equals the input mesh's 3D area. Unreferenced vertices get (0, 0).
 Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x);
+
+// A start map of the input's vertices (#V by 2, any scale and placement) as
+// the optimizer's x (compacted, area-1 units). OptionsError for another
+// shape; ValidationError for a coordinate that is not finite or an inverted
+// triangle, named with `what` ("the start map inverts a triangle: triangle
+// 12 ..."). With `allow_mirror`, a map that inverts every triangle (a
+// mirror image, as tools with the other orientation convention write) is
+// mirrored back, with a warning.
+Eigen::VectorXd start_from_map(const ParamSetup& setup, const Eigen::MatrixXd& uv, const std::string& what,
+                               bool allow_mirror, Warnings* warnings);
 
 }  // namespace akvf

@@ -53,21 +53,9 @@ Parameterizer& Parameterizer::operator=(Parameterizer&&) noexcept = default;
 ParameterizeResult Parameterizer::solve() { return state_->run(state_->setup); }
 
 ParameterizeResult Parameterizer::solve(const Eigen::MatrixXd& uv0) {
-  const ParamSetup& setup = state_->setup;
-  if (uv0.rows() != setup.disk.num_input_vertices || uv0.cols() != 2)
-    throw OptionsError("the start map must be #V by 2 (" + std::to_string(setup.disk.num_input_vertices) +
-                       " by 2), found " + std::to_string(uv0.rows()) + " by " + std::to_string(uv0.cols()));
-  ParamSetup from = setup;
+  ParamSetup from = state_->setup;
   from.warm_start = {};
-  // The optimizer works on the mesh scaled to area 1: the start map is
-  // scaled alike (its vertices in the compacted numbering).
-  const double scale = setup.unit_scale * setup.normalization.scale;
-  Eigen::MatrixXd compact(setup.disk.mesh.num_vertices(), 2);
-  for (int v = 0; v < compact.rows(); ++v) compact.row(v) = scale * uv0.row(setup.disk.input_vertex[v]);
-  if (!compact.allFinite()) throw ValidationError("the start map has a coordinate that is not finite");
-  from.x0 = stack_uv(compact);
-  if (setup.objective->count_inverted(from.x0) > 0)
-    throw ValidationError("the start map inverts a triangle: " + setup.objective->first_bad_element(from.x0));
+  from.x0 = start_from_map(state_->setup, uv0, "the start map", false, nullptr);
   return state_->run(from);
 }
 

@@ -34,7 +34,8 @@ struct ParameterizeOptions {
   std::string acceleration = "auto";           // AQP momentum: auto (laplacian only), on, off
   double akvf_reuse = 0.03;                    // AKVF: reuse the last factor through CG to this residual; 0 = never
   double ls_rho = 0.5;                         // backtracking shrink factor in (0, 1)
-  std::string init = "tutte";                  // initial map: tutte (uniform weights) or cotan
+  std::string init = "tutte";                  // initial map: tutte (uniform weights), cotan; "file" is the
+                                               // command line's (the API takes Parameterizer::solve(uv0))
   bool flaps = true;                           // flap optimization of §5.4 after the Tutte map
   double grad_tol = 1e-3;                      // converged when ||grad E|| < grad_tol (area-1 units)
   int max_iters = 1000;                        // >= 0

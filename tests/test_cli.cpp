@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <vector>
 
@@ -254,5 +255,60 @@ TEST_CASE("--summary writes the run's options, outcome and machine as JSON, for 
   CHECK(clash.code == akvf::kExitUsageError);
   CHECK(clash.err.find("--summary") != std::string::npos);
   CHECK(!fs::exists(dir / "t.csv"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("--init file starts from the mesh file's texture coordinates, or says why it cannot") {
+  const fs::path dir = scratch_dir("init_file");
+  const akvf::TriMesh bar = akvf::bent_bar(21, 5);
+  akvf::test::write_obj(dir / "bar.obj", bar);
+  const fs::path uv = dir / "uv.obj";
+  REQUIRE(akvf_run({"param", (dir / "bar.obj").string(), "--out", uv.string(), "-q"}).code == akvf::kExitOk);
+  // From its own result: converged at once.
+  const Outcome again = akvf_run({"param", uv.string(), "--init", "file", "-q"});
+  CHECK(again.code == akvf::kExitOk);
+  CHECK(again.out.find("status converged after 0 iterations") != std::string::npos);
+  // Without texture coordinates.
+  const Outcome none = akvf_run({"param", (dir / "bar.obj").string(), "--init", "file", "-q"});
+  CHECK(none.code == akvf::kExitInputError);
+  CHECK(none.err.find("has no texture coordinates (OBJ vt, PLY u,v)") != std::string::npos);
+  // Mirrored (every triangle inverted): mirrored back, with a warning.
+  std::string text = read_text(uv), mirrored;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("vt ", 0) == 0) {
+      std::istringstream v(line.substr(3));
+      double a, b;
+      v >> a >> b;
+      std::ostringstream m;
+      m << std::setprecision(17) << "vt " << -a << ' ' << b;
+      line = m.str();
+    }
+    mirrored += line + "\n";
+  }
+  write_text(dir / "mirrored.obj", mirrored);
+  const Outcome mirror = akvf_run({"param", (dir / "mirrored.obj").string(), "--init", "file", "-q"});
+  CHECK(mirror.code == akvf::kExitOk);
+  CHECK(mirror.err.find("invert every triangle (the other orientation convention): mirrored") != std::string::npos);
+  // An interior vertex (row 1, column 1 of the grid) moved far away: the
+  // first inverted triangle is named.
+  std::string folded = text;
+  std::size_t vt = folded.find("\nvt ") + 1;
+  for (int k = 0; k < 22; ++k) vt = folded.find("\nvt ", vt) + 1;
+  folded.replace(vt, folded.find('\n', vt) - vt, "vt 100 100");
+  write_text(dir / "folded.obj", folded);
+  const Outcome fold = akvf_run({"param", (dir / "folded.obj").string(), "--init", "file", "-q"});
+  CHECK(fold.code == akvf::kExitInputError);
+  CHECK(fold.err.find("the texture coordinates invert a triangle: triangle") != std::string::npos);
+  // A seam: vertex 1 with two different UVs.
+  std::string seam = text;
+  seam.insert(seam.find("\nf ") + 1, "vt 5 5\n");
+  const std::size_t face = seam.find("\nf 1/1 ");
+  REQUIRE(face != std::string::npos);
+  seam.replace(face, 7, "\nf 1/" + std::to_string(bar.num_vertices() + 1) + " ");
+  write_text(dir / "seam.obj", seam);
+  const Outcome seamed = akvf_run({"param", (dir / "seam.obj").string(), "--init", "file", "-q"});
+  CHECK(seamed.code == akvf::kExitInputError);
+  CHECK(seamed.err.find("vertex 1 has two different UVs") != std::string::npos);
   fs::remove_all(dir);
 }

@@ -56,9 +56,12 @@ Json param_summary(const std::string& mesh_file, const ParameterizeOptions& opti
   return summary;
 }
 
+//   start_uv  the file's texture coordinates per vertex for --init file, or empty
 int run_and_write(const TriMesh& input, const std::string& name, const ParameterizeOptions& options,
-                  const Outputs& outputs, bool quiet, std::ostream& out, std::ostream& err) {
-  const ParamConfig config = param_config(options);
+                  const Eigen::MatrixXd& start_uv, const Outputs& outputs, bool quiet, std::ostream& out,
+                  std::ostream& err) {
+  ParamConfig config = param_config(options);
+  config.start_uv = start_uv;
   const ParamSetup setup = prepare_parameterization(input, name, config);
   for (const auto& warning : setup.warnings) err << "warning: " << warning << '\n';
   const TriMesh& mesh = setup.disk.mesh;
@@ -117,9 +120,11 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   const ThreadLimit threads(options.threads);
   reset_peak_memory();
   Warnings warnings;
-  const TriMesh input = read_triangle_mesh(path, &warnings);
+  MeshTexture texture;
+  const TriMesh input = read_triangle_mesh(path, &warnings, &texture);
   for (const auto& warning : warnings) err << "warning: " << warning << '\n';
-  return run_and_write(input, path, options, outputs, cl.has("quiet"), out, err);
+  const Eigen::MatrixXd start_uv = options.init == "file" ? per_vertex_uv(input, texture, path) : Eigen::MatrixXd();
+  return run_and_write(input, path, options, start_uv, outputs, cl.has("quiet"), out, err);
 }
 
 int demo_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -144,7 +149,7 @@ int demo_command(const std::vector<std::string>& args, std::ostream& out, std::o
                         (dir / "demo_layout.svg").string(), ""};
   check_file_arguments({}, {{"the UV OBJ", outputs.obj}, {"the trace", outputs.trace}, {"the layout", outputs.svg}});
   const ThreadLimit threads(options.threads);
-  const int code = run_and_write(bent_bar(), "bent-bar", options, outputs, cl.has("quiet"), out, err);
+  const int code = run_and_write(bent_bar(), "bent-bar", options, {}, outputs, cl.has("quiet"), out, err);
   out << "wrote " << (dir / "demo_uv.obj").string() << ", " << (dir / "demo_trace.csv").string() << ", "
       << (dir / "demo_layout.svg").string() << '\n';
   return code;

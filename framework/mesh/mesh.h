@@ -20,6 +20,15 @@ struct TriMesh {
   int num_faces() const { return static_cast<int>(F.rows()); }
 };
 
+// The texture coordinates a triangle mesh file carries (OBJ `vt` per
+// corner, PLY per-vertex u,v): rows of `uv`, and for every face corner the
+// row it uses (-1 where a corner has none). Empty when the file has none.
+struct MeshTexture {
+  Eigen::MatrixXd uv;      // #T by 2
+  Eigen::MatrixXi corner;  // #F by 3 rows of uv, or 0 rows
+  bool empty() const { return corner.rows() == 0; }
+};
+
 // A tetrahedral mesh in R^3.
 //   V  #V by 3 vertex positions
 //   T  #T by 4 vertex indices (0-based), positively oriented after validation:

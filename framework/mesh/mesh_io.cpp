@@ -15,10 +15,41 @@
 
 namespace akvf {
 
-TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings) {
+TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings, MeshTexture* texture) {
   const RawElements raw = read_obj_elements(in, file_name, 3, "face",
                                             "only triangles are supported (triangulate the mesh first)", warnings);
+  if (texture && !raw.texture.empty()) {
+    texture->uv = rows_to_matrix<double, 2>(raw.texture);
+    texture->corner = rows_to_matrix<int, 3>(raw.corner_texture);
+  }
   return {rows_to_matrix<double, 3>(raw.coords), rows_to_matrix<int, 3>(raw.corners), 1};
+}
+
+Eigen::MatrixXd per_vertex_uv(const TriMesh& mesh, const MeshTexture& texture, const std::string& file_name) {
+  if (texture.empty())
+    throw InputError(file_name, 0, "has no texture coordinates (OBJ vt, PLY u,v) to start from (--init file)");
+  Eigen::MatrixXd uv(mesh.num_vertices(), 2);
+  std::vector<int> row_of(mesh.num_vertices(), -1);
+  const int b = mesh.index_base;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int v = mesh.F(f, c), t = texture.corner(f, c);
+      if (t < 0)
+        throw InputError(file_name, 0,
+                         "face " + std::to_string(f + b) + " has a corner without texture coordinates (--init file)");
+      if (row_of[v] < 0) {
+        row_of[v] = t;
+        uv.row(v) = texture.uv.row(t);
+      } else if (row_of[v] != t && texture.uv.row(row_of[v]) != texture.uv.row(t)) {
+        throw InputError(file_name, 0,
+                         "vertex " + std::to_string(v + b) + " has two different UVs (rows " +
+                             std::to_string(row_of[v] + b) + " and " + std::to_string(t + b) +
+                             "): a seam; --init file needs one UV per vertex of the disk");
+      }
+    }
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (row_of[v] < 0) uv.row(v).setZero();  // in no face: dropped by validation
+  return uv;
 }
 
 TriMesh read_off(std::istream& in, const std::string& file_name) {
@@ -72,14 +103,19 @@ TriMesh read_off(std::istream& in, const std::string& file_name) {
   return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 3>(corners), 0};
 }
 
-TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings) {
+TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings, MeshTexture* texture) {
   const std::string ext = lowercase_extension(path);
   if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
     throw InputError(path, 0, "unsupported mesh format '" + ext + "' (expected .obj, .off, .ply or .stl)");
   std::ifstream in = open_mesh_file(path);
-  if (ext == ".ply") return read_ply(in, path);
+  if (ext == ".ply") {
+    Eigen::MatrixXd uv;
+    TriMesh mesh = read_ply(in, path, &uv);
+    if (texture && uv.rows() > 0) *texture = {uv, mesh.F};  // per vertex: a corner's row is its vertex
+    return mesh;
+  }
   if (ext == ".stl") return read_stl(in, path);
-  return ext == ".obj" ? read_obj(in, path, warnings) : read_off(in, path);
+  return ext == ".obj" ? read_obj(in, path, warnings, texture) : read_off(in, path);
 }
 
 void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV) {

@@ -13,7 +13,9 @@ namespace akvf {
 // the other statements OBJ allows are ignored, unknown ones with a warning
 // (mesh_text.h); faces with more or fewer than three corners are rejected.
 // A leading UTF-8 byte-order mark is skipped by every reader.
-TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings = nullptr);
+// `texture` (if given) receives the `vt` rows and each corner's row.
+TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings = nullptr,
+                 MeshTexture* texture = nullptr);
 
 // OFF: header `OFF` (or COFF/NOFF), counts `#V #F [#E]`, vertex rows, then
 // face rows `3 i j k` (0-based). Counts that disagree with the file, in
@@ -22,7 +24,14 @@ TriMesh read_off(std::istream& in, const std::string& file_name);
 
 // Dispatches on the extension (.obj, .off, .ply or .stl, case-insensitive;
 // ply_reader.h, stl_reader.h).
-TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings = nullptr);
+// `texture` (if given) receives the file's texture coordinates (OBJ vt,
+// PLY u,v), or stays empty.
+TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings = nullptr, MeshTexture* texture = nullptr);
+
+// One UV per vertex from a file's texture (#V by 2, for --init file).
+// InputError naming the vertex when one has two different UVs (a seam),
+// or the face corner that has none.
+Eigen::MatrixXd per_vertex_uv(const TriMesh& mesh, const MeshTexture& texture, const std::string& file_name);
 
 // Writes the mesh with one `vt` per vertex and faces `f a/a b/b c/c`, so the
 // vertex and face numbering of the input is kept.

@@ -32,13 +32,26 @@ long long obj_corner_index(const TextReader& reader, std::string_view token, lon
   return index - 1;
 }
 
+// The `vt` index of a corner `a/b` or `a/b/c` (0-based), or -1 for `a` and
+// `a//c`, and for an index that names no `vt` read so far (the geometry is
+// still read; only --init file needs the texture, and it names the face).
+int obj_texture_index(std::string_view token, long long textures_so_far) {
+  const std::size_t slash = token.find('/');
+  if (slash == std::string_view::npos) return -1;
+  std::string_view rest = token.substr(slash + 1);
+  rest = rest.substr(0, rest.find('/'));
+  long long index = 0;
+  if (rest.empty() || !parse_integer(rest, &index) || index == 0) return -1;
+  const long long resolved = index < 0 ? textures_so_far + index : index - 1;
+  return resolved >= 0 && resolved < textures_so_far ? static_cast<int>(resolved) : -1;
+}
+
 }  // namespace
 
 RawElements read_obj_elements(std::istream& in, const std::string& file_name, int corners, const std::string& element,
                               const std::string& advice, Warnings* warnings) {
   // Statements of the OBJ format that carry nothing a distortion energy uses.
-  static const std::set<std::string, std::less<>> kIgnored = {"vt", "vn",     "vp",     "g", "o",
-                                                              "s",  "usemtl", "mtllib", "l", "p"};
+  static const std::set<std::string, std::less<>> kIgnored = {"vn", "vp", "g", "o", "s", "usemtl", "mtllib", "l", "p"};
   TextReader reader(in, file_name);
   RawElements raw;
   std::vector<long> element_lines;
@@ -53,6 +66,11 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
                     " numbers; expected x y z, x y z w, or x y z r g b (extra tokens after the coordinates)");
       for (std::size_t i = 1; i <= 3; ++i) raw.coords.push_back(reader.real(i, "vertex coordinate"));
       for (std::size_t i = 4; i < t.size(); ++i) reader.real(i, t.size() == 5 ? "vertex weight w" : "vertex colour");
+    } else if (t[0] == "vt") {
+      // u [v [w]]; only u and v are used (a start map, akvf param --init file).
+      if (t.size() < 2 || t.size() > 4) reader.fail("vt needs u, v (and an optional w)");
+      raw.texture.push_back(reader.real(1, "texture coordinate"));
+      raw.texture.push_back(t.size() > 2 ? reader.real(2, "texture coordinate") : 0.0);
     } else if (t[0] == "f") {
       if (static_cast<int>(t.size()) != corners + 1)
         reader.fail(element + " has " + std::to_string(t.size() - 1) + " corners; " + advice);
@@ -62,6 +80,7 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
         if (index > std::numeric_limits<int>::max())
           reader.fail(element + " index " + std::to_string(index + 1) + " is too large");
         raw.corners.push_back(static_cast<int>(index));
+        raw.corner_texture.push_back(obj_texture_index(t[i], static_cast<long long>(raw.texture.size() / 2)));
       }
       element_lines.push_back(reader.line_number());
     } else if (!kIgnored.count(t[0])) {

@@ -16,8 +16,10 @@ constexpr long long kMaxReserve = 1 << 20;
 
 // Vertex coordinates and element corner indices as read, row by row.
 struct RawElements {
-  std::vector<double> coords;  // 3 per vertex
-  std::vector<int> corners;    // `corners` per element, 0-based
+  std::vector<double> coords;       // 3 per vertex
+  std::vector<int> corners;         // `corners` per element, 0-based
+  std::vector<double> texture;      // `vt` u v, 2 per row
+  std::vector<int> corner_texture;  // per corner the `vt` row (0-based), -1 for none
 };
 
 // The OBJ `v` / `f` records with exactly `corners` indices per `f`
