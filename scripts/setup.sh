@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libtbb-dev doctest-dev
-  libbenchmark-dev libceres-dev libopenblas-dev nlohmann-json3-dev
+  libbenchmark-dev libceres-dev libopenblas-dev nlohmann-json3-dev libpng-dev
   pybind11-dev python3-dev python3-pybind11 python3-numpy python3-pytest  # the Python module (python/)
   clang libclang-rt-14-dev  # scripts/sanitize.sh: ASan, UBSan and libFuzzer
 )

@@ -15,9 +15,11 @@
 #include "experiments/cli/schema_options.h"
 #include "experiments/report/run_summary.h"
 #include "experiments/report/trace_csv.h"
+#include "experiments/report/uv_png.h"
 #include "experiments/report/uv_svg.h"
 #include "framework/mesh/mesh_io.h"
 #include "framework/mesh/mesh_text.h"
+#include "framework/mesh/text_reader.h"
 #include "framework/process/error.h"
 
 namespace akvf {
@@ -25,7 +27,8 @@ namespace akvf {
 namespace {
 
 struct Outputs {
-  std::string obj, trace, svg, summary;
+  std::string obj, trace, svg, summary, png;
+  int png_size = 1024;
 };
 
 std::vector<OptionSpec> optimization_options() {
@@ -84,6 +87,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
     write_layout_svg(outputs.svg, setup, result.x,
                      name + " - " + run.preconditioner_name + ", " + std::to_string(last.iteration) +
                          " iterations, E = " + std::to_string(last.energy));
+  if (!outputs.png.empty()) write_layout_png(outputs.png, setup, result.x, outputs.png_size);
   if (!outputs.summary.empty()) write_summary(outputs.summary, param_summary(name, options, setup, result));
   return exit_code_of(result);
 }
@@ -95,6 +99,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
       {"out", "UV.obj", "write the input mesh with one `vt` per vertex"},
       {"trace", "TRACE.csv", "write one CSV row per iteration (row 0 = initial map)"},
       {"svg", "LAYOUT.svg", "write the UV layout shaded by distortion"},
+      {"png", "LAYOUT.png", "write the UV layout shaded by distortion as a PNG image (any mesh size)"},
+      {"png-size", "N", "the PNG's longer side in pixels, 16 to 16384 (default 1024)"},
       {"summary", "RUN.json",
        "write the run's summary: options, status, iterations, energy, memory (docs/experiments.md)"},
   };
@@ -112,11 +118,22 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   if (cl.positional().size() != 1) throw OptionsError("expected exactly one mesh file (see --help)");
   const ParameterizeOptions options = options_from(cl);
   const std::string& path = cl.positional()[0];
-  const Outputs outputs{cl.text("out", ""), cl.text("trace", ""), cl.text("svg", ""), cl.text("summary", "")};
+  Outputs outputs{cl.text("out", ""), cl.text("trace", ""), cl.text("svg", ""), cl.text("summary", ""),
+                  cl.text("png", "")};
+  if (cl.has("png-size")) {
+    long long size = 0;
+    if (!parse_integer(cl.text("png-size", ""), &size) || size < 16 || size > 16384)
+      throw OptionsError("option --png-size must be an integer from 16 to 16384, found '" + cl.text("png-size", "") +
+                         "'");
+    outputs.png_size = static_cast<int>(size);
+  }
+  require_extension("--png", outputs.png, {".png"});
   require_extension("--out", outputs.obj, {".obj"});
-  check_file_arguments(
-      {{"the input mesh", path}},
-      {{"--out", outputs.obj}, {"--trace", outputs.trace}, {"--svg", outputs.svg}, {"--summary", outputs.summary}});
+  check_file_arguments({{"the input mesh", path}}, {{"--out", outputs.obj},
+                                                    {"--trace", outputs.trace},
+                                                    {"--svg", outputs.svg},
+                                                    {"--summary", outputs.summary},
+                                                    {"--png", outputs.png}});
   const ThreadLimit threads(options.threads);
   reset_peak_memory();
   Warnings warnings;
@@ -146,7 +163,7 @@ int demo_command(const std::vector<std::string>& args, std::ostream& out, std::o
   const std::filesystem::path dir = cl.text("out-dir", "akvf-demo");
   create_output_folder(dir.string());
   const Outputs outputs{(dir / "demo_uv.obj").string(), (dir / "demo_trace.csv").string(),
-                        (dir / "demo_layout.svg").string(), ""};
+                        (dir / "demo_layout.svg").string(), "", ""};
   check_file_arguments({}, {{"the UV OBJ", outputs.obj}, {"the trace", outputs.trace}, {"the layout", outputs.svg}});
   const ThreadLimit threads(options.threads);
   const int code = run_and_write(bent_bar(), "bent-bar", options, {}, outputs, cl.has("quiet"), out, err);

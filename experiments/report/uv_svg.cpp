@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "experiments/report/distortion_color.h"
 #include "experiments/report/text_utilities.h"
 #include "framework/process/output_file.h"
 
@@ -11,15 +12,10 @@ namespace akvf {
 
 namespace {
 
-// White (0) through orange to dark red (>= 10), on log10(1 + d).
 std::string color_for(double excess) {
-  const double t =
-      std::isfinite(excess) ? std::clamp(std::log10(1 + std::max(excess, 0.0)) / std::log10(11.0), 0.0, 1.0) : 1.0;
-  const int r = static_cast<int>(255 - 115 * t * t);
-  const int g = static_cast<int>(255 * (1 - t));
-  const int b = static_cast<int>(255 * (1 - t) * (1 - t));
+  const auto rgb = distortion_color(excess);
   char buffer[8];
-  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", r, g, b);
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
   return buffer;
 }
 

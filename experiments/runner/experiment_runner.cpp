@@ -18,6 +18,7 @@
 #include "experiments/report/run_summary.h"
 #include "experiments/report/text_utilities.h"
 #include "experiments/report/trace_csv.h"
+#include "experiments/report/uv_png.h"
 #include "experiments/report/uv_svg.h"
 #include "framework/mesh/constraints_io.h"
 #include "framework/mesh/mesh_io.h"
@@ -57,20 +58,29 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
   const ParamConfig config = param_config(s.param);
   const ParamSetup setup =
       prepare_parameterization(subdivide_midpoint(read_triangle_mesh(mesh_path), mesh.subdivide), mesh_path, config);
+  // SVG layouts hold about 60 bytes per triangle: above kSvgFaceLimit they
+  // pass 6 MB and browsers crawl, so the layouts are PNG images instead.
+  const bool png = setup.disk.mesh.num_faces() > kSvgFaceLimit;
+  const auto snapshot = [&](const std::string& name, const Eigen::VectorXd& x, const std::string& title) {
+    if (png)
+      write_layout_png(join_path(case_dir, name + ".png"), setup, x, 2048);
+    else
+      write_layout_svg(join_path(case_dir, name + ".svg"), setup, x, title);
+  };
   std::vector<IterationCallback> callbacks;
   callbacks.push_back([&](const IterationSummary& row, const Eigen::VectorXd& x) {
     for (int k : s.snapshots)
       if (row.iteration == k)
-        write_layout_svg(join_path(case_dir, "iter-" + std::to_string(k) + ".svg"), setup, x,
-                         c.mesh_label + " - " + c.method_label + ", iteration " + std::to_string(k));
+        snapshot("iter-" + std::to_string(k), x,
+                 c.mesh_label + " - " + c.method_label + ", iteration " + std::to_string(k));
     return CallbackAction::kContinue;
   });
   CaseResult out;
   out.result = run_parameterization(setup, config, callbacks).result;
   if (!s.snapshots.empty())  // also the layout where the run stopped (it may stop before a snapshot)
-    write_layout_svg(join_path(case_dir, "final.svg"), setup, out.result.x,
-                     c.mesh_label + " - " + c.method_label + ", final (iteration " +
-                         std::to_string(out.result.trace.back().iteration) + ")");
+    snapshot("final", out.result.x,
+             c.mesh_label + " - " + c.method_label + ", final (iteration " +
+                 std::to_string(out.result.trace.back().iteration) + ")");
   out.lower_bound = setup.objective->lower_bound();
   out.vertices = setup.disk.mesh.num_vertices();
   out.elements = setup.disk.mesh.num_faces();

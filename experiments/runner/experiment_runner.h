@@ -16,6 +16,9 @@
 
 namespace akvf {
 
+// Above this many faces the layout snapshots are PNG (2048 pixels), not SVG.
+inline constexpr int kSvgFaceLimit = 100000;
+
 struct RunnerOptions {
   std::string data_dir;  // the meshes
   std::string out_dir;
