@@ -146,12 +146,20 @@ Eigen::VectorXd start_from_map(const ParamSetup& setup, const Eigen::MatrixXd& u
     x0 = stack_uv(compact);
     if (warnings)
       warnings->push_back(what + " invert every triangle (the other orientation convention): mirrored (u -> -u)");
-    return x0;
-  }
-  if (inverted > 0)
+  } else if (inverted > 0) {
     throw ValidationError(what + (allow_mirror ? " invert a triangle: " : " inverts a triangle: ") +
                           setup.objective->first_bad_element(x0));
-  return x0;
+  }
+  // Scaled to the mesh's area (1 here), as every map the optimizer returns
+  // is: a texture's unit square or any other scale starts alike.
+  const Eigen::MatrixXi& F = setup.objective->elements();
+  double area = 0;
+  for (int f = 0; f < F.rows(); ++f) {
+    const Eigen::RowVector2d e1 = compact.row(F(f, 1)) - compact.row(F(f, 0));
+    const Eigen::RowVector2d e2 = compact.row(F(f, 2)) - compact.row(F(f, 0));
+    area += 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
+  }
+  return x0 / std::sqrt(area);
 }
 
 namespace {

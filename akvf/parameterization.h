@@ -75,7 +75,7 @@ ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config
 Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x);
 
 // A start map of the input's vertices (#V by 2, any scale and placement) as
-// the optimizer's x (compacted, area-1 units). OptionsError for another
+// the optimizer's x (compacted, scaled to the mesh's area, area-1 units). OptionsError for another
 // shape; ValidationError for a coordinate that is not finite or an inverted
 // triangle, named with `what` ("the start map inverts a triangle: triangle
 // 12 ..."). With `allow_mirror`, a map that inverts every triangle (a

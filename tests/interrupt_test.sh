@@ -31,5 +31,5 @@ grep -q '^status interrupted' "$dir/stdout" || { echo "no status line"; cat "$di
 vertices=$(grep -c '^v ' "$dir/uv.obj")
 uvs=$(grep -c '^vt ' "$dir/uv.obj")
 [ "$vertices" -eq 3600 ] && [ "$uvs" -eq 3600 ] || { echo "incomplete UV OBJ: $vertices v, $uvs vt"; exit 1; }
-ls "$dir" | grep -qv -e grid.obj -e uv.obj -e trace.csv -e stdout -e stderr && { echo "temporary files left: $(ls "$dir")"; exit 1; }
+ls "$dir" | grep -qv -e grid.obj -e uv.obj -e uv.mtl -e uv_checker.png -e trace.csv -e stdout -e stderr && { echo "temporary files left: $(ls "$dir")"; exit 1; }
 echo "interrupted cleanly after $(($(wc -l < "$dir/trace.csv") - 2)) iterations"

@@ -48,7 +48,7 @@ TEST_CASE("the API gives the command line's bits for the same mesh and options")
   const akvf::TriMesh mesh = akvf::test::bumpy_disk(10, 9);
   akvf::test::write_obj(dir / "m.obj", mesh);
   std::ostringstream out, err;
-  REQUIRE(akvf::run_akvf({"param", (dir / "m.obj").string(), "-q", "--precond", "newton", "--out",
+  REQUIRE(akvf::run_akvf({"param", (dir / "m.obj").string(), "-q", "--precond", "newton", "--texture", "none", "--out",
                           (dir / "uv.obj").string(), "--trace", (dir / "t.csv").string()},
                          out, err) == 0);
   akvf::ParameterizeOptions options;

@@ -199,7 +199,7 @@ TEST_CASE(
     const std::string tag = std::string("t") + threads + "_" + std::to_string(uv.size());
     const Outcome r = akvf_run({"param", (dir / "grid.obj").string(), "--threads", threads, "--max-iters", "12",
                                 "--out", (dir / (tag + ".obj")).string(), "--svg", (dir / (tag + ".svg")).string(),
-                                "--trace", (dir / (tag + ".csv")).string(), "--quiet"});
+                                "--trace", (dir / (tag + ".csv")).string(), "--texture", "none", "--quiet"});
     REQUIRE(r.code == akvf::kExitOk);
     uv.push_back(read_text(dir / (tag + ".obj")));
     svg.push_back(read_text(dir / (tag + ".svg")));
@@ -310,5 +310,42 @@ TEST_CASE("--init file starts from the mesh file's texture coordinates, or says 
   const Outcome seamed = akvf_run({"param", (dir / "seam.obj").string(), "--init", "file", "-q"});
   CHECK(seamed.code == akvf::kExitInputError);
   CHECK(seamed.err.find("vertex 1 has two different UVs") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("--out writes UV.mtl and a checkerboard beside the OBJ, vt in the unit square; --texture none does not") {
+  const fs::path dir = scratch_dir("texture");
+  akvf::test::write_obj(dir / "bar.obj", akvf::bent_bar(21, 5));
+  REQUIRE(akvf_run({"param", (dir / "bar.obj").string(), "--out", (dir / "uv.obj").string(), "-q"}).code ==
+          akvf::kExitOk);
+  const std::string obj = read_text(dir / "uv.obj");
+  CHECK(obj.find("\nmtllib uv.mtl\n") != std::string::npos);
+  CHECK(obj.find("\nusemtl checker\n") != std::string::npos);
+  CHECK(read_text(dir / "uv.mtl").find("map_Kd uv_checker.png") != std::string::npos);
+  CHECK(read_text(dir / "uv_checker.png").rfind("\x89PNG", 0) == 0);
+  double lo = 1e300, hi = -1e300;
+  std::istringstream lines(obj);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("vt ", 0) == 0) {
+      std::istringstream v(line.substr(3));
+      double a, b;
+      v >> a >> b;
+      lo = std::min({lo, a, b});
+      hi = std::max({hi, a, b});
+    }
+  CHECK(lo == doctest::Approx(0.0));
+  CHECK(hi == doctest::Approx(1.0));  // the longer side spans the texture
+  // --texture none: vt at the input's scale, no MTL.
+  REQUIRE(akvf_run({"param", (dir / "bar.obj").string(), "--out", (dir / "plain.obj").string(), "--texture", "none",
+                    "-q"})
+              .code == akvf::kExitOk);
+  CHECK(read_text(dir / "plain.obj").find("mtllib") == std::string::npos);
+  CHECK(!fs::exists(dir / "plain.mtl"));
+  // The files beside the OBJ are outputs too: one that is the input is refused.
+  akvf::test::write_obj(dir / "clash_checker.png", akvf::bent_bar(21, 5));
+  const Outcome clash = akvf_run({"param", (dir / "clash_checker.png").string(), "--out", (dir / "clash.obj").string(),
+                                  "-q"});
+  CHECK(clash.code == akvf::kExitUsageError);
+  CHECK(clash.err.find("the checkerboard of --out") != std::string::npos);
   fs::remove_all(dir);
 }

@@ -13,6 +13,7 @@
 #include "experiments/cli/file_arguments.h"
 #include "experiments/cli/run_reporting.h"
 #include "experiments/cli/schema_options.h"
+#include "experiments/report/checker_texture.h"
 #include "experiments/report/run_summary.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/report/uv_png.h"
@@ -21,6 +22,7 @@
 #include "framework/mesh/mesh_text.h"
 #include "framework/mesh/text_reader.h"
 #include "framework/process/error.h"
+#include "framework/process/output_file.h"
 
 namespace akvf {
 
@@ -28,6 +30,7 @@ namespace {
 
 struct Outputs {
   std::string obj, trace, svg, summary, png;
+  bool texture = false;  // --texture checker: UV.mtl and the checkerboard beside the OBJ
   int png_size = 1024;
 };
 
@@ -81,7 +84,15 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   if (!is_normal_termination(result.status)) err << "error: " << result.message << '\n';
 
   const Eigen::MatrixXd UV = output_uv(setup, result.x);
-  if (!outputs.obj.empty()) write_obj_with_uv(outputs.obj, input, UV);
+  if (!outputs.obj.empty()) {
+    if (outputs.texture) {
+      const TextureFiles files = texture_files_for(outputs.obj);
+      write_checker_texture(files);
+      write_obj_with_uv(outputs.obj, input, unit_square_uv(UV), files.mtl_name);
+    } else {
+      write_obj_with_uv(outputs.obj, input, UV);
+    }
+  }
   if (!outputs.trace.empty()) write_trace_csv(outputs.trace, result);
   if (!outputs.svg.empty())
     write_layout_svg(outputs.svg, setup, result.x,
@@ -96,7 +107,10 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
 
 int param_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::vector<OptionSpec> specs = {
-      {"out", "UV.obj", "write the input mesh with one `vt` per vertex"},
+      {"out", "UV.obj", "write the input mesh with one `vt` per vertex (and UV.mtl, UV_checker.png: --texture)"},
+      {"texture", "checker|none",
+       "with --out: checker writes UV.mtl and a checkerboard UV_checker.png beside it, vt scaled into the unit "
+       "square; none writes vt at the input's scale (default checker)"},
       {"trace", "TRACE.csv", "write one CSV row per iteration (row 0 = initial map)"},
       {"svg", "LAYOUT.svg", "write the UV layout shaded by distortion"},
       {"png", "LAYOUT.png", "write the UV layout shaded by distortion as a PNG image (any mesh size)"},
@@ -128,12 +142,23 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
     outputs.png_size = static_cast<int>(size);
   }
   require_extension("--png", outputs.png, {".png"});
+  const std::string texture_mode = cl.text("texture", "checker");
+  if (texture_mode != "checker" && texture_mode != "none")
+    throw OptionsError("option --texture must be checker or none, found '" + texture_mode + "'");
+  // Not beside a device or FIFO (--out /dev/null writes no /dev/null.mtl).
+  outputs.texture = texture_mode == "checker" && !outputs.obj.empty() && !is_special_output(outputs.obj);
   require_extension("--out", outputs.obj, {".obj"});
-  check_file_arguments({{"the input mesh", path}}, {{"--out", outputs.obj},
-                                                    {"--trace", outputs.trace},
-                                                    {"--svg", outputs.svg},
-                                                    {"--summary", outputs.summary},
-                                                    {"--png", outputs.png}});
+  std::vector<FileArgument> written = {{"--out", outputs.obj},
+                                       {"--trace", outputs.trace},
+                                       {"--svg", outputs.svg},
+                                       {"--summary", outputs.summary},
+                                       {"--png", outputs.png}};
+  if (outputs.texture) {  // the files written beside the OBJ are outputs too
+    const TextureFiles files = texture_files_for(outputs.obj);
+    written.push_back({"the MTL of --out", files.mtl});
+    written.push_back({"the checkerboard of --out", files.png});
+  }
+  check_file_arguments({{"the input mesh", path}}, written);
   const ThreadLimit threads(options.threads);
   reset_peak_memory();
   Warnings warnings;

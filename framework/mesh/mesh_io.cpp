@@ -118,16 +118,19 @@ TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings, MeshText
   return ext == ".obj" ? read_obj(in, path, warnings, texture) : read_off(in, path);
 }
 
-void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV) {
+void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
+                       const std::string& material_library) {
   if (UV.rows() != mesh.V.rows() || UV.cols() != 2)
     throw OutputError("UV matrix is " + std::to_string(UV.rows()) + "x" + std::to_string(UV.cols()) + ", expected " +
                       std::to_string(mesh.V.rows()) + "x2");
   write_file_atomically(path, [&](std::ostream& out) {
     out << std::setprecision(17);
     out << "# " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces, written by akvf\n";
+    if (!material_library.empty()) out << "mtllib " << material_library << '\n';
     for (int i = 0; i < mesh.num_vertices(); ++i)
       out << "v " << mesh.V(i, 0) << ' ' << mesh.V(i, 1) << ' ' << mesh.V(i, 2) << '\n';
     for (int i = 0; i < mesh.num_vertices(); ++i) out << "vt " << UV(i, 0) << ' ' << UV(i, 1) << '\n';
+    if (!material_library.empty()) out << "usemtl checker\n";
     for (int f = 0; f < mesh.num_faces(); ++f) {
       out << 'f';
       for (int k = 0; k < 3; ++k) out << ' ' << mesh.F(f, k) + 1 << '/' << mesh.F(f, k) + 1;

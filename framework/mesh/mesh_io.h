@@ -36,6 +36,9 @@ Eigen::MatrixXd per_vertex_uv(const TriMesh& mesh, const MeshTexture& texture, c
 // Writes the mesh with one `vt` per vertex and faces `f a/a b/b c/c`, so the
 // vertex and face numbering of the input is kept.
 //   UV  #V by 2
-void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV);
+//   material_library  "" or an MTL file name (beside the OBJ) whose material
+//                     "checker" the faces use: `mtllib` and `usemtl` lines
+void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
+                       const std::string& material_library = "");
 
 }  // namespace akvf

@@ -62,14 +62,15 @@ def test_bitwise_the_command_line(disk, program, tmp_path, args, keywords):
     mesh, out = tmp_path / "disk.obj", tmp_path / "uv.obj"
     akvf.write_obj(mesh, V, F, np.zeros((len(V), 2)))
     V_read, F_read = akvf.read_mesh(mesh)
-    subprocess.run([program, "param", str(mesh), "--out", str(out), "-q"] + args, check=True)
+    subprocess.run([program, "param", str(mesh), "--out", str(out), "--texture", "none", "-q"] + args, check=True)
     r = akvf.parameterize(V_read, F_read, **keywords)
     assert np.array_equal(r.uv, read_vt(out))
 
 
 def test_shared_mesh_bitwise_the_command_line(meshes, program, tmp_path):
     out = tmp_path / "uv.obj"
-    subprocess.run([program, "param", str(meshes / "tri" / "camelhead.off"), "--out", str(out), "-q"], check=True)
+    subprocess.run([program, "param", str(meshes / "tri" / "camelhead.off"), "--out", str(out), "--texture", "none",
+                    "-q"], check=True)
     V, F = akvf.read_mesh(meshes / "tri" / "camelhead.off")
     assert np.array_equal(akvf.parameterize(V, F).uv, read_vt(out))
 
