@@ -7,12 +7,15 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
 #include "akvf/parameterize.h"
 #include "framework/mesh/ply_reader.h"
 #include "framework/mesh/stl_reader.h"
+#include "tests/cli_support.h"
 #include "tests/test_support.h"
 
 using akvf::test::error_message;
@@ -227,4 +230,18 @@ TEST_CASE("a disk mesh from PLY or STL parameterizes as from OBJ") {
   CHECK(akvf::parameterize(from_ply.V, from_ply.F).energy() == reference);
   const akvf::TriMesh from_stl = read_stl_text(stl(mesh, false));
   CHECK(akvf::parameterize(from_stl.V, from_stl.F).energy() == doctest::Approx(reference).epsilon(1e-9));
+}
+
+TEST_CASE("PLY output: binary with per-vertex s, t reads back to the same bits") {
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(6, 5);
+  const Eigen::MatrixXd uv = mesh.V.leftCols(2) * 0.37 + Eigen::MatrixXd::Constant(mesh.num_vertices(), 2, 1.0 / 3);
+  const std::filesystem::path path = akvf::test::scratch_dir("ply_out") / "uv.ply";
+  akvf::write_ply_with_uv(path.string(), mesh, uv);
+  std::ifstream in(path, std::ios::binary);
+  Eigen::MatrixXd read_uv;
+  const akvf::TriMesh read = akvf::read_ply(in, path.string(), &read_uv);
+  CHECK(read.V == mesh.V);
+  CHECK(read.F == mesh.F);
+  CHECK(read_uv == uv);
+  std::filesystem::remove_all(path.parent_path());
 }

@@ -20,6 +20,7 @@
 #include "experiments/report/uv_svg.h"
 #include "framework/mesh/mesh_io.h"
 #include "framework/mesh/mesh_text.h"
+#include "framework/mesh/ply_reader.h"
 #include "framework/mesh/text_reader.h"
 #include "framework/process/error.h"
 #include "framework/process/output_file.h"
@@ -84,7 +85,9 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   if (!is_normal_termination(result.status)) err << "error: " << result.message << '\n';
 
   const Eigen::MatrixXd UV = output_uv(setup, result.x);
-  if (!outputs.obj.empty()) {
+  if (!outputs.obj.empty() && lowercase_extension(outputs.obj) == ".ply") {
+    write_ply_with_uv(outputs.obj, input, UV);
+  } else if (!outputs.obj.empty()) {
     if (outputs.texture) {
       const TextureFiles files = texture_files_for(outputs.obj);
       write_checker_texture(files);
@@ -107,7 +110,9 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
 
 int param_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::vector<OptionSpec> specs = {
-      {"out", "UV.obj", "write the input mesh with one `vt` per vertex (and UV.mtl, UV_checker.png: --texture)"},
+      {"out", "UV.{obj,ply}",
+       "write the input mesh with one `vt` per vertex (and UV.mtl, UV_checker.png: --texture), or a binary PLY with "
+       "per-vertex s, t"},
       {"texture", "checker|none",
        "with --out: checker writes UV.mtl and a checkerboard UV_checker.png beside it, vt scaled into the unit "
        "square; none writes vt at the input's scale (default checker)"},
@@ -146,8 +151,9 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   if (texture_mode != "checker" && texture_mode != "none")
     throw OptionsError("option --texture must be checker or none, found '" + texture_mode + "'");
   // Not beside a device or FIFO (--out /dev/null writes no /dev/null.mtl).
-  outputs.texture = texture_mode == "checker" && !outputs.obj.empty() && !is_special_output(outputs.obj);
-  require_extension("--out", outputs.obj, {".obj"});
+  outputs.texture =
+      texture_mode == "checker" && lowercase_extension(outputs.obj) == ".obj" && !is_special_output(outputs.obj);
+  require_extension("--out", outputs.obj, {".obj", ".ply"});
   std::vector<FileArgument> written = {{"--out", outputs.obj},
                                        {"--trace", outputs.trace},
                                        {"--svg", outputs.svg},

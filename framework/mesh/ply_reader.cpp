@@ -1,6 +1,7 @@
 #include "framework/mesh/ply_reader.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <iterator>
@@ -11,6 +12,7 @@
 #include "framework/mesh/mesh_text.h"
 #include "framework/mesh/text_reader.h"
 #include "framework/process/error.h"
+#include "framework/process/output_file.h"
 
 namespace akvf {
 
@@ -365,6 +367,33 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
   body.finish();
   if (uv) *uv = u >= 0 ? Eigen::MatrixXd(rows_to_matrix<double, 2>(texture)) : Eigen::MatrixXd(0, 2);
   return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 3>(triangle_corners), 0};
+}
+
+void write_ply_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV) {
+  if (UV.rows() != mesh.V.rows() || UV.cols() != 2)
+    throw OutputError("UV matrix is " + std::to_string(UV.rows()) + "x" + std::to_string(UV.cols()) + ", expected " +
+                      std::to_string(mesh.V.rows()) + "x2");
+  static_assert(sizeof(double) == 8 && sizeof(int) == 4, "PLY double and int");
+  const auto put = [](std::ostream& out, const auto& value) {
+    char bytes[sizeof(value)];
+    std::memcpy(bytes, &value, sizeof(value));
+    if constexpr (std::endian::native == std::endian::big) std::reverse(bytes, bytes + sizeof(value));
+    out.write(bytes, sizeof(value));
+  };
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "ply\nformat binary_little_endian 1.0\ncomment written by akvf: s, t are the parameterization\n"
+        << "element vertex " << mesh.num_vertices()
+        << "\nproperty double x\nproperty double y\nproperty double z\nproperty double s\nproperty double t\n"
+        << "element face " << mesh.num_faces() << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+      for (int k = 0; k < 3; ++k) put(out, mesh.V(v, k));
+      for (int k = 0; k < 2; ++k) put(out, UV(v, k));
+    }
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+      put(out, static_cast<unsigned char>(3));
+      for (int k = 0; k < 3; ++k) put(out, static_cast<int>(mesh.F(f, k)));
+    }
+  });
 }
 
 }  // namespace akvf

@@ -22,4 +22,10 @@ namespace akvf {
 // file has none.
 TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd* uv = nullptr);
 
+// Binary little-endian PLY with double x, y, z and per-vertex double s, t
+// (the names Blender writes; MeshLab and read_ply read them), faces as
+// uchar-counted int lists. Written atomically.
+//   UV  #V by 2
+void write_ply_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV);
+
 }  // namespace akvf
