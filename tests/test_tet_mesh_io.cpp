@@ -96,7 +96,7 @@ TEST_CASE(".tet: header counts, then 0-based rows") {
 
 TEST_CASE("unknown tet formats and missing files are reported") {
   CHECK(error_message([] { akvf::read_tet_mesh("x.vtk"); }) ==
-        "x.vtk: unsupported tet mesh format '.vtk' (expected .mesh, .obj or .tet)");
+        "x.vtk: unsupported tet mesh format '.vtk' (expected .mesh, .msh, .obj or .tet)");
   CHECK(error_message([] { akvf::read_tet_mesh("/nonexistent/x.mesh"); }) ==
         "/nonexistent/x.mesh: cannot open: No such file or directory");
 }

@@ -32,7 +32,7 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   specs.push_back({"quiet", "", "no per-iteration progress on stderr (also -q)"});
   specs.push_back({"help", "", "show this help (also -h)"});
   CommandLine cl(
-      "akvf deform TETMESH.{mesh,obj,tet} (--constraints FILE | --preset slim-cube) [options]\n\n"
+      "akvf deform TETMESH.{mesh,msh,obj,tet} (--constraints FILE | --preset slim-cube) [options]\n\n"
       "Deforms a tet mesh by minimizing a distortion energy plus soft positional constraints\n"
       "w sum |x_i - p_i|^2 from the rest shape, with a flip-free preconditioned descent (Sec. 6.2).",
       specs);

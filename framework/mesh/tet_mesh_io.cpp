@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <limits>
 
+#include "framework/mesh/gmsh_reader.h"
 #include "framework/mesh/mesh_text.h"
 #include "framework/mesh/text_reader.h"
 #include "framework/process/error.h"
@@ -131,9 +132,10 @@ TetMesh read_tet_file(std::istream& in, const std::string& file_name) {
 
 TetMesh read_tet_mesh(const std::string& path, Warnings* warnings) {
   const std::string ext = lowercase_extension(path);
-  if (ext != ".mesh" && ext != ".obj" && ext != ".tet")
-    throw InputError(path, 0, "unsupported tet mesh format '" + ext + "' (expected .mesh, .obj or .tet)");
+  if (ext != ".mesh" && ext != ".obj" && ext != ".tet" && ext != ".msh")
+    throw InputError(path, 0, "unsupported tet mesh format '" + ext + "' (expected .mesh, .msh, .obj or .tet)");
   std::ifstream in = open_mesh_file(path);
+  if (ext == ".msh") return read_gmsh(in, path);
   if (ext == ".mesh") return read_medit(in, path);
   if (ext == ".obj") return read_tet_obj(in, path, warnings);
   return read_tet_file(in, path);

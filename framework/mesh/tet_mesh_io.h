@@ -19,7 +19,7 @@ TetMesh read_tet_obj(std::istream& in, const std::string& file_name, Warnings* w
 // `x y z` and M rows `a b c d` (0-based).
 TetMesh read_tet_file(std::istream& in, const std::string& file_name);
 
-// Dispatches on the extension: .mesh, .obj or .tet.
+// Dispatches on the extension: .mesh, .msh (gmsh_reader.h), .obj or .tet.
 TetMesh read_tet_mesh(const std::string& path, Warnings* warnings = nullptr);
 
 // MEDIT .mesh (1-based, reference 0) and VTK legacy ASCII unstructured grid.

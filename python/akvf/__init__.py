@@ -143,7 +143,7 @@ def deform(V, T, constraints, *, callback=None, **options):
 
 
 def read_mesh(path, kind=None):
-    """(V, F) of a triangle mesh (.obj, .off, .ply, .stl) or (V, T) of a tet mesh (.mesh, .tet).
+    """(V, F) of a triangle mesh (.obj, .off, .ply, .stl) or (V, T) of a tet mesh (.mesh, .msh, .tet).
 
     kind: "triangles" or "tets"; by default from the extension (.obj is read
     as triangles: pass kind="tets" for a tet OBJ). Errors name the file and line.
@@ -151,7 +151,7 @@ def read_mesh(path, kind=None):
     import os
     path = os.fspath(path)
     if kind is None:
-        kind = "tets" if path.lower().endswith((".mesh", ".tet")) else "triangles"
+        kind = "tets" if path.lower().endswith((".mesh", ".msh", ".tet")) else "triangles"
     V, elements, warnings = _akvf.read_mesh(path, kind)
     _warn(warnings)
     return V, elements
