@@ -24,14 +24,15 @@ def test_other_python_threads_run_during_an_optimization():
     ticker = threading.Thread(target=tick)
     ticker.start()
     started = time.perf_counter()
-    r = akvf.parameterize(V, F, precond="identity", max_iters=300, grad_tol=0)
+    r = akvf.parameterize(V, F, precond="identity", max_iters=2000, grad_tol=0)
     finished = time.perf_counter()
     done.set()
     ticker.join()
     during = [t for t in ticks if started < t < finished]
     assert r.iterations > 10
-    # With the GIL held the ticker could not run at all during the call.
-    assert len(during) > 0.2 * (finished - started) / 0.001
+    # With the GIL held the ticker could not run at all during the call; it
+    # ticks about once a millisecond otherwise (fewer on a loaded machine).
+    assert len(during) >= 20
 
 
 SCRIPT = textwrap.dedent("""
