@@ -86,10 +86,12 @@ wait
 [ -p pipe ] && grep -q '<svg' from_pipe || fail "plot --out FIFO"
 
 # 3. A character device is written in place (as root this is where /dev/null used to be replaced).
-for out in "--out /dev/null" "--trace /dev/null" "--svg /dev/null"; do
+for out in "--out /dev/null" "--trace /dev/null" "--svg /dev/null" "--png /dev/null" "--summary /dev/null"; do
   expect 0 "param $out" "$akvf" param m.obj -q $out
 done
+[ ! -e /dev/null.mtl ] && [ ! -e /dev/null_checker.png ] || fail "--out /dev/null wrote a texture into /dev"
 expect 0 "deform --out /dev/null" "$akvf" deform t.mesh --constraints c.txt -q --max-iters 2 --trace /dev/null
+expect 0 "deform --summary /dev/null" "$akvf" deform t.mesh --constraints c.txt -q --max-iters 2 --summary /dev/null
 expect 0 "plot --out /dev/null" "$akvf" plot trace.csv --out /dev/null
 [ -c /dev/null ] || fail "/dev/null is no longer a character device"
 
@@ -97,6 +99,8 @@ expect 0 "plot --out /dev/null" "$akvf" plot trace.csv --out /dev/null
 mkdir folder
 expect 4 "param --out FOLDER" "$akvf" param m.obj -q --out folder
 expect 4 "param --trace FOLDER" "$akvf" param m.obj -q --trace folder
+expect 4 "param --png IN-A-MISSING-FOLDER" "$akvf" param m.obj -q --png missing/x.png
+expect 4 "param --summary FOLDER" "$akvf" param m.obj -q --summary folder
 expect 4 "deform --out FOLDER" "$akvf" deform t.mesh --constraints c.txt -q --out folder
 expect 4 "plot --out FOLDER" "$akvf" plot trace.csv --out folder
 [ -z "$(ls -A folder)" ] || fail "something was written into folder"
@@ -137,6 +141,9 @@ cmp -s m.obj m.orig && cmp -s t.mesh t.orig && cmp -s c.txt c.orig && cmp -s tra
 
 # 7. Two outputs naming one file: exit 2, nothing written.
 expect 2 "param --out X --trace X --svg X" "$akvf" param m.obj -q --out x.obj --trace x.obj --svg x.obj
+expect 2 "param --png X --summary X" "$akvf" param m.obj -q --png x.png --summary x.png
+expect 2 "param --png = the texture of --out" "$akvf" param m.obj -q --out y.obj --png y_checker.png
+[ ! -e x.png ] && [ ! -e y.obj ] && [ ! -e y.mtl ] || fail "a clashing output was written"
 expect 2 "deform --out X --trace X" "$akvf" deform t.mesh --constraints c.txt -q --out x.mesh --trace x.mesh
 [ ! -e x.obj ] && [ ! -e x.mesh ] || fail "a clashing output was written"
 
