@@ -86,18 +86,15 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   }
   if (!trace_path.empty()) write_trace_csv(trace_path, run.result);
   if (!summary_path.empty()) {
-    Json summary;
-    summary["problem"] = "deform";
-    summary["mesh_file"] = path;
     Json settings;
     record_options(deform_option_fields(), options, &settings);
     settings["preset"] = preset;
     settings["constraints"] = cl.text("constraints", "");
-    summary["settings"] = settings;
-    summary.update(run_record(run.result, energies_3d().create(options.energy, {options.exponent})->lower_bound(),
-                              mesh.num_vertices(), mesh.num_tets()));
-    summary["machine"] = machine_record();
-    write_summary(summary_path, summary);
+    write_summary(summary_path,
+                  single_run_summary("deform", path, settings,
+                                     run_record(run.result,
+                                                energies_3d().create(options.energy, {options.exponent})->lower_bound(),
+                                                mesh.num_vertices(), mesh.num_tets())));
   }
   return exit_code_of(run.result);
 }

@@ -51,16 +51,11 @@ ParameterizeOptions options_from(const CommandLine& cl) {
 // The --summary record: the run's options, then its outcome and the machine.
 Json param_summary(const std::string& mesh_file, const ParameterizeOptions& options, const ParamSetup& setup,
                    const OptimizerResult& result) {
-  Json summary;
-  summary["problem"] = "param";
-  summary["mesh_file"] = mesh_file;
   Json settings;
   record_options(parameterize_option_fields(), options, &settings);
-  summary["settings"] = settings;
-  summary.update(
+  return single_run_summary(
+      "param", mesh_file, settings,
       run_record(result, setup.objective->lower_bound(), setup.disk.mesh.num_vertices(), setup.disk.mesh.num_faces()));
-  summary["machine"] = machine_record();
-  return summary;
 }
 
 //   start_uv  the file's texture coordinates per vertex for --init file, or empty

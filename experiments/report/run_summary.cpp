@@ -70,6 +70,17 @@ Json run_record(const OptimizerResult& result, double lower_bound, int vertices,
   return record;
 }
 
+Json single_run_summary(const std::string& problem, const std::string& mesh_file, const Json& settings,
+                        const Json& record) {
+  Json summary;
+  summary["problem"] = problem;
+  summary["mesh_file"] = mesh_file;
+  summary["settings"] = settings;
+  summary.update(record);
+  summary["machine"] = machine_record();
+  return summary;
+}
+
 void write_summary(const std::string& path, const Json& summary) {
   write_file_atomically(path, [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
 }

@@ -49,6 +49,11 @@ void record_options(const std::vector<OptionField<Options>>& fields, const Optio
   }
 }
 
+// The record of a single run (`--summary`): problem ("param" or "deform"),
+// mesh_file, settings, the fields of run_record, machine.
+Json single_run_summary(const std::string& problem, const std::string& mesh_file, const Json& settings,
+                        const Json& record);
+
 // Writes `summary` (indented) to `path` through a temporary file.
 void write_summary(const std::string& path, const Json& summary);
 

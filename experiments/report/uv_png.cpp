@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "experiments/report/distortion_color.h"
+#include "experiments/report/layout.h"
 #include "experiments/report/png_image.h"
 #include "framework/process/error.h"
 
@@ -69,12 +70,8 @@ void write_uv_png(const std::string& path, const Eigen::MatrixXd& UV, const Eige
 }
 
 void write_layout_png(const std::string& path, const ParamSetup& setup, const Eigen::VectorXd& x, int size) {
-  const Eigen::VectorXd excess = setup.objective->face_distortion(x).array() - setup.objective->density().lower_bound();
-  const Eigen::MatrixXd UV = output_uv(setup, x);
-  const TriMesh& mesh = setup.disk.mesh;
-  Eigen::MatrixXd compact_uv(mesh.num_vertices(), 2);
-  for (int v = 0; v < mesh.num_vertices(); ++v) compact_uv.row(v) = UV.row(setup.disk.input_vertex[v]);
-  write_uv_png(path, compact_uv, mesh.F, excess, size);
+  const Layout layout = layout_of(setup, x);
+  write_uv_png(path, layout.uv, layout.F, layout.excess, size);
 }
 
 }  // namespace akvf

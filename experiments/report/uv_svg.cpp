@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "experiments/report/distortion_color.h"
+#include "experiments/report/layout.h"
 #include "experiments/report/text_utilities.h"
 #include "framework/process/output_file.h"
 
@@ -50,12 +51,8 @@ void write_uv_svg(const std::string& path, const Eigen::MatrixXd& UV, const Eige
 
 void write_layout_svg(const std::string& path, const ParamSetup& setup, const Eigen::VectorXd& x,
                       const std::string& title) {
-  const Eigen::VectorXd excess = setup.objective->face_distortion(x).array() - setup.objective->density().lower_bound();
-  const Eigen::MatrixXd UV = output_uv(setup, x);
-  const TriMesh& mesh = setup.disk.mesh;
-  Eigen::MatrixXd compact_uv(mesh.num_vertices(), 2);
-  for (int v = 0; v < mesh.num_vertices(); ++v) compact_uv.row(v) = UV.row(setup.disk.input_vertex[v]);
-  write_uv_svg(path, compact_uv, mesh.F, excess, title);
+  const Layout layout = layout_of(setup, x);
+  write_uv_svg(path, layout.uv, layout.F, layout.excess, title);
 }
 
 }  // namespace akvf

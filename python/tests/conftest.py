@@ -49,12 +49,22 @@ def disk():
     return bumpy_disk()
 
 
+def built_file(variable, what):
+    """The path in environment variable `variable` (set by ctest), or skip the test."""
+    path = os.environ.get(variable)
+    if not path or not os.path.exists(path):
+        pytest.skip("%s (%s) is not set; ctest sets it" % (variable, what))
+    return path
+
+
 @pytest.fixture
 def program():
-    path = os.environ.get("AKVF_PROGRAM")
-    if not path or not os.path.exists(path):
-        pytest.skip("AKVF_PROGRAM (the akvf program) is not set; ctest sets it")
-    return path
+    return built_file("AKVF_PROGRAM", "the akvf program")
+
+
+@pytest.fixture
+def extension():
+    return built_file("AKVF_TEST_EXTENSION", "the test extension")
 
 
 @pytest.fixture

@@ -2,20 +2,10 @@
 against akvf's headers alone) loaded into the module, listed, and run by name
 with every preconditioner."""
 
-import os
-
 import pytest
 
 import akvf
 from conftest import bumpy_disk, signed_areas
-
-
-@pytest.fixture
-def extension():
-    path = os.environ.get("AKVF_TEST_EXTENSION")
-    if not path or not os.path.exists(path):
-        pytest.skip("AKVF_TEST_EXTENSION (the test extension) is not set; ctest sets it")
-    return path
 
 
 def test_a_user_energy_from_cpp_is_listed_and_runs_with_every_preconditioner(extension):
