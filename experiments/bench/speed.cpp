@@ -71,9 +71,8 @@ double unit_2d(const akvf::TriMesh& mesh) {
 
 double unit_3d(const akvf::TetMesh& mesh) {
   const akvf::ThreadLimit threads(0);
-  akvf::TetMesh unit = mesh;
-  akvf::ElementMatrix3D K(unit.T, unit.num_vertices());
-  akvf::assemble_killing_operator_3d(unit.T, akvf::stack_rows(unit.V), &K);
+  akvf::ElementMatrix3D K(mesh.T, mesh.num_vertices());
+  akvf::assemble_killing_operator_3d(mesh.T, akvf::stack_rows(mesh.V), &K);
   K.add_to_diagonal(1e-4);
   return factorization_seconds<3>(K);
 }
@@ -180,31 +179,30 @@ void run_3d(const std::filesystem::path& data, const std::vector<std::string>& m
     const double volume_scale = 1.0 / std::cbrt(akvf::rest_tets(mesh).total_volume);
     unit_mesh.V *= volume_scale;
     const double unit = unit_3d(unit_mesh);
-    std::vector<akvf::DeformResult> results;
-    std::vector<double> seconds_to;
-    double lowest = std::numeric_limits<double>::infinity();
-    for (const std::string& method : methods) {
+    const auto run = [&](const std::string& method) {
       akvf::DeformOptions options;
       options.preconditioner = method_name(method, options.preconditioner);
       options.max_iters = 200;
-      results.push_back(akvf::deform(mesh.V, mesh.T, constraints, options));
+      return akvf::deform(mesh.V, mesh.T, constraints, options);
+    };
+    // First runs of every method give the lowest energy any reaches.
+    std::vector<akvf::DeformResult> results;
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const std::string& method : methods) {
+      results.push_back(run(method));
       for (const auto& row : results.back().trace) lowest = std::min(lowest, row.energy);
     }
     std::vector<Row> rows;
     for (std::size_t m = 0; m < methods.size(); ++m) {
       Row row;
-      akvf::DeformOptions options;
-      row.method = methods[m] == "default" ? "default (" + options.preconditioner + ")" : methods[m];
+      row.method = methods[m] == "default" ? "default (" + akvf::DeformOptions{}.preconditioner + ")" : methods[m];
       row.status = "not reached";
+      row.iterations = results[m].iterations();
+      row.seconds = results[m].statistics.seconds;
+      row.energy = results[m].energy();
       std::vector<double> seconds;
       for (int i = 0; i < repeat; ++i) {
-        const akvf::DeformResult& r =
-            i == 0 ? results[m] : (results[m] = akvf::deform(mesh.V, mesh.T, constraints, [&] {
-                                     akvf::DeformOptions o;
-                                     o.preconditioner = method_name(methods[m], o.preconditioner);
-                                     o.max_iters = 200;
-                                     return o;
-                                   }()));
+        const akvf::DeformResult r = i == 0 ? results[m] : run(methods[m]);
         for (const auto& trace_row : r.trace)
           if (trace_row.energy - lowest <= 1e-4 * std::abs(lowest)) {
             seconds.push_back(trace_row.seconds);
@@ -214,13 +212,7 @@ void run_3d(const std::filesystem::path& data, const std::vector<std::string>& m
             break;
           }
       }
-      if (seconds.empty()) {
-        row.iterations = results[m].iterations();
-        row.seconds = results[m].statistics.seconds;
-        row.energy = results[m].energy();
-      } else {
-        row.seconds = median(seconds);
-      }
+      if (!seconds.empty()) row.seconds = median(seconds);
       rows.push_back(row);
     }
     print_rows(c.label, mesh.num_tets(), unit, rows);

@@ -91,10 +91,10 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
     settings["preset"] = preset;
     settings["constraints"] = cl.text("constraints", "");
     write_summary(summary_path,
-                  single_run_summary("deform", path, settings,
-                                     run_record(run.result,
-                                                energies_3d().create(options.energy, {options.exponent})->lower_bound(),
-                                                mesh.num_vertices(), mesh.num_tets())));
+                  single_run_summary(
+                      "deform", path, settings,
+                      run_record(run.result, energies_3d().create(options.energy, {options.exponent})->lower_bound(),
+                                 mesh.num_vertices(), mesh.num_tets())));
   }
   return exit_code_of(run.result);
 }
