@@ -169,6 +169,12 @@ def test_a_parameterizer_solves_again_with_the_same_bits(disk):
     assert solver.solve(callback=lambda row, uv: row["iter"] < 2).status == "user-stopped"
     assert solver.solve(uv0=first.uv).status == "converged"
     assert np.array_equal(solver.solve().uv, akvf.parameterize(V, F, precond="newton", energy="arap").uv)
+    # A solve that fails (an inverted start) leaves the solver as it was, callbacks included.
+    flipped = first.uv.copy()
+    flipped[:, 0] *= -1
+    with pytest.raises(akvf.ValidationError, match="inverts a triangle"):
+        solver.solve(uv0=flipped, callback=lambda row, uv: False)
+    assert solver.solve().status == "converged"
     with pytest.raises(akvf.OptionsError, match="unknown preconditioner"):
         solver.set_options(precond="nope")
     assert solver.options["precond"] == "newton"
