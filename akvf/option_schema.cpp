@@ -161,6 +161,13 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                   throw OptionsError("unknown initialization '" + o.init +
                                                      "' (valid: tutte, cotan, file)");
                               }));
+    f.push_back(text_field<O>("cut", "cut", "none|auto",
+                              "auto cuts a closed, multi-boundary, higher-genus or multi-component mesh into disks "
+                              "(one chart per component, side by side); none refuses such meshes (default none)",
+                              &O::cut, [](const O& o) {
+                                if (o.cut != "none" && o.cut != "auto")
+                                  throw OptionsError("unknown cut '" + o.cut + "' (valid: none, auto)");
+                              }));
     OptionField<O> flaps =
         switch_field<O>("flaps", "flaps", "on|off", "flap optimization of Sec. 5.4 after the Tutte map", &O::flaps);
     flaps.kind = OptionKind::kText;  // --flaps on|off on the command line

@@ -5,6 +5,7 @@
 
 #include "akvf/catalog.h"
 #include "akvf/threads.h"
+#include "framework/mesh/chart_layout.h"
 #include "framework/process/error.h"
 #include "solvers/lbfgs_solver.h"
 
@@ -44,7 +45,10 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   setup.unit_scale = power_of_two_unit_scale(input.V, name);
   TriMesh unit_input = input;
   unit_input.V *= setup.unit_scale;
-  setup.disk = prepare_disk_mesh(unit_input, name);
+  if (config.cut && config.init_from_file)
+    throw OptionsError("init 'file' and cut 'auto' cannot be combined: a file's texture coordinates bring their own "
+                       "seams; start from them without the cut, or cut and start from the Tutte map");
+  setup.disk = prepare_disk_mesh(unit_input, name, config.cut);
   setup.warnings = setup.disk.warnings;
   TriMesh normalized = setup.disk.mesh;
   setup.normalization = normalize_to_unit_area(&normalized);
@@ -60,7 +64,8 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
           "Python uv0=)");
     setup.x0 = start_from_map(setup, config.start_uv, name + ": the texture coordinates", true, &setup.warnings);
   } else {
-    Eigen::MatrixXd UV = tutte_embedding(normalized, setup.disk.boundary_loop, config.init, &setup.warnings);
+    Eigen::MatrixXd UV = tutte_embedding_charts(normalized, setup.disk.boundary_loops, setup.disk.face_chart,
+                                                config.init, &setup.warnings);
     if (config.optimize_flaps) setup.flaps_moved = optimize_flaps(normalized, &UV);
     setup.x0 = stack_uv(UV);
   }
@@ -114,7 +119,7 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
 
 }  // namespace
 
-Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
+Eigen::MatrixXd chart_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
   const Eigen::MatrixXd UV = unstack_uv(x);
   const Eigen::MatrixXi& F = setup.objective->elements();
   double uv_area = 0;
@@ -123,13 +128,29 @@ Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
     uv_area += 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
   }
   const double scale = std::sqrt(setup.normalization.input_area / uv_area) / setup.unit_scale;
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(setup.disk.num_input_vertices, 2);
-  for (int v = 0; v < UV.rows(); ++v) out.row(setup.disk.input_vertex[v]) = scale * UV.row(v);
+  Eigen::MatrixXd out = scale * UV;
+  pack_charts(F, setup.disk.face_chart, setup.disk.num_charts(), &out);
   return out;
+}
+
+Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
+  const Eigen::MatrixXd UV = chart_uv(setup, x);
+  if (setup.disk.cut) return UV;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(setup.disk.num_input_vertices, 2);
+  for (int v = 0; v < UV.rows(); ++v) out.row(setup.disk.input_vertex[v]) = UV.row(v);
+  return out;
+}
+
+Eigen::MatrixXi output_uv_faces(const ParamSetup& setup) {
+  const Eigen::MatrixXi& F = setup.disk.mesh.F;
+  if (setup.disk.cut) return F;
+  return F.unaryExpr([&](int v) { return setup.disk.input_vertex[v]; });
 }
 
 Eigen::VectorXd start_from_map(const ParamSetup& setup, const Eigen::MatrixXd& uv, const std::string& what,
                                bool allow_mirror, Warnings* warnings) {
+  if (setup.disk.cut)
+    throw OptionsError("a start map cannot be given with cut 'auto' (the cut mesh's seams are not the input's)");
   if (uv.rows() != setup.disk.num_input_vertices || uv.cols() != 2)
     throw OptionsError(what + " must be #V by 2 (" + std::to_string(setup.disk.num_input_vertices) + " by 2), found " +
                        std::to_string(uv.rows()) + " by " + std::to_string(uv.cols()));

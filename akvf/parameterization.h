@@ -23,6 +23,10 @@ struct ParamConfig {
   LineSearchSettings line_search_settings;
   PreconditionerSettings2D preconditioner_settings;
   TutteWeights init = TutteWeights::kUniform;
+  // Cut a closed, multi-boundary, higher-genus or multi-component mesh into
+  // disks (one chart per component, framework/mesh/cut_to_disk.h) instead of
+  // refusing it.
+  bool cut = false;
   // init "file": start from `start_uv` (#V of the input by 2, any scale and
   // placement; a file's texture coordinates) instead of Tutte and flaps.
   bool init_from_file = false;
@@ -70,9 +74,19 @@ struct ParamRun {
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks = {});
 
-// The UV map in the input's numbering (#input V by 2), scaled so that the
-// UV area equals the input mesh's 3D area. Unreferenced vertices get (0, 0).
+// The UV map of the optimized mesh's vertices (#setup.disk.mesh.V by 2),
+// scaled so that the UV area equals the input mesh's 3D area, several charts
+// packed side by side (framework/mesh/chart_layout.h).
+Eigen::MatrixXd chart_uv(const ParamSetup& setup, const Eigen::VectorXd& x);
+
+// The UV map as the output gives it: without a cut, in the input's numbering
+// (#input V by 2; unreferenced vertices get (0, 0)); with the cut, chart_uv
+// (one row per vertex of the cut mesh: a seam vertex has one per side).
 Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x);
+
+// The rows of output_uv each input face's corners use (#F by 3): the input's
+// F without a cut, the cut mesh's faces with it (libigl's FTC).
+Eigen::MatrixXi output_uv_faces(const ParamSetup& setup);
 
 // A start map of the input's vertices (#V by 2, any scale and placement) as
 // the optimizer's x (compacted, scaled to the mesh's area, area-1 units). OptionsError for another

@@ -31,6 +31,7 @@ struct Parameterizer::State {
     const ParamRun run = run_parameterization(from, config, options.callbacks);
     ParameterizeResult result;
     result.uv = output_uv(from, run.result.x);
+    result.uv_faces = output_uv_faces(from);
     fill_run_fields(run.result, run.preconditioner_statistics, run.preconditioner_report, from.warnings, &result);
     return result;
   }
@@ -61,7 +62,8 @@ ParameterizeResult Parameterizer::solve(const Eigen::MatrixXd& uv0) {
 
 void Parameterizer::set_options(const ParameterizeOptions& options) {
   const ParameterizeOptions& old = state_->options;
-  const bool new_start = options.init != old.init || options.flaps != old.flaps || options.energy != old.energy ||
+  const bool new_start = options.init != old.init || options.cut != old.cut || options.flaps != old.flaps ||
+                         options.energy != old.energy ||
                          options.exponent != old.exponent || options.warm_start_iters != old.warm_start_iters;
   const ParameterizeOptions previous = state_->options;
   state_->options = options;

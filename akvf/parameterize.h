@@ -36,6 +36,8 @@ struct ParameterizeOptions {
   double ls_rho = 0.5;                         // backtracking shrink factor in (0, 1)
   std::string init = "tutte";                  // initial map: tutte (uniform weights), cotan; "file" is the
                                                // command line's (the API takes Parameterizer::solve(uv0))
+  std::string cut = "none";                    // "auto": cut closed / multi-boundary / higher-genus /
+                                               // multi-component meshes into disk charts (uv_faces)
   bool flaps = true;                           // flap optimization of §5.4 after the Tutte map
   double grad_tol = 1e-3;                      // converged when ||grad E|| < grad_tol (area-1 units)
   int max_iters = 1000;                        // >= 0
@@ -63,7 +65,12 @@ struct RunStatistics {
 };
 
 struct ParameterizeResult {
-  Eigen::MatrixXd uv;  // #V by 2 at the input's scale; vertices in no face get (0, 0)
+  // At the input's scale: #V by 2 (vertices in no face get (0, 0)); with
+  // cut "auto", one row per vertex of the cut mesh (a seam vertex has one
+  // per side). uv_faces (#F by 3) says which row each face corner uses: F
+  // itself without the cut (libigl's TC and FTC).
+  Eigen::MatrixXd uv;
+  Eigen::MatrixXi uv_faces;
   TerminationStatus status = TerminationStatus::kMaxIterations;
   std::string message;                  // why it ended, e.g. "gradient norm below 0.001"
   std::vector<IterationSummary> trace;  // row 0 = the initial map (warm-start rows first, if any)

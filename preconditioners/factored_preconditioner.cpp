@@ -3,6 +3,7 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <cmath>
 
+#include "framework/mesh/mesh_topology.h"
 #include "framework/process/error.h"
 
 namespace akvf {
@@ -36,6 +37,14 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
       (options_.extra_diagonal.size() != static_cast<Eigen::Index>(D) * num_vertices ||
        !(options_.extra_diagonal.array() >= 0).all()))
     throw OptionsError("the extra diagonal of a preconditioner needs one value >= 0 per coordinate");
+  int components = 0;
+  const std::vector<int> component = vertex_components(elements, num_vertices, &components);
+  if (components > 1) {
+    auto vertices = std::make_shared<std::vector<std::vector<int>>>(components);
+    for (int v = 0; v < num_vertices; ++v)
+      if (component[v] >= 0) (*vertices)[component[v]].push_back(v);
+    component_vertices_ = std::move(vertices);
+  }
 }
 
 template <int D>
@@ -49,7 +58,9 @@ std::string FactoredPreconditioner<D>::report() const {
 
 template <int D>
 void FactoredPreconditioner<D>::update(const OptimizationState& state) {
-  null_basis_ = null_space(state.x);
+  null_basis_ = component_vertices_ ? ComponentMotions(D, component_vertices_, state.x,
+                                                        [this](const Eigen::VectorXd& part) { return null_space(part); })
+                                    : ComponentMotions(null_space(state.x));
   // P(x) plus the Tikhonov shift: relative to mean(diag P), plus the absolute c.
   const auto assemble_shifted = [&] {
     assemble(state, &matrix_);
@@ -107,7 +118,7 @@ void FactoredPreconditioner<D>::apply(const Eigen::VectorXd& gradient, Eigen::Ve
     factorize_current();
   }
   cholesky_.solve(gradient, result);
-  *result -= null_basis_ * (null_basis_.transpose() * *result);
+  null_basis_.project_out(result);
 }
 
 template <int D>
@@ -117,7 +128,7 @@ bool FactoredPreconditioner<D>::solve_with_previous_factor(const Eigen::VectorXd
   //   M^-1 = P_N P_N' (P' + eps I)^-1 P_N' P_N,
   // where P' is the factored (older) matrix, N' its null space and P_X the
   // orthogonal projector onto the complement of X.
-  const auto project = [](const Eigen::MatrixXd& basis, Eigen::VectorXd& v) { v -= basis * (basis.transpose() * v); };
+  const auto project = [](const ComponentMotions& motions, Eigen::VectorXd& v) { motions.project_out(&v); };
   const auto A = matrix_.upper().template selfadjointView<Eigen::Upper>();
   const auto precondition = [&](Eigen::VectorXd r, Eigen::VectorXd* z) {
     project(null_basis_, r);
@@ -170,9 +181,9 @@ void FactoredPreconditioner<D>::solve_by_conjugate_gradients(const Eigen::Vector
   cg.setMaxIterations(options_.cg_max_iterations);
   cg.compute(matrix_.upper());
   Eigen::VectorXd rhs = g;
-  rhs -= null_basis_ * (null_basis_.transpose() * rhs);
+  null_basis_.project_out(&rhs);
   *d = cg.solve(rhs);
-  *d -= null_basis_ * (null_basis_.transpose() * *d);
+  null_basis_.project_out(d);
   ++statistics_.cg_solves;
   statistics_.cg_iterations += static_cast<int>(cg.iterations());
 }

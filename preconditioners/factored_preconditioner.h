@@ -100,8 +100,11 @@ class FactoredPreconditioner : public Preconditioner {
   FactorOptions options_;
   Matrix matrix_;
   SparseCholesky cholesky_;
-  Eigen::MatrixXd null_basis_;           // at the current x
-  Eigen::MatrixXd factored_null_basis_;  // at the last factorization
+  // Vertices of each connected component, if there are several (the charts
+  // of a cut mesh): null_space() applies to each on its own.
+  std::shared_ptr<const std::vector<std::vector<int>>> component_vertices_;
+  ComponentMotions null_basis_;           // at the current x
+  ComponentMotions factored_null_basis_;  // at the last factorization
   bool factor_is_current_ = false;
   int skip_reuse_ = 0;
   int failure_backoff_ = 1;

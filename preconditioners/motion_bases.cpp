@@ -66,4 +66,33 @@ Eigen::MatrixXd rigid_motion_basis_3d(const Eigen::VectorXd& x) {
   return qr.householderQ() * Eigen::MatrixXd::Identity(x.size(), 6);
 }
 
+ComponentMotions::ComponentMotions(int dimension,
+                                   std::shared_ptr<const std::vector<std::vector<int>>> component_vertices,
+                                   const Eigen::VectorXd& x,
+                                   const std::function<Eigen::MatrixXd(const Eigen::VectorXd&)>& basis_of)
+    : dimension_(dimension), component_vertices_(std::move(component_vertices)) {
+  for (const std::vector<int>& vertices : *component_vertices_) {
+    Eigen::VectorXd part(static_cast<Eigen::Index>(dimension) * static_cast<Eigen::Index>(vertices.size()));
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+      part.segment(dimension * i, dimension) = x.segment(static_cast<Eigen::Index>(dimension) * vertices[i], dimension);
+    blocks_.push_back(basis_of(part));
+  }
+}
+
+void ComponentMotions::project_out(Eigen::VectorXd* v) const {
+  if (!component_vertices_) {
+    if (whole_.cols() > 0) *v -= whole_ * (whole_.transpose() * *v);
+    return;
+  }
+  for (std::size_t c = 0; c < blocks_.size(); ++c) {
+    const std::vector<int>& vertices = (*component_vertices_)[c];
+    Eigen::VectorXd part(blocks_[c].rows());
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+      part.segment(dimension_ * i, dimension_) = v->segment(static_cast<Eigen::Index>(dimension_) * vertices[i], dimension_);
+    part -= blocks_[c] * (blocks_[c].transpose() * part);
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+      v->segment(static_cast<Eigen::Index>(dimension_) * vertices[i], dimension_) = part.segment(dimension_ * i, dimension_);
+  }
+}
+
 }  // namespace akvf

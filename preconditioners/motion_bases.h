@@ -5,6 +5,9 @@
 // or nothing when constraint terms or a shift make P definite. All bases
 // here, for both dimensions, act on interleaved dofs (x0 y0 [z0] x1 ...).
 #include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <vector>
 
 namespace akvf {
 
@@ -22,5 +25,27 @@ Eigen::MatrixXd rigid_motion_basis_3d(const Eigen::VectorXd& x);
 // The translations alone (D|V| by D, orthonormal).
 Eigen::MatrixXd translation_basis(int dimension, int num_vertices);
 inline Eigen::MatrixXd translation_basis_2d(int num_vertices) { return translation_basis(2, num_vertices); }
+
+// The motions to project out of a mesh with several connected components
+// (the charts of a cut mesh): each component moves on its own, so the basis
+// is the per-component bases side by side, kept as blocks (a dense basis
+// would grow with vertices x components).
+class ComponentMotions {
+ public:
+  ComponentMotions() = default;
+  // One basis for the whole of x (a connected mesh).
+  explicit ComponentMotions(Eigen::MatrixXd basis) : whole_(std::move(basis)) {}
+  // basis_of(x restricted to the component's vertices) per component.
+  ComponentMotions(int dimension, std::shared_ptr<const std::vector<std::vector<int>>> component_vertices,
+                   const Eigen::VectorXd& x, const std::function<Eigen::MatrixXd(const Eigen::VectorXd&)>& basis_of);
+  // v -= B (B^T v): v's component in the motions removed.
+  void project_out(Eigen::VectorXd* v) const;
+
+ private:
+  Eigen::MatrixXd whole_;
+  int dimension_ = 0;
+  std::shared_ptr<const std::vector<std::vector<int>>> component_vertices_;
+  std::vector<Eigen::MatrixXd> blocks_;
+};
 
 }  // namespace akvf

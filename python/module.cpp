@@ -196,6 +196,7 @@ py::dict solve(akvf::Parameterizer& solver, const py::object& uv0, const py::obj
   hooks.raise_if_failed();
   py::dict d = result_dict(result);
   d["uv"] = result.uv;
+  d["uv_faces"] = result.uv_faces;
   return d;
 }
 
@@ -267,11 +268,20 @@ py::tuple read_mesh(const std::string& path, const std::string& kind) {
   throw akvf::OptionsError("kind must be 'triangles' or 'tets', found '" + kind + "'");
 }
 
-void write_obj(const std::string& path, const py::handle& V, const py::handle& F, const py::handle& uv) {
+void write_obj(const std::string& path, const py::handle& V, const py::handle& F, const py::handle& uv,
+               const py::object& uv_faces) {
   akvf::TriMesh mesh;
   mesh.V = akvf::python::float_matrix(V, "V", 3);
   mesh.F = akvf::python::index_matrix(F, "F", 3);
   const Eigen::MatrixXd UV = akvf::python::float_matrix(uv, "uv", 2);
+  if (!uv_faces.is_none()) {
+    const Eigen::MatrixXi corners = akvf::python::index_matrix(uv_faces, "uv_faces", 3);
+    if (corners.rows() != mesh.F.rows() || (corners.size() > 0 && (corners.minCoeff() < 0 || corners.maxCoeff() >= UV.rows())))
+      throw akvf::InputError("uv_faces must have one row per face (" + std::to_string(mesh.F.rows()) +
+                             ") of indices into uv's " + std::to_string(UV.rows()) + " rows");
+    akvf::write_obj_with_uv(path, mesh, UV, corners);
+    return;
+  }
   if (UV.rows() != mesh.V.rows())
     throw akvf::InputError("uv must have one row per vertex (" + std::to_string(mesh.V.rows()) + "), found " +
                            std::to_string(UV.rows()));
@@ -310,7 +320,7 @@ PYBIND11_MODULE(_akvf, m) {
            })
       .def("initial_uv", &akvf::Parameterizer::initial_uv);
   m.def("read_mesh", &read_mesh, py::arg("path"), py::arg("kind"));
-  m.def("write_obj", &write_obj, py::arg("path"), py::arg("V"), py::arg("F"), py::arg("uv"));
+  m.def("write_obj", &write_obj, py::arg("path"), py::arg("V"), py::arg("F"), py::arg("uv"), py::arg("uv_faces"));
   m.def("energies", [](int dimension) {
     if (dimension != 2 && dimension != 3) throw akvf::OptionsError("dimension must be 2 or 3");
     return dimension == 2 ? akvf::energies_2d().entries() : akvf::energies_3d().entries();

@@ -61,7 +61,7 @@ TEST_CASE("param on a closed mesh exits 1 with the topology message") {
   write_text(dir / "tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
   const Outcome r = akvf_run({"param", (dir / "tet.off").string(), "--out", (dir / "uv.obj").string()});
   CHECK(r.code == akvf::kExitInputError);
-  CHECK(r.err.find("mesh is closed (no boundary loop); it must be cut to a disk first") != std::string::npos);
+  CHECK(r.err.find("mesh is closed (no boundary loop); it must be cut to a disk first: use the option cut auto (akvf param --cut auto)") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "uv.obj"));
   fs::remove_all(dir);
 }

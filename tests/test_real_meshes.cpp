@@ -24,9 +24,10 @@ struct Run {
   int inverted_iterates = 0;
 };
 
-Run parameterize(const std::string& path, int max_iterations) {
+Run parameterize(const std::string& path, int max_iterations, bool cut = false) {
   akvf::ParamConfig config;
   config.optimizer.max_iterations = max_iterations;
+  config.cut = cut;
   const auto setup = akvf::prepare_parameterization(akvf::read_triangle_mesh(path), path, config);
   Run run;
   auto check = [&](const akvf::IterationSummary& s, const Eigen::VectorXd& x) {
@@ -45,6 +46,18 @@ TEST_CASE("no inverted triangle at any iterate on every disk mesh") {
   for (const char* name : kDiskMeshes) {
     CAPTURE(name);
     const Run run = parameterize(dir + "/tri/" + name, 300);
+    CHECK(run.inverted_iterates == 0);
+    CHECK(akvf::is_normal_termination(run.result.status));
+    CHECK(run.result.trace.back().energy < run.result.trace.front().energy);
+  }
+}
+
+TEST_CASE("the closed meshes are cut to a disk and parameterized without an inverted triangle") {
+  const std::string dir = akvf::test::data_dir();
+  if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
+  for (const char* name : {"cow_closed.off", "bunny_closed.off"}) {
+    CAPTURE(name);
+    const Run run = parameterize(dir + "/tri/" + name, 300, true);
     CHECK(run.inverted_iterates == 0);
     CHECK(akvf::is_normal_termination(run.result.status));
     CHECK(run.result.trace.back().energy < run.result.trace.front().energy);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "framework/mesh/mesh_io.h"
+#include "framework/mesh/mesh_subdivision.h"
 #include "framework/mesh/tet_validation.h"
 #include "framework/process/error.h"
 
@@ -33,6 +34,55 @@ TriMesh grid_disk(int nx, int ny, double jitter, unsigned seed) {
       mesh.F.row(f++) << a, d, c;
     }
   return mesh;
+}
+
+TriMesh torus(int n, int dropped_faces) {
+  TriMesh m;
+  m.V.resize(n * n, 3);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / n;
+      m.V.row(j * n + i) << (2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v);
+    }
+  m.F.resize(2 * n * n - dropped_faces, 3);
+  int f = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * n + i, b = j * n + (i + 1) % n, c = ((j + 1) % n) * n + i, d = ((j + 1) % n) * n + (i + 1) % n;
+      if (f < m.F.rows()) m.F.row(f++) << a, b, d;
+      if (f < m.F.rows()) m.F.row(f++) << a, d, c;
+    }
+  return m;
+}
+
+TriMesh sphere(int rounds) {
+  TriMesh octahedron;
+  octahedron.V.resize(6, 3);
+  octahedron.V << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1;
+  octahedron.F.resize(8, 3);
+  octahedron.F << 0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5;
+  TriMesh m = subdivide_midpoint(octahedron, rounds);
+  m.V.rowwise().normalize();
+  return m;
+}
+
+TriMesh annulus() {
+  const TriMesh grid = grid_disk(4, 4);
+  TriMesh m;
+  m.V = grid.V;
+  m.F.resize(grid.num_faces() - 2, 3);
+  for (int f = 0, g = 0; f < grid.num_faces(); ++f)
+    if (f / 2 != 4) m.F.row(g++) = grid.F.row(f);  // cell (1, 1) of 3x3 cells
+  return m;
+}
+
+TriMesh side_by_side(const TriMesh& a, const TriMesh& b, double offset) {
+  TriMesh m;
+  m.V.resize(a.num_vertices() + b.num_vertices(), 3);
+  m.V << a.V, b.V.rowwise() + Eigen::RowVector3d(offset, 0, 0);
+  m.F.resize(a.num_faces() + b.num_faces(), 3);
+  m.F << a.F, b.F.array() + a.num_vertices();
+  return m;
 }
 
 TriMesh bumpy_disk(int nx, int ny) {

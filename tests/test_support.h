@@ -16,6 +16,21 @@ TriMesh grid_disk(int nx, int ny, double jitter = 0, unsigned seed = 1);
 // The grid lifted onto a bumpy height field (not developable).
 TriMesh bumpy_disk(int nx, int ny);
 
+// An n by n torus grid (closed, genus 1), radii 2 and 1, without its last
+// `dropped_faces` faces (1: a punctured torus, one boundary loop).
+TriMesh torus(int n, int dropped_faces = 0);
+
+// A closed genus-0 surface: an octahedron subdivided `rounds` times, its
+// vertices on the unit sphere.
+TriMesh sphere(int rounds);
+
+// A square annulus: a 4x4 grid without its centre cell (two boundary loops).
+TriMesh annulus();
+
+// The two meshes side by side as one (b's vertices after a's, shifted by
+// `offset` along x).
+TriMesh side_by_side(const TriMesh& a, const TriMesh& b, double offset);
+
 // The unit cube split into n^3 cells of 6 tets each (Kuhn triangulation),
 // every tet positively oriented.
 TetMesh tet_grid(int n);

@@ -15,10 +15,10 @@ TEST_CASE("Tutte maps a disk without inverted triangles onto a circle of the mes
     const akvf::TriMesh mesh = akvf::test::bumpy_disk(9, 7);
     const auto disk = akvf::prepare_disk_mesh(mesh, "bumpy");
     akvf::Warnings warnings;
-    const Eigen::MatrixXd UV = akvf::tutte_embedding(mesh, disk.boundary_loop, weights, &warnings);
+    const Eigen::MatrixXd UV = akvf::tutte_embedding(mesh, disk.boundary_loops[0], weights, &warnings);
     CHECK(akvf::count_inverted_triangles(mesh.F, UV) == 0);
     const double radius = std::sqrt(akvf::rest_triangles(mesh).total_area / std::numbers::pi);
-    for (int v : disk.boundary_loop) CHECK(UV.row(v).norm() == doctest::Approx(radius).epsilon(1e-12));
+    for (int v : disk.boundary_loops[0]) CHECK(UV.row(v).norm() == doctest::Approx(radius).epsilon(1e-12));
   }
 }
 
@@ -28,7 +28,7 @@ TEST_CASE("cotangent Tutte falls back to uniform weights when it would fold") {
   mesh.V.col(0) *= 40;  // very anisotropic cells: many obtuse angles
   const auto disk = akvf::prepare_disk_mesh(mesh, "stretched");
   akvf::Warnings warnings;
-  const Eigen::MatrixXd UV = akvf::tutte_embedding(mesh, disk.boundary_loop, akvf::TutteWeights::kCotangent, &warnings);
+  const Eigen::MatrixXd UV = akvf::tutte_embedding(mesh, disk.boundary_loops[0], akvf::TutteWeights::kCotangent, &warnings);
   CHECK(akvf::count_inverted_triangles(mesh.F, UV) == 0);
   if (!warnings.empty()) CHECK(warnings[0].find("using uniform weights instead") != std::string::npos);
 }

@@ -28,67 +28,37 @@ TriMesh tetrahedron() {
   return m;
 }
 
-// A square annulus: a 4x4 grid without its centre cell (two boundary loops).
-TriMesh annulus() {
-  TriMesh grid = akvf::test::grid_disk(4, 4);
-  TriMesh m;
-  m.V = grid.V;
-  m.F.resize(grid.num_faces() - 2, 3);
-  for (int f = 0, g = 0; f < grid.num_faces(); ++f)
-    if (f / 2 != 4) m.F.row(g++) = grid.F.row(f);  // cell (1, 1) of 3x3 cells
-  return m;
-}
-
-// A torus grid with one face removed: one boundary loop but a handle.
-TriMesh punctured_torus(int n = 6) {
-  TriMesh m;
-  m.V.resize(n * n, 3);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / n;
-      m.V.row(j * n + i) << (2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v);
-    }
-  m.F.resize(2 * n * n - 1, 3);
-  int f = 0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * n + i, b = j * n + (i + 1) % n, c = ((j + 1) % n) * n + i, d = ((j + 1) % n) * n + (i + 1) % n;
-      m.F.row(f++) << a, b, d;
-      if (f < m.F.rows()) m.F.row(f++) << a, d, c;
-    }
-  return m;
-}
+TriMesh annulus() { return akvf::test::annulus(); }
+TriMesh punctured_torus() { return akvf::test::torus(6, 1); }
 
 }  // namespace
 
 TEST_CASE("a grid is a valid disk with its boundary loop") {
   const auto disk = akvf::prepare_disk_mesh(akvf::test::grid_disk(5, 4), "grid.obj");
-  CHECK(disk.boundary_loop.size() == 14);
+  REQUIRE(disk.num_charts() == 1);
+  CHECK(disk.boundary_loops[0].size() == 14);
   CHECK(disk.warnings.empty());
 }
 
 TEST_CASE("a closed mesh must be cut first") {
-  CHECK(validation_error(tetrahedron()) == "m.obj: mesh is closed (no boundary loop); it must be cut to a disk first");
+  CHECK(validation_error(tetrahedron()) == "m.obj: mesh is closed (no boundary loop); it must be cut to a disk first: use the option cut auto (akvf param --cut auto)");
 }
 
 TEST_CASE("several boundary loops must be cut first") {
   CHECK(validation_error(annulus()) ==
-        "m.obj: mesh has 2 boundary loops (a disk has exactly one); it must be cut to a disk first");
+        "m.obj: mesh has 2 boundary loops (a disk has exactly one); it must be cut to a disk first: use the option cut auto (akvf param --cut auto)");
 }
 
 TEST_CASE("a handle is reported by the Euler characteristic") {
   CHECK(validation_error(punctured_torus()) ==
-        "m.obj: Euler characteristic is -1 (a disk has 1): the mesh has handles; it must be cut to a disk first");
+        "m.obj: Euler characteristic is -1 (a disk has 1): the mesh has handles; it must be cut to a disk first: use the option cut auto (akvf param --cut auto)");
 }
 
 TEST_CASE("two components are rejected") {
-  TriMesh a = akvf::test::grid_disk(3, 3), two;
-  two.V.resize(2 * a.num_vertices(), 3);
-  two.V << a.V, a.V.rowwise() + Eigen::RowVector3d(5, 0, 0);
-  two.F.resize(2 * a.num_faces(), 3);
-  two.F << a.F, a.F.array() + a.num_vertices();
+  const TriMesh a = akvf::test::grid_disk(3, 3), two = akvf::test::side_by_side(a, a, 5);
   CHECK(validation_error(two) ==
-        "m.obj: mesh has 2 connected components; parameterize one disk-shaped component at a time");
+        "m.obj: mesh has 2 connected components; parameterize one disk-shaped component at a time, or all as "
+        "charts side by side with the option cut auto (akvf param --cut auto)");
 }
 
 TEST_CASE("an edge shared by three faces is non-manifold") {

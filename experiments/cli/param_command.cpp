@@ -67,6 +67,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   const ParamSetup setup = prepare_parameterization(input, name, config);
   for (const auto& warning : setup.warnings) err << "warning: " << warning << '\n';
   const TriMesh& mesh = setup.disk.mesh;
+  if (setup.disk.cut) out << name << ": " << cut_description(setup.disk) << '\n';
   out << name << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces; energy " << config.energy
       << ", preconditioner " << config.preconditioner << ", " << setup.flaps_moved << " flap vertices moved\n";
 
@@ -80,15 +81,20 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   if (!is_normal_termination(result.status)) err << "error: " << result.message << '\n';
 
   const Eigen::MatrixXd UV = output_uv(setup, result.x);
+  const Eigen::MatrixXi UV_faces = output_uv_faces(setup);
   if (!outputs.obj.empty() && lowercase_extension(outputs.obj) == ".ply") {
-    write_ply_with_uv(outputs.obj, input, UV);
+    if (setup.disk.cut) {
+      write_ply_with_uv(outputs.obj, input, UV, UV_faces);
+    } else {
+      write_ply_with_uv(outputs.obj, input, UV);
+    }
   } else if (!outputs.obj.empty()) {
     if (outputs.texture) {
       const TextureFiles files = texture_files_for(outputs.obj);
       write_checker_texture(files);
-      write_obj_with_uv(outputs.obj, input, unit_square_uv(UV), files.mtl_name);
+      write_obj_with_uv(outputs.obj, input, unit_square_uv(UV), UV_faces, files.mtl_name);
     } else {
-      write_obj_with_uv(outputs.obj, input, UV);
+      write_obj_with_uv(outputs.obj, input, UV, UV_faces);
     }
   }
   if (!outputs.trace.empty()) write_trace_csv(outputs.trace, result);

@@ -123,20 +123,35 @@ void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen
   if (UV.rows() != mesh.V.rows() || UV.cols() != 2)
     throw OutputError("UV matrix is " + std::to_string(UV.rows()) + "x" + std::to_string(UV.cols()) + ", expected " +
                       std::to_string(mesh.V.rows()) + "x2");
+  write_obj_with_uv(path, mesh, UV, mesh.F, material_library);
+}
+
+void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
+                       const Eigen::MatrixXi& UV_faces, const std::string& material_library) {
+  check_corner_uv(mesh, UV, UV_faces);
   write_file_atomically(path, [&](std::ostream& out) {
     out << std::setprecision(17);
     out << "# " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces, written by akvf\n";
     if (!material_library.empty()) out << "mtllib " << material_library << '\n';
     for (int i = 0; i < mesh.num_vertices(); ++i)
       out << "v " << mesh.V(i, 0) << ' ' << mesh.V(i, 1) << ' ' << mesh.V(i, 2) << '\n';
-    for (int i = 0; i < mesh.num_vertices(); ++i) out << "vt " << UV(i, 0) << ' ' << UV(i, 1) << '\n';
+    for (int i = 0; i < UV.rows(); ++i) out << "vt " << UV(i, 0) << ' ' << UV(i, 1) << '\n';
     if (!material_library.empty()) out << "usemtl checker\n";
     for (int f = 0; f < mesh.num_faces(); ++f) {
       out << 'f';
-      for (int k = 0; k < 3; ++k) out << ' ' << mesh.F(f, k) + 1 << '/' << mesh.F(f, k) + 1;
+      for (int k = 0; k < 3; ++k) out << ' ' << mesh.F(f, k) + 1 << '/' << UV_faces(f, k) + 1;
       out << '\n';
     }
   });
+}
+
+void check_corner_uv(const TriMesh& mesh, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& UV_faces) {
+  if (UV.cols() != 2) throw OutputError("UV matrix has " + std::to_string(UV.cols()) + " columns, expected 2");
+  if (UV_faces.rows() != mesh.F.rows() || UV_faces.cols() != 3)
+    throw OutputError("UV faces are " + std::to_string(UV_faces.rows()) + "x" + std::to_string(UV_faces.cols()) +
+                      ", expected " + std::to_string(mesh.F.rows()) + "x3");
+  if (UV_faces.size() > 0 && (UV_faces.minCoeff() < 0 || UV_faces.maxCoeff() >= UV.rows()))
+    throw OutputError("UV faces index a row outside the " + std::to_string(UV.rows()) + " UV rows");
 }
 
 }  // namespace akvf

@@ -41,4 +41,14 @@ Eigen::MatrixXd per_vertex_uv(const TriMesh& mesh, const MeshTexture& texture, c
 void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
                        const std::string& material_library = "");
 
+// The same with per-corner texture coordinates (seams: a vertex with one
+// `vt` per side): faces `f a/i b/j c/k` with i, j, k from UV_faces.
+//   UV        #T by 2
+//   UV_faces  #F by 3 rows of UV
+void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
+                       const Eigen::MatrixXi& UV_faces, const std::string& material_library = "");
+
+// OutputError unless UV has 2 columns and UV_faces is #F by 3 rows of UV.
+void check_corner_uv(const TriMesh& mesh, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& UV_faces);
+
 }  // namespace akvf

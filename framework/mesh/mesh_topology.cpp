@@ -41,23 +41,40 @@ EdgeTopology edge_topology(const Eigen::MatrixXi& F) {
   return topology;
 }
 
-int count_components(const Eigen::MatrixXi& F, int num_vertices) {
-  std::vector<int> parent(num_vertices);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (int f = 0; f < F.rows(); ++f)
-    for (int k = 1; k < 3; ++k) {
-      const int a = find(F(f, 0)), b = find(F(f, k));
-      if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-  std::vector<char> used(num_vertices, 0);
-  for (int f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) used[F(f, k)] = 1;
+DisjointSets::DisjointSets(int size) : parent_(size) { std::iota(parent_.begin(), parent_.end(), 0); }
+
+int DisjointSets::find(int i) {
+  while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+  return i;
+}
+
+bool DisjointSets::unite(int a, int b) {
+  a = find(a);
+  b = find(b);
+  if (a == b) return false;
+  parent_[std::max(a, b)] = std::min(a, b);
+  return true;
+}
+
+std::vector<int> vertex_components(const Eigen::MatrixXi& elements, int num_vertices, int* count) {
+  DisjointSets sets(num_vertices);
+  for (int e = 0; e < elements.rows(); ++e)
+    for (int k = 1; k < elements.cols(); ++k) sets.unite(elements(e, 0), elements(e, k));
+  std::vector<int> component(num_vertices, -1), of_root(num_vertices, -1);
   int components = 0;
-  for (int v = 0; v < num_vertices; ++v) components += used[v] && find(v) == v;
+  for (int e = 0; e < elements.rows(); ++e)
+    for (int k = 0; k < elements.cols(); ++k) {
+      const int v = elements(e, k), root = sets.find(v);
+      if (of_root[root] < 0) of_root[root] = components++;
+      component[v] = of_root[root];
+    }
+  if (count) *count = components;
+  return component;
+}
+
+int count_components(const Eigen::MatrixXi& F, int num_vertices) {
+  int components = 0;
+  vertex_components(F, num_vertices, &components);
   return components;
 }
 

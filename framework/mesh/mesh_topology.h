@@ -21,7 +21,24 @@ struct EdgeTopology {
 
 EdgeTopology edge_topology(const Eigen::MatrixXi& F);
 
-// Number of connected components of the faces (vertices joined by edges).
+// Union-find with path halving; the smaller index is the representative.
+class DisjointSets {
+ public:
+  explicit DisjointSets(int size);
+  int find(int i);
+  // Joins the sets of a and b; false if they were one set already.
+  bool unite(int a, int b);
+
+ private:
+  std::vector<int> parent_;
+};
+
+// The connected component of every vertex of the elements (F or T: any
+// number of columns), numbered 0, 1, ... in the order of their first
+// element; -1 for vertices in no element. *count (if given) = components.
+std::vector<int> vertex_components(const Eigen::MatrixXi& elements, int num_vertices, int* count = nullptr);
+
+// Number of connected components of the elements (vertices joined by edges).
 int count_components(const Eigen::MatrixXi& F, int num_vertices);
 
 // Boundary loops as ordered vertex lists following the faces' orientation

@@ -1,8 +1,10 @@
 #include "framework/mesh/mesh_validation.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
+#include "framework/mesh/cut_to_disk.h"
 #include "framework/mesh/mesh_topology.h"
 #include "framework/process/error.h"
 
@@ -71,9 +73,66 @@ void check_face_areas(const TriMesh& m, const std::string& name, const std::vect
   }
 }
 
+constexpr const char* kCutHint = " it must be cut to a disk first: use the option cut auto (akvf param --cut auto)";
+
+void cut_into_charts(const std::string& name, DiskMesh* disk) {
+  DiskCut cut = cut_to_disks(disk->mesh);
+  const int b = disk->mesh.index_base;
+  if (cut.nonmanifold_vertex >= 0)
+    throw ValidationError(name + ": vertex " + file_number(disk->input_vertex[cut.nonmanifold_vertex], b) +
+                          numbering_note(b) + " is non-manifold: its faces form separate fans that meet there");
+  std::vector<int> input_vertex(cut.source_vertex.size());
+  for (std::size_t v = 0; v < input_vertex.size(); ++v) input_vertex[v] = disk->input_vertex[cut.source_vertex[v]];
+  disk->input_vertex = std::move(input_vertex);
+  disk->mesh = std::move(cut.mesh);
+  disk->face_chart = std::move(cut.face_chart);
+  disk->cut = true;
+  disk->cut_edges = cut.cut_edges;
+  disk->chart_genus = std::move(cut.chart_genus);
+  disk->chart_input_loops = std::move(cut.chart_loops);
+}
+
+// One boundary loop and Euler characteristic 1 per chart (a disk each), or
+// the error that says which the mesh is not.
+void find_chart_boundaries(const std::string& name, DiskMesh* disk) {
+  const TriMesh& m = disk->mesh;
+  const EdgeTopology topology = edge_topology(m.F);
+  int charts = 0;
+  const std::vector<int> chart_of = vertex_components(m.F, m.num_vertices(), &charts);
+  std::vector<std::vector<std::vector<int>>> loops(charts);
+  for (auto& loop : boundary_loops(topology, m.num_vertices())) loops[chart_of[loop.front()]].push_back(std::move(loop));
+  std::vector<long long> euler(charts, 0);
+  for (int v = 0; v < m.num_vertices(); ++v) ++euler[chart_of[v]];
+  // Edges = (3 F + boundary edges) / 2: an interior edge is in two faces.
+  std::vector<long long> half_edges(charts, 0);
+  for (int f = 0; f < m.num_faces(); ++f) {
+    ++euler[chart_of[m.F(f, 0)]];
+    half_edges[chart_of[m.F(f, 0)]] += 3;
+  }
+  for (const auto& [from, to] : topology.boundary_half_edges) ++half_edges[chart_of[from]];
+  for (int c = 0; c < charts; ++c) euler[c] -= half_edges[c] / 2;
+  for (int c = 0; c < charts; ++c) {
+    const std::string where = charts == 1 ? "mesh" : "chart " + std::to_string(c);
+    if (disk->cut && (loops[c].size() != 1 || euler[c] != 1))
+      throw NumericalError(name + ": the automatic cut left " + where + " with " + std::to_string(loops[c].size()) +
+                           " boundary loops and Euler characteristic " + std::to_string(euler[c]) +
+                           " (a disk has 1 and 1); please report this mesh");
+    if (loops[c].empty()) throw ValidationError(name + ": mesh is closed (no boundary loop);" + kCutHint);
+    if (loops[c].size() > 1)
+      throw ValidationError(name + ": mesh has " + std::to_string(loops[c].size()) +
+                            " boundary loops (a disk has exactly one);" + kCutHint);
+    if (euler[c] != 1)
+      throw ValidationError(name + ": Euler characteristic is " + std::to_string(euler[c]) +
+                            " (a disk has 1): the mesh has handles;" + kCutHint);
+  }
+  disk->boundary_loops.clear();
+  for (auto& chart : loops) disk->boundary_loops.push_back(std::move(chart.front()));
+  if (!disk->cut) disk->face_chart.assign(m.num_faces(), 0);
+}
+
 }  // namespace
 
-DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name) {
+DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool cut) {
   if (input.num_faces() == 0) throw ValidationError(name + ": mesh has no faces");
   check_finite_and_indices(input, name);
   DiskMesh out = compact(input, name);
@@ -94,29 +153,40 @@ DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name) {
                           at_input(topology.misoriented_edge[0]) + ", " + at_input(topology.misoriented_edge[1]) +
                           ") in the same direction" + numbering_note(b) + "; faces must be consistently oriented");
 
-  const int components = count_components(m.F, m.num_vertices());
-  if (components != 1)
-    throw ValidationError(name + ": mesh has " + std::to_string(components) +
-                          " connected components; parameterize one disk-shaped component at a time");
-
   // A vertex where two boundary fans meet starts two boundary half-edges.
   std::vector<char> starts_boundary(m.num_vertices(), 0);
   for (const auto& [from, to] : topology.boundary_half_edges)
     if (starts_boundary[from]++)
       throw ValidationError(name + ": vertex " + at_input(from) + numbering_note(b) +
                             " is non-manifold: two separate boundary fans meet there");
-  const std::vector<std::vector<int>> loops = boundary_loops(topology, m.num_vertices());
-  if (loops.empty())
-    throw ValidationError(name + ": mesh is closed (no boundary loop); it must be cut to a disk first");
-  if (loops.size() > 1)
-    throw ValidationError(name + ": mesh has " + std::to_string(loops.size()) +
-                          " boundary loops (a disk has exactly one); it must be cut to a disk first");
-  const int euler = m.num_vertices() - topology.num_edges + m.num_faces();
-  if (euler != 1)
-    throw ValidationError(name + ": Euler characteristic is " + std::to_string(euler) +
-                          " (a disk has 1): the mesh has handles; it must be cut to a disk first");
-  out.boundary_loop = std::move(loops.front());
+  if (cut) {
+    cut_into_charts(name, &out);
+  } else {
+    const int components = count_components(m.F, m.num_vertices());
+    if (components != 1)
+      throw ValidationError(name + ": mesh has " + std::to_string(components) +
+                            " connected components; parameterize one disk-shaped component at a time, or all as "
+                            "charts side by side with the option cut auto (akvf param --cut auto)");
+  }
+  find_chart_boundaries(name, &out);
   return out;
+}
+
+std::string cut_description(const DiskMesh& disk) {
+  const int charts = disk.num_charts();
+  std::string text = "cut into " + std::to_string(charts) + (charts == 1 ? " chart" : " charts") + " along " +
+                     std::to_string(disk.cut_edges) + (disk.cut_edges == 1 ? " edge (" : " edges (");
+  constexpr int kListed = 5;
+  for (int c = 0; c < std::min(charts, kListed); ++c) {
+    const int loops = disk.chart_input_loops[c];
+    if (c > 0) text += "; ";
+    if (charts > 1) text += "chart " + std::to_string(c) + ": ";
+    text += "genus " + std::to_string(disk.chart_genus[c]) + ", " +
+            (loops == 0 ? std::string("no boundary")
+                        : std::to_string(loops) + (loops == 1 ? " boundary loop" : " boundary loops"));
+  }
+  if (charts > kListed) text += "; ...";
+  return text + ")";
 }
 
 }  // namespace akvf

@@ -1,6 +1,8 @@
 #pragma once
 // Checks that a triangle mesh can be parameterized: finite, non-degenerate,
-// edge-manifold, consistently oriented, one component, disk topology.
+// edge-manifold, consistently oriented, one component, disk topology; or,
+// with the automatic cut, any such manifold mesh cut into one disk (chart)
+// per component.
 #include <string>
 #include <vector>
 
@@ -11,16 +13,29 @@ namespace akvf {
 // A mesh ready for parameterization, with the map back to the input's
 // vertex numbering (unreferenced input vertices are dropped).
 struct DiskMesh {
-  TriMesh mesh;                   // compacted: every vertex is used by a face
-  std::vector<int> input_vertex;  // #mesh.V: index in the input mesh
+  TriMesh mesh;                   // compacted (and cut): every vertex is used by a face; faces in the input's order
+  std::vector<int> input_vertex;  // #mesh.V: index in the input mesh (seam copies share one)
   int num_input_vertices = 0;
-  std::vector<int> boundary_loop;  // ordered, mesh to the left
+  std::vector<std::vector<int>> boundary_loops;  // one per chart, in chart order; ordered, mesh to the left
+  std::vector<int> face_chart;                   // #F: chart of each face (all 0 without a cut)
+  bool cut = false;                              // the automatic cut was asked for
+  int cut_edges = 0;                             // input edges opened by it
+  std::vector<int> chart_genus, chart_input_loops;  // per chart, before the cut
   Warnings warnings;
+
+  int num_charts() const { return static_cast<int>(boundary_loops.size()); }
 };
 
 // Validates `input` (read from `name`, used in messages) and drops
-// unreferenced vertices with a warning. Throws ValidationError with a message
-// that says what is wrong and what to do about it.
-DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name);
+// unreferenced vertices with a warning. With `cut`, a closed, multi-boundary,
+// higher-genus or multi-component manifold mesh is cut into disks
+// (cut_to_disk.h); without, it is refused with a message naming the option.
+// Throws ValidationError with a message that says what is wrong and what to
+// do about it.
+DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool cut = false);
+
+// What the automatic cut did, in words: "cut into 2 charts along 40 edges
+// (chart 0: genus 1, no boundary; chart 1: genus 0, 2 boundary loops)".
+std::string cut_description(const DiskMesh& disk);
 
 }  // namespace akvf

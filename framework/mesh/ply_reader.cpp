@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "framework/mesh/mesh_io.h"
 #include "framework/mesh/mesh_text.h"
 #include "framework/mesh/text_reader.h"
 #include "framework/process/error.h"
@@ -369,17 +370,23 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
   return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 3>(triangle_corners), 0};
 }
 
+namespace {
+
+// Little-endian bytes of a value.
+void put(std::ostream& out, const auto& value) {
+  char bytes[sizeof(value)];
+  std::memcpy(bytes, &value, sizeof(value));
+  if constexpr (std::endian::native == std::endian::big) std::reverse(bytes, bytes + sizeof(value));
+  out.write(bytes, sizeof(value));
+}
+
+}  // namespace
+
 void write_ply_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV) {
   if (UV.rows() != mesh.V.rows() || UV.cols() != 2)
     throw OutputError("UV matrix is " + std::to_string(UV.rows()) + "x" + std::to_string(UV.cols()) + ", expected " +
                       std::to_string(mesh.V.rows()) + "x2");
   static_assert(sizeof(double) == 8 && sizeof(int) == 4, "PLY double and int");
-  const auto put = [](std::ostream& out, const auto& value) {
-    char bytes[sizeof(value)];
-    std::memcpy(bytes, &value, sizeof(value));
-    if constexpr (std::endian::native == std::endian::big) std::reverse(bytes, bytes + sizeof(value));
-    out.write(bytes, sizeof(value));
-  };
   write_file_atomically(path, [&](std::ostream& out) {
     out << "ply\nformat binary_little_endian 1.0\ncomment written by akvf: s, t are the parameterization\n"
         << "element vertex " << mesh.num_vertices()
@@ -392,6 +399,28 @@ void write_ply_with_uv(const std::string& path, const TriMesh& mesh, const Eigen
     for (int f = 0; f < mesh.num_faces(); ++f) {
       put(out, static_cast<unsigned char>(3));
       for (int k = 0; k < 3; ++k) put(out, static_cast<int>(mesh.F(f, k)));
+    }
+  });
+}
+
+void write_ply_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
+                       const Eigen::MatrixXi& UV_faces) {
+  check_corner_uv(mesh, UV, UV_faces);
+  static_assert(sizeof(float) == 4, "PLY float");
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "ply\nformat binary_little_endian 1.0\ncomment written by akvf: texcoord (per corner) is the "
+           "parameterization\n"
+        << "element vertex " << mesh.num_vertices() << "\nproperty double x\nproperty double y\nproperty double z\n"
+        << "element face " << mesh.num_faces()
+        << "\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\nend_header\n";
+    for (int v = 0; v < mesh.num_vertices(); ++v)
+      for (int k = 0; k < 3; ++k) put(out, mesh.V(v, k));
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+      put(out, static_cast<unsigned char>(3));
+      for (int k = 0; k < 3; ++k) put(out, static_cast<int>(mesh.F(f, k)));
+      put(out, static_cast<unsigned char>(6));
+      for (int k = 0; k < 3; ++k)
+        for (int c = 0; c < 2; ++c) put(out, static_cast<float>(UV(UV_faces(f, k), c)));
     }
   });
 }

@@ -28,4 +28,12 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
 //   UV  #V by 2
 void write_ply_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV);
 
+// Per-corner texture coordinates (seams): the faces carry a float list
+// `texcoord` of u0 v0 u1 v1 u2 v2 (the per-wedge property MeshLab reads and
+// writes); the vertices only x, y, z.
+//   UV        #T by 2
+//   UV_faces  #F by 3 rows of UV
+void write_ply_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
+                       const Eigen::MatrixXi& UV_faces);
+
 }  // namespace akvf

@@ -6,6 +6,7 @@
 #include <map>
 #include <numeric>
 
+#include "framework/mesh/mesh_topology.h"
 #include "framework/process/error.h"
 
 namespace akvf {
@@ -19,25 +20,6 @@ double signed_tet_volume(const TetMesh& mesh, int t) {
 }
 
 namespace {
-
-int count_tet_components(const TetMesh& m) {
-  std::vector<int> parent(m.num_vertices());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  std::vector<char> used(m.num_vertices(), 0);
-  for (int t = 0; t < m.num_tets(); ++t)
-    for (int k = 0; k < 4; ++k) {
-      used[m.T(t, k)] = 1;
-      const int a = find(m.T(t, 0)), b = find(m.T(t, k));
-      if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-  int components = 0;
-  for (int v = 0; v < m.num_vertices(); ++v) components += used[v] && find(v) == v;
-  return components;
-}
 
 // Warns once about tets that repeat another tet's vertices and once about
 // vertices at exactly the position of another: both are legal (the energy
@@ -119,7 +101,7 @@ PreparedTetMesh prepare_tet_mesh(const TetMesh& input, const std::string& name, 
     mesh.T.col(2).swap(mesh.T.col(3));
     if (warnings) warnings->push_back(name + ": every tet was negatively oriented; flipped them all");
   }
-  const int components = count_tet_components(mesh);
+  const int components = count_components(mesh.T, mesh.num_vertices());
   if (components != 1)
     throw ValidationError(name + ": mesh has " + std::to_string(components) +
                           " connected components; deform one component at a time");

@@ -73,7 +73,10 @@ def _warn(messages):
 
 
 def parameterize(V, F, *, uv0=None, callback=None, **options):
-    """Parameterize a disk-topology triangle mesh; returns a Result with ``uv``.
+    """Parameterize a disk-topology triangle mesh; returns a Result with ``uv``
+    and ``uv_faces`` (the row of uv each face corner uses: F itself, unless
+    cut="auto" cut a closed, multi-boundary, higher-genus or multi-component
+    mesh into charts; then uv has one row per vertex of the cut mesh).
 
     V: (n, 3) reals; F: (m, 3) integers (any integer dtype), 0-based.
     uv0: an (n, 2) start map instead of the initial map (must not invert a
@@ -157,10 +160,11 @@ def read_mesh(path, kind=None):
     return V, elements
 
 
-def write_obj(path, V, F, uv):
-    """Write the mesh with one ``vt`` per vertex (atomically, as the command line does)."""
+def write_obj(path, V, F, uv, uv_faces=None):
+    """Write the mesh with its ``vt`` (atomically, as the command line does):
+    one per vertex, or per corner with uv_faces (a Result's uv and uv_faces)."""
     import os
-    _akvf.write_obj(os.fspath(path), V, F, uv)
+    _akvf.write_obj(os.fspath(path), V, F, uv, uv_faces)
 
 
 def energies(dimension=2):

@@ -1,0 +1,180 @@
+// --cut auto: closed, multi-boundary, higher-genus and multi-component meshes
+// cut into one disk per component, parameterized flip-free, charts side by
+// side, written with per-corner vt.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "akvf/parameterize.h"
+#include "framework/mesh/cut_to_disk.h"
+#include "framework/mesh/initialization.h"
+#include "framework/mesh/mesh_topology.h"
+#include "framework/mesh/mesh_validation.h"
+#include "tests/cli_support.h"
+#include "tests/test_support.h"
+
+using akvf::TriMesh;
+
+namespace {
+
+struct Case {
+  const char* name;
+  TriMesh mesh;
+  int charts, genus, loops;  // genus and loops of the first chart
+};
+
+std::vector<Case> cases() {
+  using namespace akvf::test;
+  return {{"sphere", sphere(2), 1, 0, 0},
+          {"torus", torus(12), 1, 1, 0},
+          {"punctured torus", torus(8, 1), 1, 1, 1},
+          {"annulus", annulus(), 1, 0, 2},
+          {"annulus and torus", side_by_side(annulus(), torus(8), 6), 2, 0, 2},
+          {"disk", grid_disk(5, 5), 1, 0, 1}};
+}
+
+// Axis-aligned bounding boxes of the charts (components of the UV faces).
+std::vector<Eigen::Array4d> chart_boxes(const Eigen::MatrixXd& uv, const Eigen::MatrixXi& uv_faces) {
+  int charts = 0;
+  const std::vector<int> chart = akvf::vertex_components(uv_faces, static_cast<int>(uv.rows()), &charts);
+  std::vector<Eigen::Array4d> boxes(charts, Eigen::Array4d(1e300, 1e300, -1e300, -1e300));
+  for (int v = 0; v < uv.rows(); ++v) {
+    if (chart[v] < 0) continue;
+    Eigen::Array4d& b = boxes[chart[v]];
+    b << std::min(b[0], uv(v, 0)), std::min(b[1], uv(v, 1)), std::max(b[2], uv(v, 0)), std::max(b[3], uv(v, 1));
+  }
+  return boxes;
+}
+
+}  // namespace
+
+TEST_CASE("the automatic cut leaves one disk per component and keeps the faces") {
+  for (const Case& c : cases()) {
+    CAPTURE(c.name);
+    const akvf::DiskMesh disk = akvf::prepare_disk_mesh(c.mesh, c.name, true);  // throws unless every chart is a disk
+    CHECK(disk.num_charts() == c.charts);
+    CHECK(disk.chart_genus[0] == c.genus);
+    CHECK(disk.chart_input_loops[0] == c.loops);
+    REQUIRE(disk.mesh.num_faces() == c.mesh.num_faces());
+    for (int f = 0; f < c.mesh.num_faces(); ++f)
+      for (int k = 0; k < 3; ++k) CHECK(disk.input_vertex[disk.mesh.F(f, k)] == c.mesh.F(f, k));
+    // Every seam edge is opened once: two more vertices per interior cut
+    // edge, less one per path end, is not needed here; the disk check holds.
+    const int euler = disk.mesh.num_vertices() - akvf::edge_topology(disk.mesh.F).num_edges + disk.mesh.num_faces();
+    CHECK(euler == c.charts);
+  }
+}
+
+TEST_CASE("a disk is not cut") {
+  const TriMesh grid = akvf::test::grid_disk(6, 4);
+  const akvf::DiskCut cut = akvf::cut_to_disks(grid);
+  CHECK(cut.cut_edges == 0);
+  CHECK(cut.mesh.F == grid.F);
+  CHECK(cut.mesh.V == grid.V);
+}
+
+TEST_CASE("a torus is cut along two loops of a shortest-path tree") {
+  const akvf::DiskCut cut = akvf::cut_to_disks(akvf::test::torus(12));
+  // Two non-contractible loops through one vertex: at least the tube's and
+  // the ring's circumferences in edges (12 each), and far from every edge.
+  CHECK(cut.cut_edges >= 24);
+  CHECK(cut.cut_edges < 60);
+}
+
+TEST_CASE("the cut refuses a vertex where two closed fans meet") {
+  // Two tetrahedron surfaces sharing vertex 0.
+  TriMesh m;
+  m.V.resize(7, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1;
+  m.F.resize(8, 3);
+  m.F << 0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2, 0, 5, 4, 0, 4, 6, 4, 5, 6, 0, 6, 5;
+  const std::string message = akvf::test::error_message([&] { akvf::prepare_disk_mesh(m, "pinch.obj", true); });
+  CHECK(message == "pinch.obj: vertex 0 (numbered from 0) is non-manifold: its faces form separate fans that meet there");
+}
+
+TEST_CASE("cut meshes parameterize flip-free at every iterate, charts side by side") {
+  for (const Case& c : cases()) {
+    CAPTURE(c.name);
+    akvf::ParameterizeOptions options;
+    options.cut = "auto";
+    options.max_iters = 300;
+    const akvf::ParameterizeResult r = akvf::parameterize(c.mesh.V, c.mesh.F, options);
+    CHECK(akvf::is_normal_termination(r.status));
+    for (const auto& row : r.trace) CHECK(row.flips == 0);
+    CHECK(r.energy() < r.trace.front().energy);
+    REQUIRE(r.uv_faces.rows() == c.mesh.num_faces());
+    CHECK(r.uv_faces.maxCoeff() < r.uv.rows());
+    CHECK(akvf::count_inverted_triangles(r.uv_faces, r.uv) == 0);
+    const auto boxes = chart_boxes(r.uv, r.uv_faces);
+    REQUIRE(static_cast<int>(boxes.size()) == c.charts);
+    for (std::size_t a = 0; a < boxes.size(); ++a)
+      for (std::size_t b = a + 1; b < boxes.size(); ++b) {
+        const bool apart = boxes[a][2] < boxes[b][0] || boxes[b][2] < boxes[a][0] || boxes[a][3] < boxes[b][1] ||
+                           boxes[b][3] < boxes[a][1];
+        CHECK(apart);
+      }
+  }
+}
+
+TEST_CASE("without the cut the default is unchanged: uv per vertex, uv_faces = F") {
+  const TriMesh grid = akvf::test::bumpy_disk(8, 8);
+  akvf::ParameterizeOptions options;
+  const akvf::ParameterizeResult plain = akvf::parameterize(grid.V, grid.F, options);
+  options.cut = "auto";
+  const akvf::ParameterizeResult cut = akvf::parameterize(grid.V, grid.F, options);
+  CHECK(plain.uv_faces == grid.F);
+  CHECK(cut.uv_faces == grid.F);  // a disk is not cut: same numbering
+  CHECK(cut.uv == plain.uv);
+  CHECK(cut.energy() == plain.energy());
+}
+
+TEST_CASE("param --cut auto writes the input's v and f with per-corner vt") {
+  namespace fs = std::filesystem;
+  const fs::path dir = akvf::test::scratch_dir("cut_auto");
+  const TriMesh torus = akvf::test::torus(10);
+  akvf::test::write_obj(dir / "torus.obj", torus);
+  const auto refused = akvf::test::run_cli({"param", (dir / "torus.obj").string(), "--quiet"});
+  CHECK(refused.code != 0);
+  CHECK(refused.err.find("--cut auto") != std::string::npos);
+
+  const auto r = akvf::test::run_cli(
+      {"param", (dir / "torus.obj").string(), "--cut", "auto", "--out", (dir / "uv.obj").string(), "--quiet"});
+  CHECK(r.code == 0);
+  CHECK(r.out.find("cut into 1 chart along ") != std::string::npos);
+  std::ifstream in(dir / "uv.obj");
+  std::string line;
+  std::vector<Eigen::RowVector2d> vt;
+  int v = 0, f = 0, inverted = 0;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string tag;
+    words >> tag;
+    if (tag == "v") ++v;
+    if (tag == "vt") {
+      Eigen::RowVector2d t;
+      words >> t[0] >> t[1];
+      vt.push_back(t);
+    }
+    if (tag == "f") {
+      ++f;
+      Eigen::RowVector2d corner[3];
+      for (int k = 0; k < 3; ++k) {
+        std::string pair;
+        words >> pair;
+        const int p = std::stoi(pair.substr(0, pair.find('/'))), t = std::stoi(pair.substr(pair.find('/') + 1));
+        CHECK(p == torus.F(f - 1, k) + 1);
+        REQUIRE(t >= 1);
+        REQUIRE(t <= static_cast<int>(vt.size()));
+        corner[k] = vt[t - 1];
+      }
+      const Eigen::RowVector2d e1 = corner[1] - corner[0], e2 = corner[2] - corner[0];
+      inverted += !(e1.x() * e2.y() - e1.y() * e2.x() > 0);
+    }
+  }
+  CHECK(v == torus.num_vertices());
+  CHECK(f == torus.num_faces());
+  CHECK(static_cast<int>(vt.size()) > torus.num_vertices());  // seam vertices have one vt per side
+  CHECK(inverted == 0);
+  fs::remove_all(dir);
+}
