@@ -14,6 +14,7 @@
 #include "experiments/cli/run_reporting.h"
 #include "experiments/cli/schema_options.h"
 #include "experiments/report/checker_texture.h"
+#include "experiments/report/gltf_writer.h"
 #include "experiments/report/run_summary.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/report/uv_png.h"
@@ -82,7 +83,10 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
 
   const Eigen::MatrixXd UV = output_uv(setup, result.x);
   const Eigen::MatrixXi UV_faces = output_uv_faces(setup);
-  if (!outputs.obj.empty() && lowercase_extension(outputs.obj) == ".ply") {
+  const std::string out_kind = lowercase_extension(outputs.obj);
+  if (!outputs.obj.empty() && out_kind == ".glb") {
+    write_glb(outputs.obj, input, unit_square_uv(UV), UV_faces, checker_image());
+  } else if (!outputs.obj.empty() && out_kind == ".ply") {
     if (setup.disk.cut) {
       write_ply_with_uv(outputs.obj, input, UV, UV_faces);
     } else {
@@ -111,9 +115,9 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
 
 int param_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::vector<OptionSpec> specs = {
-      {"out", "UV.{obj,ply}",
-       "write the input mesh with one `vt` per vertex (and UV.mtl, UV_checker.png: --texture), or a binary PLY with "
-       "per-vertex s, t"},
+      {"out", "UV.{obj,ply,glb}",
+       "write the input mesh with its `vt` (and UV.mtl, UV_checker.png: --texture); a binary PLY with per-vertex s, t "
+       "(per-corner texcoord with --cut auto); or a binary glTF with the checkerboard embedded"},
       {"texture", "checker|none",
        "with --out: checker writes UV.mtl and a checkerboard UV_checker.png beside it, vt scaled into the unit "
        "square; none writes vt at the input's scale (default checker)"},
@@ -154,7 +158,7 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   // Not beside a device or FIFO (--out /dev/null writes no /dev/null.mtl).
   outputs.texture =
       texture_mode == "checker" && lowercase_extension(outputs.obj) == ".obj" && !is_special_output(outputs.obj);
-  require_extension("--out", outputs.obj, {".obj", ".ply"});
+  require_extension("--out", outputs.obj, {".obj", ".ply", ".glb"});
   std::vector<FileArgument> written = {{"--out", outputs.obj},
                                        {"--trace", outputs.trace},
                                        {"--svg", outputs.svg},

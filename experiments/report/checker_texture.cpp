@@ -19,7 +19,7 @@ TextureFiles texture_files_for(const std::string& obj_path) {
   return files;
 }
 
-void write_checker_texture(const TextureFiles& files) {
+RgbImage checker_image() {
   constexpr int kSize = 1024, kSquares = 16;
   RgbImage image(kSize, kSize);
   for (int y = 0; y < kSize; ++y)
@@ -30,7 +30,11 @@ void write_checker_texture(const TextureFiles& files) {
       p[1] = dark ? 40 : 235;
       p[2] = dark ? 40 : 235;
     }
-  write_png(files.png, image);
+  return image;
+}
+
+void write_checker_texture(const TextureFiles& files) {
+  write_png(files.png, checker_image());
   write_file_atomically(files.mtl, [&](std::ostream& out) {
     out << "# written by akvf: the checkerboard of the parameterization\n"
         << "newmtl checker\nKa 1 1 1\nKd 1 1 1\nKs 0 0 0\nillum 1\nmap_Kd " << files.png_name << '\n';

@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "experiments/report/png_image.h"
+
 namespace akvf {
 
 struct TextureFiles {
@@ -16,7 +18,10 @@ struct TextureFiles {
 // UV.obj -> UV.mtl and UV_checker.png in the same folder.
 TextureFiles texture_files_for(const std::string& obj_path);
 
-// Writes the MTL and a 1024-pixel PNG of 16 x 16 squares.
+// A 1024-pixel image of 16 x 16 squares, grey 40 and 235.
+RgbImage checker_image();
+
+// Writes the MTL and the checker image as PNG.
 void write_checker_texture(const TextureFiles& files);
 
 // The layout scaled into the unit square (the texture's [0, 1]^2), keeping

@@ -35,18 +35,20 @@ bool encode(png_structp png, png_infop info, const RgbImage& image) {
 }  // namespace
 
 void write_png(const std::string& path, const RgbImage& image) {
-  if (image.width <= 0 || image.height <= 0) throw OutputError(path + ": an empty image");
-  write_file_atomically(path, [&](std::ostream& out) {
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, on_png_warning);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    bool ok = false;
-    if (info) {
-      png_set_write_fn(png, &out, write_to_stream, flush_stream);
-      ok = encode(png, info, image);
-    }
-    png_destroy_write_struct(&png, &info);
-    if (!ok) throw OutputError(path + ": libpng could not encode the image");
-  });
+  write_file_atomically(path, [&](std::ostream& out) { write_png(out, image, path); });
+}
+
+void write_png(std::ostream& out, const RgbImage& image, const std::string& what) {
+  if (image.width <= 0 || image.height <= 0) throw OutputError(what + ": an empty image");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, on_png_warning);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  bool ok = false;
+  if (info) {
+    png_set_write_fn(png, &out, write_to_stream, flush_stream);
+    ok = encode(png, info, image);
+  }
+  png_destroy_write_struct(&png, &info);
+  if (!ok) throw OutputError(what + ": libpng could not encode the image");
 }
 
 }  // namespace akvf

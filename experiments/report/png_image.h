@@ -1,6 +1,7 @@
 #pragma once
 // 8-bit RGB images and their PNG files (libpng), written atomically like
 // every output (framework/process/output_file.h).
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -15,5 +16,7 @@ struct RgbImage {
 
 // OutputError naming the path if the file cannot be written.
 void write_png(const std::string& path, const RgbImage& image);
+// The PNG file's bytes into `out` (an embedded image); errors name `what`.
+void write_png(std::ostream& out, const RgbImage& image, const std::string& what);
 
 }  // namespace akvf
