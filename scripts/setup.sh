@@ -9,6 +9,8 @@ packages=(
   libbenchmark-dev libceres-dev libopenblas-dev nlohmann-json3-dev libpng-dev
   pybind11-dev python3-dev python3-pybind11 python3-numpy python3-pytest  # the Python module (python/)
   clang libclang-rt-14-dev  # scripts/sanitize.sh: ASan, UBSan and libFuzzer
+  libjs-three  # three.js, embedded in the HTML views (akvf view)
+  chromium  # the browser test of the views (tests/browser/check_pages.py), headless
 )
 missing=()
 for p in "${packages[@]}"; do

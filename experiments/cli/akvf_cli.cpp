@@ -13,6 +13,7 @@
 #include "experiments/cli/experiment_command.h"
 #include "experiments/cli/param_command.h"
 #include "experiments/cli/plot_command.h"
+#include "experiments/cli/view_command.h"
 #include "framework/process/error.h"
 
 namespace {
@@ -25,6 +26,7 @@ const char* kUsage =
     "  demo         parameterize a built-in mesh and write its outputs (no input files)\n"
     "  deform TETS  deform a tet mesh with positional constraints (.mesh, .obj or .tet)\n"
     "  plot TRACES  SVG line plot of trace CSV files (energy against iterations or seconds)\n"
+    "  view UV.obj  one self-contained HTML page: the checkerboard on the surface, the layout\n"
     "  experiment MANIFEST  run a manifest of cases (shard, resume, merge); tables and plots\n"
     "  list         list energies, preconditioners and line searches\n"
     "  help         show this help (also -h, --help)\n"
@@ -86,6 +88,7 @@ int run_akvf(std::vector<std::string> args, std::ostream& out, std::ostream& err
     if (command == "demo") return demo_command(args, out, err);
     if (command == "deform") return deform_command(args, out, err);
     if (command == "plot") return plot_command(args, out, err);
+    if (command == "view") return view_command(args, out, err);
     if (command == "experiment") return experiment_command(args, out, err);
     if (command == "list") return list_command(args, out);
     err << "akvf: unknown command '" << command << "'\n\n" << kUsage;

@@ -15,6 +15,7 @@
 #include "experiments/cli/schema_options.h"
 #include "experiments/report/checker_texture.h"
 #include "experiments/report/gltf_writer.h"
+#include "experiments/report/html_view.h"
 #include "experiments/report/run_summary.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/report/uv_png.h"
@@ -31,7 +32,7 @@ namespace akvf {
 namespace {
 
 struct Outputs {
-  std::string obj, trace, svg, summary, png;
+  std::string obj, trace, svg, summary, png, view;
   bool texture = false;  // --texture checker: UV.mtl and the checkerboard beside the OBJ
   int png_size = 1024;
 };
@@ -107,7 +108,14 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
                      name + " - " + run.preconditioner_name + ", " + std::to_string(last.iteration) +
                          " iterations, E = " + std::to_string(last.energy));
   if (!outputs.png.empty()) write_layout_png(outputs.png, setup, result.x, outputs.png_size);
-  if (!outputs.summary.empty()) write_summary(outputs.summary, param_summary(name, options, setup, result));
+  if (!outputs.summary.empty() || !outputs.view.empty()) {
+    const Json summary = param_summary(name, options, setup, result);
+    if (!outputs.summary.empty()) write_summary(outputs.summary, summary);
+    if (!outputs.view.empty()) {
+      ViewContent view{input, UV, UV_faces, std::filesystem::path(name).filename().string(), summary, ""};
+      write_html_view(outputs.view, view);
+    }
+  }
   return exit_code_of(result);
 }
 
@@ -127,6 +135,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
       {"png-size", "N", "the PNG's longer side in pixels, 16 to 16384 (default 1024)"},
       {"summary", "RUN.json",
        "write the run's summary: options, status, iterations, energy, memory (docs/experiments.md)"},
+      {"view", "VIEW.html",
+       "write one self-contained HTML page: the checkerboard on the surface, the layout, the summary (akvf view)"},
   };
   for (auto& spec : optimization_options()) specs.push_back(spec);
   CommandLine cl(
@@ -142,8 +152,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   if (cl.positional().size() != 1) throw OptionsError("expected exactly one mesh file (see --help)");
   const ParameterizeOptions options = options_from(cl);
   const std::string& path = cl.positional()[0];
-  Outputs outputs{cl.text("out", ""), cl.text("trace", ""), cl.text("svg", ""), cl.text("summary", ""),
-                  cl.text("png", "")};
+  Outputs outputs{cl.text("out", ""), cl.text("trace", ""),   cl.text("svg", ""),
+                  cl.text("summary", ""), cl.text("png", ""), cl.text("view", "")};
   if (cl.has("png-size")) {
     long long size = 0;
     if (!parse_integer(cl.text("png-size", ""), &size) || size < 16 || size > 16384)
@@ -152,6 +162,7 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
     outputs.png_size = static_cast<int>(size);
   }
   require_extension("--png", outputs.png, {".png"});
+  require_extension("--view", outputs.view, {".html", ".htm"});
   const std::string texture_mode = cl.text("texture", "checker");
   if (texture_mode != "checker" && texture_mode != "none")
     throw OptionsError("option --texture must be checker or none, found '" + texture_mode + "'");
@@ -163,7 +174,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
                                        {"--trace", outputs.trace},
                                        {"--svg", outputs.svg},
                                        {"--summary", outputs.summary},
-                                       {"--png", outputs.png}};
+                                       {"--png", outputs.png},
+                                       {"--view", outputs.view}};
   if (outputs.texture) {  // the files written beside the OBJ are outputs too
     const TextureFiles files = texture_files_for(outputs.obj);
     written.push_back({"the MTL of --out", files.mtl});
@@ -186,8 +198,9 @@ int demo_command(const std::vector<std::string>& args, std::ostream& out, std::o
   CommandLine cl(
       "akvf demo [--out-dir DIR] [options]\n\n"
       "Builds the bent bar of the paper's Figure 2 in code (a developable strip rolled\n"
-      "onto a cylinder), parameterizes it, and writes demo_uv.obj, demo_trace.csv and\n"
-      "demo_layout.svg. The optimum energy is exactly the lower bound 4.",
+      "onto a cylinder), parameterizes it, and writes demo_uv.obj (with demo_uv.mtl and the\n"
+      "checkerboard demo_uv_checker.png), demo_trace.csv, demo_layout.svg, demo_summary.json\n"
+      "and demo_view.html (open it in a browser). The optimum energy is exactly the lower bound 4.",
       specs);
   cl.parse(args);
   if (cl.has("help")) {
@@ -198,13 +211,26 @@ int demo_command(const std::vector<std::string>& args, std::ostream& out, std::o
   const ParameterizeOptions options = options_from(cl);
   const std::filesystem::path dir = cl.text("out-dir", "akvf-demo");
   create_output_folder(dir.string());
-  const Outputs outputs{(dir / "demo_uv.obj").string(), (dir / "demo_trace.csv").string(),
-                        (dir / "demo_layout.svg").string(), "", ""};
-  check_file_arguments({}, {{"the UV OBJ", outputs.obj}, {"the trace", outputs.trace}, {"the layout", outputs.svg}});
+  Outputs outputs{(dir / "demo_uv.obj").string(),      (dir / "demo_trace.csv").string(),
+                  (dir / "demo_layout.svg").string(),  (dir / "demo_summary.json").string(),
+                  "",                                  html_view_available() ? (dir / "demo_view.html").string() : ""};
+  outputs.texture = true;
+  const TextureFiles texture = texture_files_for(outputs.obj);
+  check_file_arguments({}, {{"the UV OBJ", outputs.obj},
+                            {"its MTL", texture.mtl},
+                            {"its checkerboard", texture.png},
+                            {"the trace", outputs.trace},
+                            {"the layout", outputs.svg},
+                            {"the summary", outputs.summary},
+                            {"the view", outputs.view}});
   const ThreadLimit threads(options.threads);
   const int code = run_and_write(bent_bar(), "bent-bar", options, {}, outputs, cl.has("quiet"), out, err);
-  out << "wrote " << (dir / "demo_uv.obj").string() << ", " << (dir / "demo_trace.csv").string() << ", "
-      << (dir / "demo_layout.svg").string() << '\n';
+  out << "wrote " << outputs.obj << " (+ " << texture.mtl_name << ", " << texture.png_name << "), " << outputs.trace
+      << ", " << outputs.svg << ", " << outputs.summary;
+  if (!outputs.view.empty()) out << ", " << outputs.view;
+  out << '\n';
+  if (outputs.view.empty())
+    err << "warning: no demo_view.html: this build has no three.js (install libjs-three: bash scripts/setup.sh)\n";
   return code;
 }
 

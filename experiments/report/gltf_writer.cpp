@@ -5,12 +5,11 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <vector>
 
-#include "framework/mesh/mesh_io.h"
+#include "experiments/report/seam_split_mesh.h"
 #include "framework/process/error.h"
 #include "framework/process/output_file.h"
 
@@ -63,28 +62,17 @@ static_assert(std::endian::native == std::endian::little, "the buffers are copie
 
 void write_glb(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& UV_faces,
                const RgbImage& texture) {
-  check_corner_uv(mesh, UV, UV_faces);
-  // One glTF vertex per distinct (vertex, uv row) pair, in first-use order.
-  std::map<std::pair<int, int>, std::uint32_t> vertex_of;
+  const SeamSplitMesh split = split_at_seams(mesh, UV, UV_faces);
   std::vector<float> positions, texcoords;
   std::vector<std::uint32_t> indices;
-  indices.reserve(3 * static_cast<std::size_t>(mesh.num_faces()));
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (int f = 0; f < mesh.num_faces(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const auto [it, added] =
-          vertex_of.emplace(std::make_pair(mesh.F(f, k), UV_faces(f, k)), static_cast<std::uint32_t>(vertex_of.size()));
-      if (added) {
-        for (int c = 0; c < 3; ++c) positions.push_back(to_float(mesh.V(mesh.F(f, k), c), path));
-        texcoords.push_back(to_float(UV(UV_faces(f, k), 0), path));
-        texcoords.push_back(to_float(1 - UV(UV_faces(f, k), 1), path));
-        for (int c = 0; c < 3; ++c) {
-          low[c] = std::min<double>(low[c], positions[positions.size() - 3 + c]);
-          high[c] = std::max<double>(high[c], positions[positions.size() - 3 + c]);
-        }
-      }
-      indices.push_back(it->second);
-    }
+  for (int v = 0; v < split.mesh.num_vertices(); ++v) {
+    for (int c = 0; c < 3; ++c) positions.push_back(to_float(split.mesh.V(v, c), path));
+    texcoords.push_back(to_float(split.uv(v, 0), path));
+    texcoords.push_back(to_float(1 - split.uv(v, 1), path));
+  }
+  for (int f = 0; f < split.mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) indices.push_back(static_cast<std::uint32_t>(split.mesh.F(f, k)));
+  const Eigen::Vector3d low = split.mesh.V.colwise().minCoeff(), high = split.mesh.V.colwise().maxCoeff();
   std::ostringstream png;
   write_png(png, texture, path + ": the embedded texture");
   const std::string png_bytes = png.str();
@@ -118,8 +106,8 @@ void write_glb(const std::string& path, const TriMesh& mesh, const Eigen::Matrix
          {"componentType", kFloat},
          {"count", vertices},
          {"type", "VEC3"},
-         {"min", {low[0], low[1], low[2]}},
-         {"max", {high[0], high[1], high[2]}}},
+         {"min", {static_cast<float>(low[0]), static_cast<float>(low[1]), static_cast<float>(low[2])}},
+         {"max", {static_cast<float>(high[0]), static_cast<float>(high[1]), static_cast<float>(high[2])}}},
         {{"bufferView", texcoord_view}, {"componentType", kFloat}, {"count", vertices}, {"type", "VEC2"}},
         {{"bufferView", index_view}, {"componentType", kUnsignedInt}, {"count", indices.size()}, {"type", "SCALAR"}}}},
       {"bufferViews", views},

@@ -1,0 +1,63 @@
+#include "experiments/cli/view_command.h"
+
+#include <filesystem>
+
+#include "experiments/cli/command_line.h"
+#include "experiments/cli/exit_codes.h"
+#include "experiments/cli/file_arguments.h"
+#include "experiments/report/html_view.h"
+#include "experiments/report/json_text.h"
+#include "framework/mesh/mesh_io.h"
+#include "framework/process/error.h"
+
+namespace akvf {
+
+int view_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CommandLine cl(
+      "akvf view UV.{obj,ply} [--summary RUN.json] [--out VIEW.html]\n\n"
+      "Writes one self-contained HTML page (nothing is fetched when it is opened): the surface\n"
+      "under a checkerboard (drag to orbit, wheel to zoom), the UV layout beside it, a switch to\n"
+      "colour both by distortion, and the run's summary. UV.obj is what `akvf param --out` writes.",
+      {
+          {"summary", "RUN.json", "a run's summary (akvf param --summary) shown beside the view"},
+          {"out", "VIEW.html", "the page to write (default: the mesh's name with .html)"},
+          {"title", "TEXT", "the page's title (default: the mesh's file name)"},
+          {"help", "", "show this help (also -h)"},
+      });
+  cl.parse(args);
+  if (cl.has("help")) {
+    out << cl.help();
+    return kExitOk;
+  }
+  if (cl.positional().size() != 1) throw OptionsError("expected exactly one textured mesh file (see --help)");
+  const std::string path = cl.positional()[0];
+  const std::string out_path =
+      cl.text("out", std::filesystem::path(path).replace_extension(".html").string());
+  const std::string summary_path = cl.text("summary", "");
+  require_extension("--out", out_path, {".html", ".htm"});
+  std::vector<FileArgument> inputs = {{"the mesh", path}};
+  if (!summary_path.empty()) inputs.push_back({"--summary", summary_path});
+  check_file_arguments(inputs, {{"--out", out_path}});
+
+  Warnings warnings;
+  ViewContent content;
+  MeshTexture texture;
+  content.mesh = read_triangle_mesh(path, &warnings, &texture);
+  for (const auto& warning : warnings) err << "warning: " << warning << '\n';
+  if (texture.empty())
+    throw InputError(path + ": has no texture coordinates (OBJ vt, PLY u,v); write one with akvf param --out");
+  for (int f = 0; f < texture.corner.rows(); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (texture.corner(f, k) < 0)
+        throw InputError(path + ": face " + file_number(f, content.mesh.index_base) +
+                         numbering_note(content.mesh.index_base) + " has a corner without a texture coordinate");
+  content.uv = texture.uv;
+  content.uv_faces = texture.corner;
+  content.title = cl.text("title", std::filesystem::path(path).filename().string());
+  if (!summary_path.empty()) content.summary = read_json_file(summary_path);
+  write_html_view(out_path, content);
+  out << "wrote " << out_path << " (" << content.mesh.num_faces() << " faces)\n";
+  return kExitOk;
+}
+
+}  // namespace akvf

@@ -1,0 +1,36 @@
+#pragma once
+// `akvf view`: one self-contained HTML page (three.js and the data embedded,
+// nothing fetched when opened) with the surface under the checkerboard
+// (orbit, zoom), the UV layout beside it, a switch to colour both by
+// distortion, and the run's summary.
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "framework/mesh/mesh.h"
+
+namespace akvf {
+
+struct ViewContent {
+  TriMesh mesh;              // the surface in 3D
+  Eigen::MatrixXd uv;        // #T by 2, any scale
+  Eigen::MatrixXi uv_faces;  // #F by 3 rows of uv
+  std::string title;
+  nlohmann::ordered_json summary;  // a run's summary (docs/experiments.md), or null
+  std::string note;        // shown under the title, e.g. what was left out
+};
+
+// The symmetric Dirichlet distortion of each face under the map, with the
+// map scaled to the surface's area (the energy's scale, so 4 is isometric;
+// +infinity where the map inverts or collapses a face).
+Eigen::VectorXd face_symmetric_dirichlet(const TriMesh& mesh, const Eigen::MatrixXd& uv,
+                                         const Eigen::MatrixXi& uv_faces);
+
+// True when this build embeds three.js (libjs-three was found).
+bool html_view_available();
+
+// Writes the page atomically. OutputError when three.js is not embedded
+// (saying what to install) or the file cannot be written.
+void write_html_view(const std::string& path, const ViewContent& content);
+
+}  // namespace akvf
