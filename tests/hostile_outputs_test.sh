@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Hostile output paths for every command that writes (param, deform, plot,
-# demo, experiment) on the real program: a symbolic link, a FIFO, a character
+# view, demo, experiment) on the real program: a symbolic link, a FIFO, a character
 # device (when run as root), a folder, an unwritable folder, an output equal
 # to an input and two equal outputs. Each must either work without replacing
 # anything it should not, or fail with the documented exit code before any
@@ -50,7 +50,7 @@ Tetrahedra
 End
 MESH
 printf '0 0 0 0\n4 1.2 1 1\n' > c.txt
-"$akvf" param m.obj -q --trace trace.csv > /dev/null || fail "setup: param"
+"$akvf" param m.obj -q --trace trace.csv --out tex.obj > /dev/null || fail "setup: param"
 cp m.obj m.orig; cp t.mesh t.orig; cp c.txt c.orig; cp trace.csv trace.orig
 cat > e.json <<'JSON'
 {"name": "e", "meshes": [{"label": "a", "file": "m.obj"}], "methods": [{"label": "m", "max_iters": 3}]}
@@ -66,6 +66,9 @@ expect 0 "deform --out LINK" "$akvf" deform t.mesh --constraints c.txt -q --max-
 ln -s real.svg link.svg
 expect 0 "plot --out LINK" "$akvf" plot trace.csv --out link.svg
 [ -L link.svg ] && grep -q '<svg' real.svg || fail "plot --out LINK"
+ln -s real.html link.html
+expect 0 "view --out LINK" "$akvf" view tex.obj --out link.html
+[ -L link.html ] && grep -q '<html' real.html || fail "view --out LINK"
 mkdir demo_real && ln -s demo_real demo_link
 expect 0 "demo --out-dir LINK" "$akvf" demo --out-dir demo_link -q
 [ -L demo_link ] && [ -f demo_real/demo_uv.obj ] || fail "demo --out-dir LINK"
@@ -86,13 +89,15 @@ wait
 [ -p pipe ] && grep -q '<svg' from_pipe || fail "plot --out FIFO"
 
 # 3. A character device is written in place (as root this is where /dev/null used to be replaced).
-for out in "--out /dev/null" "--trace /dev/null" "--svg /dev/null" "--png /dev/null" "--summary /dev/null"; do
+for out in "--out /dev/null" "--trace /dev/null" "--svg /dev/null" "--png /dev/null" "--summary /dev/null" \
+  "--view /dev/null"; do
   expect 0 "param $out" "$akvf" param m.obj -q $out
 done
 [ ! -e /dev/null.mtl ] && [ ! -e /dev/null_checker.png ] || fail "--out /dev/null wrote a texture into /dev"
 expect 0 "deform --out /dev/null" "$akvf" deform t.mesh --constraints c.txt -q --max-iters 2 --trace /dev/null
 expect 0 "deform --summary /dev/null" "$akvf" deform t.mesh --constraints c.txt -q --max-iters 2 --summary /dev/null
 expect 0 "plot --out /dev/null" "$akvf" plot trace.csv --out /dev/null
+expect 0 "view --out /dev/null" "$akvf" view tex.obj --out /dev/null
 [ -c /dev/null ] || fail "/dev/null is no longer a character device"
 
 # 4. A folder as output: exit 4 before any work, nothing written.
@@ -103,6 +108,10 @@ expect 4 "param --png IN-A-MISSING-FOLDER" "$akvf" param m.obj -q --png missing/
 expect 4 "param --summary FOLDER" "$akvf" param m.obj -q --summary folder
 expect 4 "deform --out FOLDER" "$akvf" deform t.mesh --constraints c.txt -q --out folder
 expect 4 "plot --out FOLDER" "$akvf" plot trace.csv --out folder
+mkdir folder.html
+expect 4 "param --view FOLDER" "$akvf" param m.obj -q --view folder.html
+expect 4 "view --out FOLDER" "$akvf" view tex.obj --out folder.html
+[ -z "$(ls -A folder.html)" ] || fail "something was written into folder.html"
 [ -z "$(ls -A folder)" ] || fail "something was written into folder"
 grep -q '^status' "$dir/stdout" && fail "the optimization ran before the output was checked"
 printf 'x' > plainfile
@@ -137,13 +146,18 @@ expect 2 "param --out ALIAS-OF-INPUT" "$akvf" param m.obj -q --out mesh_alias.ob
 expect 2 "deform --out INPUT" "$akvf" deform t.mesh --constraints c.txt -q --out t.mesh
 expect 2 "deform --trace CONSTRAINTS" "$akvf" deform t.mesh --constraints c.txt -q --trace c.txt
 expect 2 "plot --out INPUT" "$akvf" plot trace.csv --out trace.csv
+cp tex.obj tex.orig; ln -s tex.obj tex_alias.html
+expect 2 "view --out ALIAS-OF-INPUT" "$akvf" view tex.obj --out tex_alias.html
+expect 2 "view --out = --summary" "$akvf" view tex.obj --summary tex_alias.html --out tex_alias.html
+cmp -s tex.obj tex.orig || fail "view replaced its input"
 cmp -s m.obj m.orig && cmp -s t.mesh t.orig && cmp -s c.txt c.orig && cmp -s trace.csv trace.orig || fail "an input changed"
 
 # 7. Two outputs naming one file: exit 2, nothing written.
 expect 2 "param --out X --trace X --svg X" "$akvf" param m.obj -q --out x.obj --trace x.obj --svg x.obj
 expect 2 "param --png X --summary X" "$akvf" param m.obj -q --png x.png --summary x.png
 expect 2 "param --png = the texture of --out" "$akvf" param m.obj -q --out y.obj --png y_checker.png
-[ ! -e x.png ] && [ ! -e y.obj ] && [ ! -e y.mtl ] || fail "a clashing output was written"
+expect 2 "param --view X --summary X" "$akvf" param m.obj -q --view z.html --summary z.html
+[ ! -e x.png ] && [ ! -e y.obj ] && [ ! -e y.mtl ] && [ ! -e z.html ] || fail "a clashing output was written"
 expect 2 "deform --out X --trace X" "$akvf" deform t.mesh --constraints c.txt -q --out x.mesh --trace x.mesh
 [ ! -e x.obj ] && [ ! -e x.mesh ] || fail "a clashing output was written"
 

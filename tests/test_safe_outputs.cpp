@@ -194,7 +194,7 @@ TEST_CASE("command-line consistency: threads, extensions, ranges, aliases, versi
   r = akvf_run({"param", mesh, "--out", (dir / "uv.off").string()});
   CHECK(r.code == akvf::kExitUsageError);
   CHECK(r.err == "error: option --out: cannot write '" + (dir / "uv.off").string() +
-                     "': no writer produces '.off' (formats: .obj, .ply)\n");
+                     "': no writer produces '.off' (formats: .obj, .ply, .glb)\n");
   r = akvf_run({"param", mesh, "--max-iters", "99999999999999"});
   CHECK(r.err == "error: option --max-iters: 99999999999999 is out of range (-2147483648 to 2147483647)\n");
   r = akvf_run({"param", mesh, "--max-iters", "1e400"});

@@ -163,6 +163,7 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   }
   require_extension("--png", outputs.png, {".png"});
   require_extension("--view", outputs.view, {".html", ".htm"});
+  if (!outputs.view.empty()) require_html_view();
   const std::string texture_mode = cl.text("texture", "checker");
   if (texture_mode != "checker" && texture_mode != "none")
     throw OptionsError("option --texture must be checker or none, found '" + texture_mode + "'");

@@ -35,6 +35,7 @@ int view_command(const std::vector<std::string>& args, std::ostream& out, std::o
       cl.text("out", std::filesystem::path(path).replace_extension(".html").string());
   const std::string summary_path = cl.text("summary", "");
   require_extension("--out", out_path, {".html", ".htm"});
+  require_html_view();
   std::vector<FileArgument> inputs = {{"the mesh", path}};
   if (!summary_path.empty()) inputs.push_back({"--summary", summary_path});
   check_file_arguments(inputs, {{"--out", out_path}});

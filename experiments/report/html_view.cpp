@@ -120,10 +120,15 @@ Eigen::VectorXd face_symmetric_dirichlet(const TriMesh& mesh, const Eigen::Matri
 
 bool html_view_available() { return embedded::three_js != nullptr && embedded::orbit_controls_js != nullptr; }
 
-void write_html_view(const std::string& path, const ViewContent& content) {
+void require_html_view() {
   if (!html_view_available())
-    throw OutputError(path + ": this build of akvf has no three.js to embed in the view; install Debian's "
-                             "libjs-three (bash scripts/setup.sh) and rebuild");
+    throw OptionsError(
+        "this build of akvf has no three.js to embed in an HTML view; install Debian's libjs-three (bash "
+        "scripts/setup.sh) and rebuild");
+}
+
+void write_html_view(const std::string& path, const ViewContent& content) {
+  require_html_view();
   const std::string data = script_safe(page_data(content).dump());
   write_file_atomically(path, [&](std::ostream& out) {
     out << "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"

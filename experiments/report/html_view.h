@@ -28,9 +28,11 @@ Eigen::VectorXd face_symmetric_dirichlet(const TriMesh& mesh, const Eigen::Matri
 
 // True when this build embeds three.js (libjs-three was found).
 bool html_view_available();
+// OptionsError saying what to install unless html_view_available().
+void require_html_view();
 
-// Writes the page atomically. OutputError when three.js is not embedded
-// (saying what to install) or the file cannot be written.
+// Writes the page atomically. OptionsError when three.js is not embedded
+// (require_html_view), OutputError when the file cannot be written.
 void write_html_view(const std::string& path, const ViewContent& content);
 
 }  // namespace akvf

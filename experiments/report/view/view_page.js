@@ -95,7 +95,7 @@
   camera.near = sphere.radius / 100;
   camera.far = sphere.radius * 100;
   // Seen from the front (+z, the file's usual up +y), a little from above and the side.
-  camera.position.copy(sphere.center).add(new THREE.Vector3(0.35, 0.3, 1).normalize().multiplyScalar(sphere.radius * 3.2));
+  camera.position.copy(sphere.center).add(new THREE.Vector3(0.35, 0.3, 1).normalize().multiplyScalar(sphere.radius * 2.7));
   const controls = new THREE.OrbitControls(camera, renderer.domElement);
   controls.target.copy(sphere.center);
   controls.addEventListener('change', render);
