@@ -106,6 +106,12 @@ TEST_CASE("a tiny manifest runs end to end; shards merged give the same results 
   CHECK(fs::exists(dir / "all" / "plots" / "bumpy-iterations.svg"));
   CHECK(fs::exists(dir / "all" / "plots" / "bumpy-small-seconds.svg"));
   CHECK(fs::exists(dir / "all" / "cases" / "bumpy--akvf" / "iter-2.svg"));
+  // index.html: the table, the plots and per case its links (no views without --views).
+  const std::string index = read_text(dir / "all" / "index.html");
+  CHECK(index.find("<th>paper AKVF</th>") != std::string::npos);
+  CHECK(index.find("<img src=\"plots/bumpy-iterations.svg\"") != std::string::npos);
+  CHECK(index.find("<a href=\"cases/bumpy--akvf/final.svg\">") != std::string::npos);
+  CHECK(index.find("view.html") == std::string::npos);
   const auto summary = nlohmann::json::parse(read_text(dir / "all" / "cases" / "bumpy--akvf" / "summary.json"));
   CHECK(summary["reached"] == true);
   CHECK(summary["max_flips"] == 0);
@@ -131,6 +137,13 @@ TEST_CASE("a tiny manifest runs end to end; shards merged give the same results 
     ++compared;
   }
   CHECK(compared == 6);
+  // --views: a view per parameterization case, linked from index.html.
+  REQUIRE(akvf_run({"experiment", manifest, "--data-dir", data.string(), "--out-dir", (dir / "views").string(),
+                    "--views", "--shard", "1/2"}) == akvf::kExitOk);
+  CHECK(fs::exists(dir / "views" / "cases" / "bumpy--akvf" / "view.html"));
+  CHECK(read_text(dir / "views" / "cases" / "bumpy--akvf" / "view.html").find("\"final_energy\"") !=
+        std::string::npos);
+  CHECK(read_text(dir / "views" / "index.html").find("<a href=\"cases/bumpy--akvf/view.html\">") != std::string::npos);
 
   REQUIRE(
       akvf_run({"experiment", manifest, "--data-dir", data.string(), "--out-dir", (dir / "all").string(), "--resume"},

@@ -8,6 +8,7 @@
 #include "experiments/cli/exit_codes.h"
 #include "experiments/cli/run_reporting.h"
 #include "experiments/report/experiment_report.h"
+#include "experiments/report/html_view.h"
 #include "experiments/runner/experiment_runner.h"
 #include "framework/process/error.h"
 
@@ -19,16 +20,17 @@ const char* kMergeUsage =
     "akvf experiment merge RESULTS_DIR... [--out-dir DIR]\n\n"
     "Joins the results folders of the shards of one manifest (they must hold the same manifest.json)\n"
     "into --out-dir (default: the first folder), then writes the reports of the whole: table.md,\n"
-    "table.csv and plots/*.svg. A case present in two folders must have the same status and iterations.";
+    "table.csv, plots/*.svg and index.html. A case present in two folders must have the same status and iterations.";
 const char* kReportUsage =
     "akvf experiment report RESULTS_DIR\n\n"
-    "Writes table.md, table.csv and plots/*.svg again from the cases of a results folder.";
+    "Writes table.md, table.csv, plots/*.svg and index.html again from the cases of a results folder.";
 const char* kUsage =
-    "akvf experiment MANIFEST.json [--data-dir DIR] [--out-dir DIR] [--shard I/N] [--resume] [--threads N]\n"
+    "akvf experiment MANIFEST.json [--data-dir DIR] [--out-dir DIR] [--shard I/N] [--resume] [--views] [--threads N]\n"
     "akvf experiment merge RESULTS_DIR... [--out-dir DIR]\n"
     "akvf experiment report RESULTS_DIR\n\n"
     "Runs every mesh x method case of a manifest (schema: docs/experiments.md), writing per case a trace\n"
-    "CSV and a JSON summary, then the reports: table.md, table.csv and plots/*.svg in the results folder.\n"
+    "CSV and a JSON summary (and with --views an HTML view of the final map), then the reports: table.md,\n"
+    "table.csv, plots/*.svg and index.html (the table, the plots and a link to each case) in the results folder.\n"
     "--shard I/N runs every N-th case (cases I, I+N, ...; 1-based) so a sweep can be split across\n"
     "machines or job-array tasks; `merge` joins their folders and writes the reports of the whole.";
 
@@ -61,6 +63,9 @@ int experiment_command(const std::vector<std::string>& args, std::ostream& out, 
                              {"out-dir", "DIR", "results folder (default experiment-results/<manifest name>)"},
                              {"shard", "I/N", "run only cases I, I+N, I+2N, ... (1-based)"},
                              {"resume", "", "skip cases whose summary.json exists"},
+                             {"views", "",
+                              "write cases/<id>/view.html (akvf view) for parameterizations up to " +
+                                  std::to_string(kViewFaceLimit) + " faces"},
                              {"threads", "N", "worker threads per case (default: all cores)"},
                              {"help", "", "show this help"},
                          });
@@ -100,6 +105,8 @@ int experiment_command(const std::vector<std::string>& args, std::ostream& out, 
   options.out_dir = cl.text("out-dir", join_path("experiment-results", slug(manifest.name)));
   if (cl.has("shard")) parse_shard(cl.text("shard", ""), &options);
   options.resume = cl.has("resume");
+  options.views = cl.has("views");
+  if (options.views) require_html_view();
   bool needs_data = false;
   for (const ManifestMesh& mesh : manifest.meshes) needs_data |= !mesh.file.empty();
   if (needs_data && !std::filesystem::is_directory(options.data_dir))

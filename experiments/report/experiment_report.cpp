@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "experiments/report/html_view.h"
 #include "experiments/report/line_plot.h"
 #include "experiments/report/text_utilities.h"
 #include "experiments/report/trace_csv.h"
@@ -57,6 +58,52 @@ std::string csv_field(const Json& s, const char* key) {
   return text.str();
 }
 
+// The case's pictures and view beside its id, as links relative to the folder.
+std::string case_links(const std::string& out_dir, const ExperimentCase& c, const Json& summary) {
+  const std::string folder = "cases/" + c.id + "/";
+  std::string links;
+  for (const char* name : {"view.html", "final.svg", "final.png", "trace.csv"})
+    if (fs::exists(join_path(out_dir, folder + name)))
+      links += " <a href=\"" + xml_escape(folder + name) + "\">" + name + "</a>";
+  if (!fs::exists(join_path(out_dir, folder + "view.html")) && summary.contains("elements") &&
+      summary["elements"].get<long long>() > kViewFaceLimit)
+    links += " (no view: " + std::to_string(summary["elements"].get<long long>()) +
+             " faces, above the view's limit of " + std::to_string(kViewFaceLimit) +
+             "; decimation for display is not implemented)";
+  return links;
+}
+
+// OUT/index.html: the table, the plots, and per case its view, final layout
+// and trace (views exist where the run had --views).
+void write_index_html(const std::string& out_dir, const Manifest& manifest, const std::vector<Json>& summaries,
+                      const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows,
+                      const std::vector<std::string>& plots) {
+  const std::string title = manifest.name.empty() ? "akvf experiment" : manifest.name;
+  write_file_atomically(join_path(out_dir, "index.html"), [&](std::ostream& out) {
+    out << "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << xml_escape(title)
+        << "</title>\n<style>body{font:14px/1.4 system-ui,sans-serif;margin:16px}table{border-collapse:collapse}"
+           "td,th{border:1px solid #ccc;padding:3px 8px;text-align:left;vertical-align:top}"
+           "img{max-width:48%;margin:4px}</style>\n</head>\n<body>\n<h1>"
+        << xml_escape(title) << "</h1>\n";
+    if (!manifest.description.empty()) out << "<p>" << xml_escape(manifest.description) << "</p>\n";
+    out << "<table>\n<tr>";
+    for (const std::string& text : header) out << "<th>" << xml_escape(text) << "</th>";
+    out << "</tr>\n";
+    for (const auto& row : rows) {
+      out << "<tr>";
+      for (const std::string& text : row) out << "<td>" << xml_escape(text) << "</td>";
+      out << "</tr>\n";
+    }
+    out << "</table>\n<h2>Plots</h2>\n";
+    for (const std::string& plot : plots) out << "<img src=\"" << xml_escape(plot) << "\" alt=\"" << xml_escape(plot) << "\">\n";
+    out << "<h2>Cases</h2>\n<ul>\n";
+    for (const ExperimentCase& c : manifest.cases)
+      out << "<li>" << xml_escape(c.mesh_label + " / " + c.method_label) << ":"
+          << case_links(out_dir, c, summaries[c.index]) << "</li>\n";
+    out << "</ul>\n</body>\n</html>\n";
+  });
+}
+
 }  // namespace
 
 std::string write_experiment_report(const std::string& out_dir) {
@@ -75,13 +122,12 @@ std::string write_experiment_report(const std::string& out_dir) {
       if (std::find(paper_columns.begin(), paper_columns.end(), column) == paper_columns.end())
         paper_columns.push_back(column);
 
-  std::ostringstream md;
-  md << "| mesh | faces | ";
-  for (const std::string& method : manifest.methods) md << method << " | ";
-  for (const std::string& column : paper_columns) md << "paper " << column << " | ";
-  md << "note |\n|---|---|";
-  for (std::size_t i = 0; i < manifest.methods.size() + paper_columns.size(); ++i) md << "---|";
-  md << "---|\n";
+  // The table as cells, written as Markdown (table.md) and HTML (index.html).
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> header = {"mesh", "faces"};
+  for (const std::string& method : manifest.methods) header.push_back(method);
+  for (const std::string& column : paper_columns) header.push_back("paper " + column);
+  header.push_back("note");
   const std::size_t per_mesh = manifest.methods.size();
   for (std::size_t i = 0; i < manifest.meshes.size(); ++i) {
     const ManifestMesh& mesh = manifest.meshes[i];
@@ -90,14 +136,26 @@ std::string write_experiment_report(const std::string& out_dir) {
       const Json& s = summaries[i * per_mesh + j];
       if (!s.is_null() && s.contains("elements")) faces = std::to_string(s["elements"].get<int>());
     }
-    md << "| " << mesh.label << " | " << faces << " | ";
-    for (std::size_t j = 0; j < per_mesh; ++j) md << cell(summaries[i * per_mesh + j], manifest.table_value) << " | ";
+    std::vector<std::string> row = {mesh.label, faces};
+    for (std::size_t j = 0; j < per_mesh; ++j) row.push_back(cell(summaries[i * per_mesh + j], manifest.table_value));
     for (const std::string& column : paper_columns) {
       const auto found =
           std::find_if(mesh.paper.begin(), mesh.paper.end(), [&](const auto& entry) { return entry.first == column; });
-      md << (found != mesh.paper.end() ? number(found->second) : "") << " | ";
+      row.push_back(found != mesh.paper.end() ? number(found->second) : "");
     }
-    md << (mesh.missing.empty() ? mesh.note : "not available: " + mesh.missing) << " |\n";
+    row.push_back(mesh.missing.empty() ? mesh.note : "not available: " + mesh.missing);
+    rows.push_back(std::move(row));
+  }
+  std::ostringstream md;
+  md << "|";
+  for (const std::string& title : header) md << " " << title << " |";
+  md << "\n|";
+  for (std::size_t k = 0; k < header.size(); ++k) md << "---|";
+  md << "\n";
+  for (const auto& row : rows) {
+    md << "|";
+    for (const std::string& text : row) md << " " << text << " |";
+    md << "\n";
   }
   const std::string table = md.str();
   write_file_atomically(join_path(out_dir, "table.md"), [&](std::ostream& out) { out << table; });
@@ -119,6 +177,7 @@ std::string write_experiment_report(const std::string& out_dir) {
   });
 
   fs::create_directories(join_path(out_dir, "plots"));
+  std::vector<std::string> plots;
   for (std::size_t i = 0; i < manifest.meshes.size(); ++i) {
     for (const char* axis : {"iter", "seconds"}) {
       std::vector<PlotSeries> series;
@@ -153,8 +212,10 @@ std::string write_experiment_report(const std::string& out_dir) {
           slug(manifest.meshes[i].label) + (std::string(axis) == "iter" ? "-iterations" : "-seconds");
       write_file_atomically(join_path(join_path(out_dir, "plots"), name + ".svg"),
                             [&](std::ostream& out) { out << svg; });
+      plots.push_back("plots/" + name + ".svg");
     }
   }
+  write_index_html(out_dir, manifest, summaries, header, rows, plots);
   return table;
 }
 

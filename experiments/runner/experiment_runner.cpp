@@ -1,5 +1,7 @@
 #include "experiments/runner/experiment_runner.h"
 
+#include "experiments/report/html_view.h"
+
 #include <tbb/global_control.h>
 
 #include <chrono>
@@ -15,6 +17,7 @@
 #include "akvf/parameterization.h"
 #include "akvf/slim_cube.h"
 #include "experiments/cli/run_reporting.h"
+#include "experiments/report/html_view.h"
 #include "experiments/report/run_summary.h"
 #include "experiments/report/text_utilities.h"
 #include "experiments/report/trace_csv.h"
@@ -50,10 +53,11 @@ struct CaseResult {
   OptimizerResult result;
   double lower_bound = 0;
   int vertices = 0, elements = 0;
+  std::unique_ptr<ViewContent> view;  // the final map, when views are asked for
 };
 
 CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, const std::string& mesh_path,
-                          const std::string& case_dir) {
+                          const std::string& case_dir, bool views) {
   const CaseSettings& s = c.settings;
   const ParamConfig config = param_config(s.param);
   const ParamSetup setup =
@@ -84,6 +88,9 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
   out.lower_bound = setup.objective->lower_bound();
   out.vertices = setup.disk.mesh.num_vertices();
   out.elements = setup.disk.mesh.num_faces();
+  if (views && out.elements <= kViewFaceLimit)
+    out.view.reset(new ViewContent{setup.disk.mesh, chart_uv(setup, out.result.x), setup.disk.mesh.F,
+                                   c.mesh_label + " - " + c.method_label, {}, ""});
   return out;
 }
 
@@ -140,10 +147,14 @@ Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOpt
     const std::string path =
         data_path(manifest, options.data_dir, mesh.file, "meshes[" + std::to_string(c.mesh_index) + "].file");
     reset_peak_memory();
-    const CaseResult r = c.settings.problem == "param" ? run_param_case(c, mesh, path, case_dir)
-                                                       : run_deform_case(c, path, manifest, options.data_dir);
+    CaseResult r = c.settings.problem == "param" ? run_param_case(c, mesh, path, case_dir, options.views)
+                                                 : run_deform_case(c, path, manifest, options.data_dir);
     write_trace_csv(join_path(case_dir, "trace.csv"), r.result);
     summary.update(run_record(r.result, r.lower_bound, r.vertices, r.elements));
+    if (r.view) {
+      r.view->summary = summary;
+      write_html_view(join_path(case_dir, "view.html"), *r.view);
+    }
   } catch (const Error& e) {
     summary["status"] = "error";
     summary["message"] = e.what();

@@ -24,6 +24,9 @@ struct RunnerOptions {
   std::string out_dir;
   int shard_index = 1, shard_count = 1;  // run the cases with index % count == index - 1
   bool resume = false;
+  // Write cases/<id>/view.html for parameterization cases up to
+  // kViewFaceLimit faces (html_view.h).
+  bool views = false;
 };
 
 struct RunnerOutcome {

@@ -82,12 +82,18 @@ def png_pixels(path):
     return width, height, rows
 
 
-def check_page(chrome, work, page, expect_coloured=False, crop=(0.0, 0.06, 0.58, 0.64)):
-    url = "file://" + page
+def open_page(chrome, work, url):
+    """The page's DOM after it ran; fails on any console message."""
     dom = chromium(chrome, work, url, "--dump-dom")
     console = [line for line in dom.stderr.splitlines() if "CONSOLE" in line]
     if console:
         fail("%s logged to the console:\n%s" % (url, "\n".join(console)))
+    return dom
+
+
+def check_page(chrome, work, page, expect_coloured=False, crop=(0.0, 0.06, 0.58, 0.64)):
+    url = "file://" + page
+    dom = open_page(chrome, work, url)
     marker = '<pre id="status">'
     start = dom.stdout.find(marker)
     if start < 0:
@@ -219,6 +225,16 @@ def main():
         check_page(chrome, work, base + "_view.html")
         check_page(chrome, work, base + ".html#distortion", expect_coloured=True)
         check_page(chrome, work, os.path.join(demo, "demo_view.html"))
+        manifest = os.path.join(work, "m.json")
+        with open(manifest, "w") as out:
+            out.write('{"name": "browser", "meshes": [{"label": "torus", "file": "torus.off"}], '
+                      '"methods": [{"label": "akvf", "cut": "auto", "max_iters": 30}]}')
+        results = os.path.join(work, "results")
+        run([akvf, "experiment", manifest, "--data-dir", work, "--out-dir", results, "--views"])
+        index = open_page(chrome, work, "file://" + os.path.join(results, "index.html"))
+        if 'href="cases/torus--akvf/view.html"' not in index.stdout:
+            fail("the experiment's index.html does not link the case's view")
+        check_page(chrome, work, os.path.join(results, "cases", "torus--akvf", "view.html"))
         page = os.path.join(work, "glb.html")
         glb_page(page, base + ".glb", three_dir)
         check_page(chrome, work, page, crop=(0.0, 0.0, 0.5, 0.53))
