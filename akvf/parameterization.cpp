@@ -46,8 +46,9 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   TriMesh unit_input = input;
   unit_input.V *= setup.unit_scale;
   if (config.cut && config.init_from_file)
-    throw OptionsError("init 'file' and cut 'auto' cannot be combined: a file's texture coordinates bring their own "
-                       "seams; start from them without the cut, or cut and start from the Tutte map");
+    throw OptionsError(
+        "init 'file' and cut 'auto' cannot be combined: a file's texture coordinates bring their own "
+        "seams; start from them without the cut, or cut and start from the Tutte map");
   setup.disk = prepare_disk_mesh(unit_input, name, config.cut);
   setup.warnings = setup.disk.warnings;
   TriMesh normalized = setup.disk.mesh;

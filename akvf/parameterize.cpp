@@ -63,8 +63,8 @@ ParameterizeResult Parameterizer::solve(const Eigen::MatrixXd& uv0) {
 void Parameterizer::set_options(const ParameterizeOptions& options) {
   const ParameterizeOptions& old = state_->options;
   const bool new_start = options.init != old.init || options.cut != old.cut || options.flaps != old.flaps ||
-                         options.energy != old.energy ||
-                         options.exponent != old.exponent || options.warm_start_iters != old.warm_start_iters;
+                         options.energy != old.energy || options.exponent != old.exponent ||
+                         options.warm_start_iters != old.warm_start_iters;
   const ParameterizeOptions previous = state_->options;
   state_->options = options;
   try {

@@ -59,7 +59,7 @@ std::string FactoredPreconditioner<D>::report() const {
 template <int D>
 void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   null_basis_ = component_vertices_ ? ComponentMotions(D, component_vertices_, state.x,
-                                                        [this](const Eigen::VectorXd& part) { return null_space(part); })
+                                                       [this](const Eigen::VectorXd& part) { return null_space(part); })
                                     : ComponentMotions(null_space(state.x));
   // P(x) plus the Tikhonov shift: relative to mean(diag P), plus the absolute c.
   const auto assemble_shifted = [&] {

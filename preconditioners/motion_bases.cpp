@@ -88,10 +88,12 @@ void ComponentMotions::project_out(Eigen::VectorXd* v) const {
     const std::vector<int>& vertices = (*component_vertices_)[c];
     Eigen::VectorXd part(blocks_[c].rows());
     for (std::size_t i = 0; i < vertices.size(); ++i)
-      part.segment(dimension_ * i, dimension_) = v->segment(static_cast<Eigen::Index>(dimension_) * vertices[i], dimension_);
+      part.segment(dimension_ * i, dimension_) =
+          v->segment(static_cast<Eigen::Index>(dimension_) * vertices[i], dimension_);
     part -= blocks_[c] * (blocks_[c].transpose() * part);
     for (std::size_t i = 0; i < vertices.size(); ++i)
-      v->segment(static_cast<Eigen::Index>(dimension_) * vertices[i], dimension_) = part.segment(dimension_ * i, dimension_);
+      v->segment(static_cast<Eigen::Index>(dimension_) * vertices[i], dimension_) =
+          part.segment(dimension_ * i, dimension_);
   }
 }
 

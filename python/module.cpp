@@ -276,7 +276,8 @@ void write_obj(const std::string& path, const py::handle& V, const py::handle& F
   const Eigen::MatrixXd UV = akvf::python::float_matrix(uv, "uv", 2);
   if (!uv_faces.is_none()) {
     const Eigen::MatrixXi corners = akvf::python::index_matrix(uv_faces, "uv_faces", 3);
-    if (corners.rows() != mesh.F.rows() || (corners.size() > 0 && (corners.minCoeff() < 0 || corners.maxCoeff() >= UV.rows())))
+    if (corners.rows() != mesh.F.rows() ||
+        (corners.size() > 0 && (corners.minCoeff() < 0 || corners.maxCoeff() >= UV.rows())))
       throw akvf::InputError("uv_faces must have one row per face (" + std::to_string(mesh.F.rows()) +
                              ") of indices into uv's " + std::to_string(UV.rows()) + " rows");
     akvf::write_obj_with_uv(path, mesh, UV, corners);

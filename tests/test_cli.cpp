@@ -61,7 +61,8 @@ TEST_CASE("param on a closed mesh exits 1 with the topology message") {
   write_text(dir / "tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
   const Outcome r = akvf_run({"param", (dir / "tet.off").string(), "--out", (dir / "uv.obj").string()});
   CHECK(r.code == akvf::kExitInputError);
-  CHECK(r.err.find("mesh is closed (no boundary loop); it must be cut to a disk first: use the option cut auto (akvf param --cut auto)") != std::string::npos);
+  CHECK(r.err.find("mesh is closed (no boundary loop); it must be cut to a disk first: use the option cut auto (akvf "
+                   "param --cut auto)") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "uv.obj"));
   fs::remove_all(dir);
 }
@@ -336,15 +337,15 @@ TEST_CASE("--out writes UV.mtl and a checkerboard beside the OBJ, vt in the unit
   CHECK(lo == doctest::Approx(0.0));
   CHECK(hi == doctest::Approx(1.0));  // the longer side spans the texture
   // --texture none: vt at the input's scale, no MTL.
-  REQUIRE(akvf_run({"param", (dir / "bar.obj").string(), "--out", (dir / "plain.obj").string(), "--texture", "none",
-                    "-q"})
-              .code == akvf::kExitOk);
+  REQUIRE(
+      akvf_run({"param", (dir / "bar.obj").string(), "--out", (dir / "plain.obj").string(), "--texture", "none", "-q"})
+          .code == akvf::kExitOk);
   CHECK(read_text(dir / "plain.obj").find("mtllib") == std::string::npos);
   CHECK(!fs::exists(dir / "plain.mtl"));
   // The files beside the OBJ are outputs too: one that is the input is refused.
   akvf::test::write_obj(dir / "clash_checker.png", akvf::bent_bar(21, 5));
-  const Outcome clash = akvf_run({"param", (dir / "clash_checker.png").string(), "--out", (dir / "clash.obj").string(),
-                                  "-q"});
+  const Outcome clash =
+      akvf_run({"param", (dir / "clash_checker.png").string(), "--out", (dir / "clash.obj").string(), "-q"});
   CHECK(clash.code == akvf::kExitUsageError);
   CHECK(clash.err.find("the checkerboard of --out") != std::string::npos);
   fs::remove_all(dir);

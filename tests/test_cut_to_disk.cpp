@@ -90,7 +90,8 @@ TEST_CASE("the cut refuses a vertex where two closed fans meet") {
   m.F.resize(8, 3);
   m.F << 0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2, 0, 5, 4, 0, 4, 6, 4, 5, 6, 0, 6, 5;
   const std::string message = akvf::test::error_message([&] { akvf::prepare_disk_mesh(m, "pinch.obj", true); });
-  CHECK(message == "pinch.obj: vertex 0 (numbered from 0) is non-manifold: its faces form separate fans that meet there");
+  CHECK(message ==
+        "pinch.obj: vertex 0 (numbered from 0) is non-manifold: its faces form separate fans that meet there");
 }
 
 TEST_CASE("cut meshes parameterize flip-free at every iterate, charts side by side") {

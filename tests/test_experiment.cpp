@@ -141,8 +141,7 @@ TEST_CASE("a tiny manifest runs end to end; shards merged give the same results 
   REQUIRE(akvf_run({"experiment", manifest, "--data-dir", data.string(), "--out-dir", (dir / "views").string(),
                     "--views", "--shard", "1/2"}) == akvf::kExitOk);
   CHECK(fs::exists(dir / "views" / "cases" / "bumpy--akvf" / "view.html"));
-  CHECK(read_text(dir / "views" / "cases" / "bumpy--akvf" / "view.html").find("\"final_energy\"") !=
-        std::string::npos);
+  CHECK(read_text(dir / "views" / "cases" / "bumpy--akvf" / "view.html").find("\"final_energy\"") != std::string::npos);
   CHECK(read_text(dir / "views" / "index.html").find("<a href=\"cases/bumpy--akvf/view.html\">") != std::string::npos);
 
   REQUIRE(

@@ -68,8 +68,8 @@ TEST_CASE("param --out UV.glb writes a binary glTF with the mesh, per-corner UVs
   const fs::path dir = akvf::test::scratch_dir("glb");
   const akvf::TriMesh torus = akvf::test::torus(10);
   akvf::test::write_obj(dir / "torus.obj", torus);
-  const auto r = akvf::test::run_cli({"param", (dir / "torus.obj").string(), "--cut", "auto", "--out",
-                                      (dir / "uv.glb").string(), "--quiet"});
+  const auto r = akvf::test::run_cli(
+      {"param", (dir / "torus.obj").string(), "--cut", "auto", "--out", (dir / "uv.glb").string(), "--quiet"});
   REQUIRE(r.code == 0);
   const Glb glb = read_glb(dir / "uv.glb");
   CHECK(glb.json["asset"]["version"] == "2.0");

@@ -41,17 +41,21 @@ TEST_CASE("a grid is a valid disk with its boundary loop") {
 }
 
 TEST_CASE("a closed mesh must be cut first") {
-  CHECK(validation_error(tetrahedron()) == "m.obj: mesh is closed (no boundary loop); it must be cut to a disk first: use the option cut auto (akvf param --cut auto)");
+  CHECK(validation_error(tetrahedron()) ==
+        "m.obj: mesh is closed (no boundary loop); it must be cut to a disk first: use the option cut auto (akvf param "
+        "--cut auto)");
 }
 
 TEST_CASE("several boundary loops must be cut first") {
   CHECK(validation_error(annulus()) ==
-        "m.obj: mesh has 2 boundary loops (a disk has exactly one); it must be cut to a disk first: use the option cut auto (akvf param --cut auto)");
+        "m.obj: mesh has 2 boundary loops (a disk has exactly one); it must be cut to a disk first: use the option cut "
+        "auto (akvf param --cut auto)");
 }
 
 TEST_CASE("a handle is reported by the Euler characteristic") {
   CHECK(validation_error(punctured_torus()) ==
-        "m.obj: Euler characteristic is -1 (a disk has 1): the mesh has handles; it must be cut to a disk first: use the option cut auto (akvf param --cut auto)");
+        "m.obj: Euler characteristic is -1 (a disk has 1): the mesh has handles; it must be cut to a disk first: use "
+        "the option cut auto (akvf param --cut auto)");
 }
 
 TEST_CASE("two components are rejected") {

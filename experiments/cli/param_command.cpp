@@ -152,8 +152,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   if (cl.positional().size() != 1) throw OptionsError("expected exactly one mesh file (see --help)");
   const ParameterizeOptions options = options_from(cl);
   const std::string& path = cl.positional()[0];
-  Outputs outputs{cl.text("out", ""), cl.text("trace", ""),   cl.text("svg", ""),
-                  cl.text("summary", ""), cl.text("png", ""), cl.text("view", "")};
+  Outputs outputs{cl.text("out", ""),     cl.text("trace", ""), cl.text("svg", ""),
+                  cl.text("summary", ""), cl.text("png", ""),   cl.text("view", "")};
   if (cl.has("png-size")) {
     long long size = 0;
     if (!parse_integer(cl.text("png-size", ""), &size) || size < 16 || size > 16384)
@@ -171,12 +171,9 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   outputs.texture =
       texture_mode == "checker" && lowercase_extension(outputs.obj) == ".obj" && !is_special_output(outputs.obj);
   require_extension("--out", outputs.obj, {".obj", ".ply", ".glb"});
-  std::vector<FileArgument> written = {{"--out", outputs.obj},
-                                       {"--trace", outputs.trace},
-                                       {"--svg", outputs.svg},
-                                       {"--summary", outputs.summary},
-                                       {"--png", outputs.png},
-                                       {"--view", outputs.view}};
+  std::vector<FileArgument> written = {{"--out", outputs.obj}, {"--trace", outputs.trace},
+                                       {"--svg", outputs.svg}, {"--summary", outputs.summary},
+                                       {"--png", outputs.png}, {"--view", outputs.view}};
   if (outputs.texture) {  // the files written beside the OBJ are outputs too
     const TextureFiles files = texture_files_for(outputs.obj);
     written.push_back({"the MTL of --out", files.mtl});
@@ -212,9 +209,12 @@ int demo_command(const std::vector<std::string>& args, std::ostream& out, std::o
   const ParameterizeOptions options = options_from(cl);
   const std::filesystem::path dir = cl.text("out-dir", "akvf-demo");
   create_output_folder(dir.string());
-  Outputs outputs{(dir / "demo_uv.obj").string(),      (dir / "demo_trace.csv").string(),
-                  (dir / "demo_layout.svg").string(),  (dir / "demo_summary.json").string(),
-                  "",                                  html_view_available() ? (dir / "demo_view.html").string() : ""};
+  Outputs outputs{(dir / "demo_uv.obj").string(),
+                  (dir / "demo_trace.csv").string(),
+                  (dir / "demo_layout.svg").string(),
+                  (dir / "demo_summary.json").string(),
+                  "",
+                  html_view_available() ? (dir / "demo_view.html").string() : ""};
   outputs.texture = true;
   const TextureFiles texture = texture_files_for(outputs.obj);
   check_file_arguments({}, {{"the UV OBJ", outputs.obj},

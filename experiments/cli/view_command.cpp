@@ -31,8 +31,7 @@ int view_command(const std::vector<std::string>& args, std::ostream& out, std::o
   }
   if (cl.positional().size() != 1) throw OptionsError("expected exactly one textured mesh file (see --help)");
   const std::string path = cl.positional()[0];
-  const std::string out_path =
-      cl.text("out", std::filesystem::path(path).replace_extension(".html").string());
+  const std::string out_path = cl.text("out", std::filesystem::path(path).replace_extension(".html").string());
   const std::string summary_path = cl.text("summary", "");
   require_extension("--out", out_path, {".html", ".htm"});
   require_html_view();

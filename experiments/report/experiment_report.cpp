@@ -95,7 +95,8 @@ void write_index_html(const std::string& out_dir, const Manifest& manifest, cons
       out << "</tr>\n";
     }
     out << "</table>\n<h2>Plots</h2>\n";
-    for (const std::string& plot : plots) out << "<img src=\"" << xml_escape(plot) << "\" alt=\"" << xml_escape(plot) << "\">\n";
+    for (const std::string& plot : plots)
+      out << "<img src=\"" << xml_escape(plot) << "\" alt=\"" << xml_escape(plot) << "\">\n";
     out << "<h2>Cases</h2>\n<ul>\n";
     for (const ExperimentCase& c : manifest.cases)
       out << "<li>" << xml_escape(c.mesh_label + " / " + c.method_label) << ":"

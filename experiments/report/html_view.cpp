@@ -139,10 +139,13 @@ void write_html_view(const std::string& path, const ViewContent& content) {
         << "<main><div id=\"surface\" title=\"drag to orbit, wheel to zoom, right-drag to pan\"></div>"
         << "<canvas id=\"layout\"></canvas><aside id=\"summary\"></aside></main>\n"
         << "<pre id=\"status\">loading</pre>\n"
-        << "<script>\n" << embedded::three_js << "\n</script>\n"
-        << "<script>\n" << embedded::orbit_controls_js << "\n</script>\n"
+        << "<script>\n"
+        << embedded::three_js << "\n</script>\n"
+        << "<script>\n"
+        << embedded::orbit_controls_js << "\n</script>\n"
         << "<script type=\"application/json\" id=\"akvf-data\">" << data << "</script>\n"
-        << "<script>\n" << embedded::view_page_js << "\n</script>\n</body>\n</html>\n";
+        << "<script>\n"
+        << embedded::view_page_js << "\n</script>\n</body>\n</html>\n";
   });
 }
 

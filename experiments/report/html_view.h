@@ -23,7 +23,7 @@ struct ViewContent {
   Eigen::MatrixXi uv_faces;  // #F by 3 rows of uv
   std::string title;
   nlohmann::ordered_json summary;  // a run's summary (docs/experiments.md), or null
-  std::string note;        // shown under the title, e.g. what was left out
+  std::string note;                // shown under the title, e.g. what was left out
 };
 
 // The symmetric Dirichlet distortion of each face under the map, with the

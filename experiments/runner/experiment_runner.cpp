@@ -89,8 +89,12 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
   out.vertices = setup.disk.mesh.num_vertices();
   out.elements = setup.disk.mesh.num_faces();
   if (views && out.elements <= kViewFaceLimit)
-    out.view.reset(new ViewContent{setup.disk.mesh, chart_uv(setup, out.result.x), setup.disk.mesh.F,
-                                   c.mesh_label + " - " + c.method_label, {}, ""});
+    out.view.reset(new ViewContent{setup.disk.mesh,
+                                   chart_uv(setup, out.result.x),
+                                   setup.disk.mesh.F,
+                                   c.mesh_label + " - " + c.method_label,
+                                   {},
+                                   ""});
   return out;
 }
 

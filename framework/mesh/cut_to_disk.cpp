@@ -32,9 +32,7 @@ struct ClosedSurface {
   std::vector<std::vector<int>> loops;
 };
 
-std::int64_t edge_key(int a, int b, int nv) {
-  return static_cast<std::int64_t>(std::min(a, b)) * nv + std::max(a, b);
-}
+std::int64_t edge_key(int a, int b, int nv) { return static_cast<std::int64_t>(std::min(a, b)) * nv + std::max(a, b); }
 
 ClosedSurface close_surface(const TriMesh& mesh) {
   const int nv = mesh.num_vertices(), nf = mesh.num_faces();
@@ -227,8 +225,7 @@ DiskCut cut_to_disks(const TriMesh& mesh) {
     candidates.push_back(e);
     loop_length[e] = tree.distance[s.edges[e].a] + s.edges[e].length + tree.distance[s.edges[e].b];
   }
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [&](int x, int y) { return loop_length[x] > loop_length[y]; });
+  std::stable_sort(candidates.begin(), candidates.end(), [&](int x, int y) { return loop_length[x] > loop_length[y]; });
   DisjointSets faces(s.num_faces);
   std::vector<char> in_graph(num_edges, 1);  // the cut graph: every edge outside the dual tree
   for (int e : candidates)

@@ -25,9 +25,9 @@ struct DiskCut {
   std::vector<int> source_vertex;  // #mesh.V: the input vertex each copies (ascending)
   std::vector<int> face_chart;     // #F: the chart (component) of each face, numbered by first face
   int num_charts = 0;
-  int cut_edges = 0;               // input edges opened (each becomes two boundary edges)
-  std::vector<int> chart_genus;    // #charts: genus of the component before cutting
-  std::vector<int> chart_loops;    // #charts: its boundary loops before cutting
+  int cut_edges = 0;             // input edges opened (each becomes two boundary edges)
+  std::vector<int> chart_genus;  // #charts: genus of the component before cutting
+  std::vector<int> chart_loops;  // #charts: its boundary loops before cutting
   int nonmanifold_vertex = -1;
 };
 

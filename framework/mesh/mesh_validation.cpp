@@ -100,7 +100,8 @@ void find_chart_boundaries(const std::string& name, DiskMesh* disk) {
   int charts = 0;
   const std::vector<int> chart_of = vertex_components(m.F, m.num_vertices(), &charts);
   std::vector<std::vector<std::vector<int>>> loops(charts);
-  for (auto& loop : boundary_loops(topology, m.num_vertices())) loops[chart_of[loop.front()]].push_back(std::move(loop));
+  for (auto& loop : boundary_loops(topology, m.num_vertices()))
+    loops[chart_of[loop.front()]].push_back(std::move(loop));
   std::vector<long long> euler(charts, 0);
   for (int v = 0; v < m.num_vertices(); ++v) ++euler[chart_of[v]];
   // Edges = (3 F + boundary edges) / 2: an interior edge is in two faces.

@@ -16,10 +16,10 @@ struct DiskMesh {
   TriMesh mesh;                   // compacted (and cut): every vertex is used by a face; faces in the input's order
   std::vector<int> input_vertex;  // #mesh.V: index in the input mesh (seam copies share one)
   int num_input_vertices = 0;
-  std::vector<std::vector<int>> boundary_loops;  // one per chart, in chart order; ordered, mesh to the left
-  std::vector<int> face_chart;                   // #F: chart of each face (all 0 without a cut)
-  bool cut = false;                              // the automatic cut was asked for
-  int cut_edges = 0;                             // input edges opened by it
+  std::vector<std::vector<int>> boundary_loops;     // one per chart, in chart order; ordered, mesh to the left
+  std::vector<int> face_chart;                      // #F: chart of each face (all 0 without a cut)
+  bool cut = false;                                 // the automatic cut was asked for
+  int cut_edges = 0;                                // input edges opened by it
   std::vector<int> chart_genus, chart_input_loops;  // per chart, before the cut
   Warnings warnings;
 

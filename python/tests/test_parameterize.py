@@ -178,3 +178,42 @@ def test_a_parameterizer_solves_again_with_the_same_bits(disk):
     with pytest.raises(akvf.OptionsError, match="unknown preconditioner"):
         solver.set_options(precond="nope")
     assert solver.options["precond"] == "newton"
+
+
+def torus(n=12, m=8):
+    """A closed torus (genus 1): refused without the cut."""
+    u, v = np.meshgrid(2 * np.pi * np.arange(n) / n, 2 * np.pi * np.arange(m) / m, indexing="ij")
+    V = np.stack([((2 + np.cos(v)) * np.cos(u)).ravel(), ((2 + np.cos(v)) * np.sin(u)).ravel(),
+                  np.sin(v).ravel()], axis=1)
+    F = []
+    for i in range(n):
+        for j in range(m):
+            a, b = i * m + j, ((i + 1) % n) * m + j
+            c, d = ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
+            F += [[a, b, c], [a, c, d]]
+    return V, np.array(F)
+
+
+def test_cut_auto_gives_per_corner_uvs_of_a_closed_mesh(tmp_path):
+    V, F = torus()
+    with pytest.raises(akvf.ValidationError, match="cut auto"):
+        akvf.parameterize(V, F)
+    r = akvf.parameterize(V, F, cut="auto")
+    assert r.status == "converged"
+    assert r.uv_faces.shape == F.shape
+    assert r.uv.shape[0] > V.shape[0]  # seam vertices once per side
+    corners = r.uv[r.uv_faces]  # (m, 3, 2)
+    e1, e2 = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
+    assert np.all(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0] > 0)
+    assert np.all(r.trace["flips"] == 0)
+    akvf.write_obj(tmp_path / "torus.obj", V, F, r.uv, r.uv_faces)
+    lines = (tmp_path / "torus.obj").read_text().splitlines()
+    assert sum(line.startswith("v ") for line in lines) == V.shape[0]
+    assert sum(line.startswith("vt ") for line in lines) == r.uv.shape[0]
+    assert sum(line.startswith("f ") for line in lines) == F.shape[0]
+
+
+def test_uv_faces_is_F_without_the_cut(disk):
+    V, F = disk
+    r = akvf.parameterize(V, F)
+    assert np.array_equal(r.uv_faces, F)
