@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libsuitesparse-dev libtbb-dev doctest-dev
   libbenchmark-dev libceres-dev libopenblas-dev nlohmann-json3-dev libpng-dev
   pybind11-dev python3-dev python3-pybind11 python3-numpy python3-pytest  # the Python module (python/)
+  python3-jsonschema  # the tests check every --summary against docs/run_summary.schema.json
   clang libclang-rt-14-dev  # scripts/sanitize.sh: ASan, UBSan and libFuzzer
   libjs-three  # three.js, embedded in the HTML views (akvf view)
   chromium  # the browser test of the views (tests/browser/check_pages.py), headless

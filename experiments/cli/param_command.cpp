@@ -55,9 +55,10 @@ Json param_summary(const std::string& mesh_file, const ParameterizeOptions& opti
                    const OptimizerResult& result) {
   Json settings;
   record_options(parameterize_option_fields(), options, &settings);
-  return single_run_summary(
-      "param", mesh_file, settings,
-      run_record(result, setup.objective->lower_bound(), setup.disk.mesh.num_vertices(), setup.disk.mesh.num_faces()));
+  Json record =
+      run_record(result, setup.objective->lower_bound(), setup.disk.mesh.num_vertices(), setup.disk.mesh.num_faces());
+  if (setup.disk.cut) record["cut"] = cut_record(setup.disk);
+  return single_run_summary("param", mesh_file, settings, record);
 }
 
 //   start_uv  the file's texture coordinates per vertex for --init file, or empty

@@ -70,6 +70,13 @@ Json run_record(const OptimizerResult& result, double lower_bound, int vertices,
   return record;
 }
 
+Json cut_record(const DiskMesh& disk) {
+  return {{"charts", disk.num_charts()},
+          {"cut_edges", disk.cut_edges},
+          {"genus", disk.chart_genus},
+          {"boundary_loops", disk.chart_input_loops}};
+}
+
 Json single_run_summary(const std::string& problem, const std::string& mesh_file, const Json& settings,
                         const Json& record) {
   Json summary;

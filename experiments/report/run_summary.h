@@ -1,13 +1,15 @@
 #pragma once
 // The JSON summary of one run: what `akvf param --summary`, `akvf deform
 // --summary` and every case of the experiment runner (cases/<id>/summary.json)
-// write. Schema: docs/experiments.md, "summary.json".
+// write. Fields: docs/experiments.md, "summary.json"; JSON Schema:
+// docs/run_summary.schema.json.
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "akvf/option_schema.h"
+#include "framework/mesh/mesh_validation.h"
 #include "framework/optimization/optimizer.h"
 
 namespace akvf {
@@ -28,6 +30,10 @@ Json machine_record();
 // the tolerance), iterations, seconds, final_energy, lower_bound, grad_norm,
 // max_flips (over all iterates), vertices, elements, peak_memory_mb.
 Json run_record(const OptimizerResult& result, double lower_bound, int vertices, int elements);
+
+// What the automatic cut did (--cut auto): charts, cut_edges, and per chart
+// the genus and boundary loops of its component before the cut.
+Json cut_record(const DiskMesh& disk);
 
 // The options as the schema writes them: numbers as numbers, integers as
 // integers (a time limit of inf as the text "inf"), switches as booleans,

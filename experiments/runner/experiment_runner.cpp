@@ -54,6 +54,7 @@ struct CaseResult {
   double lower_bound = 0;
   int vertices = 0, elements = 0;
   std::unique_ptr<ViewContent> view;  // the final map, when views are asked for
+  Json cut;                           // cut_record after --cut auto, else null
 };
 
 CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, const std::string& mesh_path,
@@ -88,6 +89,7 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
   out.lower_bound = setup.objective->lower_bound();
   out.vertices = setup.disk.mesh.num_vertices();
   out.elements = setup.disk.mesh.num_faces();
+  if (setup.disk.cut) out.cut = cut_record(setup.disk);
   if (views && out.elements <= kViewFaceLimit)
     out.view.reset(new ViewContent{setup.disk.mesh,
                                    chart_uv(setup, out.result.x),
@@ -155,6 +157,7 @@ Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOpt
                                                  : run_deform_case(c, path, manifest, options.data_dir);
     write_trace_csv(join_path(case_dir, "trace.csv"), r.result);
     summary.update(run_record(r.result, r.lower_bound, r.vertices, r.elements));
+    if (!r.cut.is_null()) summary["cut"] = r.cut;
     if (r.view) {
       r.view->summary = summary;
       write_html_view(join_path(case_dir, "view.html"), *r.view);
