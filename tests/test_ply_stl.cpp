@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "akvf/parameterize.h"
+#include "framework/mesh/mesh_io.h"
 #include "framework/mesh/ply_reader.h"
 #include "framework/mesh/stl_reader.h"
 #include "tests/cli_support.h"
@@ -244,4 +245,29 @@ TEST_CASE("PLY output: binary with per-vertex s, t reads back to the same bits")
   CHECK(read.F == mesh.F);
   CHECK(read_uv == uv);
   std::filesystem::remove_all(path.parent_path());
+}
+
+TEST_CASE("PLY output after a cut: per-corner texcoord reads back as the mesh's per-corner texture") {
+  const akvf::TriMesh torus = akvf::test::torus(8);
+  akvf::ParameterizeOptions options;
+  options.cut = "auto";
+  options.max_iters = 20;
+  const akvf::ParameterizeResult r = akvf::parameterize(torus.V, torus.F, options);
+  const std::filesystem::path dir = akvf::test::scratch_dir("ply_corners");
+  akvf::write_ply_with_uv((dir / "uv.ply").string(), torus, r.uv, r.uv_faces);
+  akvf::MeshTexture texture;
+  const akvf::TriMesh read = akvf::read_triangle_mesh((dir / "uv.ply").string(), nullptr, &texture);
+  CHECK(read.V == torus.V);
+  CHECK(read.F == torus.F);
+  REQUIRE(texture.corner.rows() == torus.num_faces());
+  for (int f = 0; f < torus.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k)
+      CHECK((texture.uv.row(texture.corner(f, k)) - r.uv.row(r.uv_faces(f, k))).cwiseAbs().maxCoeff() <=
+            1e-6 * r.uv.cwiseAbs().maxCoeff());  // stored as float
+  std::filesystem::remove_all(dir);
+  const std::string bad =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 4 0 0 1 0\n";
+  CHECK(ply_error(bad).find("face 0 has 4 texcoord values; a triangle has 6 (u, v per corner)") != std::string::npos);
 }

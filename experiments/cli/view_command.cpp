@@ -45,7 +45,8 @@ int view_command(const std::vector<std::string>& args, std::ostream& out, std::o
   content.mesh = read_triangle_mesh(path, &warnings, &texture);
   for (const auto& warning : warnings) err << "warning: " << warning << '\n';
   if (texture.empty())
-    throw InputError(path + ": has no texture coordinates (OBJ vt, PLY u,v); write one with akvf param --out");
+    throw InputError(path +
+                     ": has no texture coordinates (OBJ vt, PLY u,v or texcoord); write one with akvf param --out");
   for (int f = 0; f < texture.corner.rows(); ++f)
     for (int k = 0; k < 3; ++k)
       if (texture.corner(f, k) < 0)

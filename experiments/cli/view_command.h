@@ -1,5 +1,6 @@
 #pragma once
-// The `akvf view` command: a textured mesh (an OBJ with vt, a PLY with u, v)
+// The `akvf view` command: a textured mesh (an OBJ with vt, a PLY with u, v
+// per vertex or texcoord per corner)
 // as one self-contained HTML page (experiments/report/html_view.h).
 #include <ostream>
 #include <string>

@@ -109,9 +109,15 @@ TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings, MeshText
     throw InputError(path, 0, "unsupported mesh format '" + ext + "' (expected .obj, .off, .ply or .stl)");
   std::ifstream in = open_mesh_file(path);
   if (ext == ".ply") {
-    Eigen::MatrixXd uv;
-    TriMesh mesh = read_ply(in, path, &uv);
-    if (texture && uv.rows() > 0) *texture = {uv, mesh.F};  // per vertex: a corner's row is its vertex
+    Eigen::MatrixXd uv, corner_uv;
+    TriMesh mesh = read_ply(in, path, &uv, &corner_uv);
+    if (texture && corner_uv.rows() > 0) {  // per corner: corner 3 f + k uses row 3 f + k
+      Eigen::MatrixXi corner(mesh.num_faces(), 3);
+      for (int f = 0; f < mesh.num_faces(); ++f) corner.row(f) << 3 * f, 3 * f + 1, 3 * f + 2;
+      *texture = {corner_uv, corner};
+    } else if (texture && uv.rows() > 0) {  // per vertex: a corner's row is its vertex
+      *texture = {uv, mesh.F};
+    }
     return mesh;
   }
   if (ext == ".stl") return read_stl(in, path);

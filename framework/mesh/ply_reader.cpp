@@ -271,7 +271,7 @@ std::vector<Element> read_header(const std::string& data, const std::string& fil
 
 }  // namespace
 
-TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd* uv) {
+TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd* uv, Eigen::MatrixXd* corner_uv) {
   const std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   Format format = Format::kAscii;
   std::size_t body_start = 0;
@@ -303,6 +303,8 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
   if (corners < 0) corners = faces.find("vertex_index");
   if (corners < 0 || !faces.properties[corners].list || faces.properties[corners].type.real)
     throw InputError(file_name, faces.header_line, "the face element has no integer list 'vertex_indices'");
+  int texcoord = faces.find("texcoord");
+  if (texcoord >= 0 && (!faces.properties[texcoord].list || !faces.properties[texcoord].type.real)) texcoord = -1;
   if (vertices.count == 0) throw InputError(file_name, vertices.header_line, "the file has no vertices");
   if (faces.count == 0) throw InputError(file_name, faces.header_line, "the file has no faces");
   // A binary file must hold at least what its header declares before any
@@ -316,10 +318,11 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
                            std::to_string(data.size() - body_start) + " (truncated, or wrong counts)");
   }
 
-  std::vector<double> coords, texture;
+  std::vector<double> coords, texture, corner_texture;
   std::vector<int> triangle_corners;
   coords.reserve(3 * std::min(vertices.count, kMaxReserve));
   if (u >= 0) texture.reserve(2 * std::min(vertices.count, kMaxReserve));
+  if (texcoord >= 0) corner_texture.reserve(6 * std::min(faces.count, kMaxReserve));
   triangle_corners.reserve(3 * std::min(faces.count, kMaxReserve));
   Body body(data, body_start, body_line, format, file_name);
   std::vector<double> scalars;
@@ -339,12 +342,20 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
         const double count = body.value(property.count_type, where);
         if (count < 0) body.fail("negative list length in " + where.text());
         const bool is_corners = &element == &faces && static_cast<int>(p) == corners;
+        const bool is_texcoord = &element == &faces && static_cast<int>(p) == texcoord;
         if (is_corners && count != 3)
           body.fail("face " + std::to_string(row) + " has " + std::to_string(static_cast<long long>(count)) +
                     " corners; only triangles are supported (triangulate the mesh first)");
+        if (is_texcoord && count != 6)
+          body.fail("face " + std::to_string(row) + " has " + std::to_string(static_cast<long long>(count)) +
+                    " texcoord values; a triangle has 6 (u, v per corner)");
         for (long long k = 0; k < static_cast<long long>(count); ++k) {
           where.item = static_cast<int>(std::min<long long>(k, std::numeric_limits<int>::max()));
           const double item = body.value(property.type, where);
+          if (is_texcoord) {
+            if (!std::isfinite(item)) body.fail("a texcoord value of face " + std::to_string(row) + " is not finite");
+            corner_texture.push_back(item);
+          }
           if (!is_corners) continue;
           if (item < 0 || item >= static_cast<double>(vertices.count))
             body.fail("face " + std::to_string(row) + ": vertex index " + std::to_string(static_cast<long long>(item)) +
@@ -367,6 +378,8 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
   }
   body.finish();
   if (uv) *uv = u >= 0 ? Eigen::MatrixXd(rows_to_matrix<double, 2>(texture)) : Eigen::MatrixXd(0, 2);
+  if (corner_uv)
+    *corner_uv = texcoord >= 0 ? Eigen::MatrixXd(rows_to_matrix<double, 2>(corner_texture)) : Eigen::MatrixXd(0, 2);
   return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 3>(triangle_corners), 0};
 }
 

@@ -6,8 +6,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   return akvf::fuzz::fuzz_triangle_reader(
       data, size,
       [](std::istream& in, const std::string& name) {
-        Eigen::MatrixXd uv;
-        return akvf::read_ply(in, name, &uv);
+        Eigen::MatrixXd uv, corner_uv;
+        return akvf::read_ply(in, name, &uv, &corner_uv);
       },
       "fuzz.ply");
 }
