@@ -26,12 +26,16 @@ struct Case {
 
 std::vector<Case> cases() {
   using namespace akvf::test;
-  return {{"sphere", sphere(2), 1, 0, 0},
-          {"torus", torus(12), 1, 1, 0},
-          {"punctured torus", torus(8, 1), 1, 1, 1},
-          {"annulus", annulus(), 1, 0, 2},
-          {"annulus and torus", side_by_side(annulus(), torus(8), 6), 2, 0, 2},
-          {"disk", grid_disk(5, 5), 1, 0, 1}};
+  TriMesh tetrahedron;
+  tetrahedron.V.resize(4, 3);
+  tetrahedron.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  tetrahedron.F.resize(4, 3);
+  tetrahedron.F << 0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2;
+  return {
+      {"sphere", sphere(2), 1, 0, 0},    {"tetrahedron (the far end is the root's neighbour)", tetrahedron, 1, 0, 0},
+      {"torus", torus(12), 1, 1, 0},     {"punctured torus", torus(8, 1), 1, 1, 1},
+      {"annulus", annulus(), 1, 0, 2},   {"annulus and torus", side_by_side(annulus(), torus(8), 6), 2, 0, 2},
+      {"disk", grid_disk(5, 5), 1, 0, 1}};
 }
 
 // Axis-aligned bounding boxes of the charts (components of the UV faces).

@@ -1,4 +1,4 @@
-// --out UV.glb: a binary glTF 2.0 whose structure a reader can follow: the
+// Display outputs. --out UV.glb: a binary glTF 2.0 whose structure a reader can follow: the
 // header and chunk lengths, accessors within their views, the indices
 // within the vertices, the PNG embedded, and the UVs of every corner.
 #include <doctest/doctest.h>
@@ -8,7 +8,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "akvf/parameterize.h"
 #include "experiments/report/checker_texture.h"
+#include "experiments/report/display_decimation.h"
 #include "experiments/report/gltf_writer.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
@@ -116,4 +118,24 @@ TEST_CASE("a coordinate beyond float range is refused for glTF, and no file is l
   CHECK(message.find("does not fit glTF's 32-bit floats") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "x.glb"));
   fs::remove_all(dir);
+}
+
+TEST_CASE("display decimation: at most the asked faces, seam copies kept apart, every face a source face") {
+  const akvf::TriMesh torus = akvf::test::torus(60);  // 7200 faces
+  akvf::ParameterizeOptions options;
+  options.cut = "auto";
+  options.max_iters = 5;
+  const akvf::ParameterizeResult r = akvf::parameterize(torus.V, torus.F, options);
+  const akvf::SeamSplitMesh split = akvf::split_at_seams(torus, r.uv, r.uv_faces);
+  const akvf::DisplayMesh same = akvf::decimate_for_display(split, 100000);
+  CHECK(same.mesh.mesh.F == split.mesh.F);
+  const akvf::DisplayMesh small = akvf::decimate_for_display(split, 1000);
+  CHECK(small.mesh.mesh.num_faces() <= 1000);
+  CHECK(small.mesh.mesh.num_faces() >= 200);
+  REQUIRE(static_cast<int>(small.source_face.size()) == small.mesh.mesh.num_faces());
+  for (int f : small.source_face) CHECK((f >= 0 && f < torus.num_faces()));
+  // UVs stay inside the map's bounds (means of its points), positions on the torus's bounds.
+  CHECK((small.mesh.uv.colwise().minCoeff().array() >= r.uv.colwise().minCoeff().array() - 1e-12).all());
+  CHECK((small.mesh.uv.colwise().maxCoeff().array() <= r.uv.colwise().maxCoeff().array() + 1e-12).all());
+  CHECK(small.mesh.mesh.V.rowwise().norm().maxCoeff() <= 3 + 1e-12);
 }

@@ -64,8 +64,9 @@ int experiment_command(const std::vector<std::string>& args, std::ostream& out, 
                              {"shard", "I/N", "run only cases I, I+N, I+2N, ... (1-based)"},
                              {"resume", "", "skip cases whose summary.json exists"},
                              {"views", "",
-                              "write cases/<id>/view.html (akvf view) for parameterizations up to " +
-                                  std::to_string(kViewFaceLimit) + " faces"},
+                              "write cases/<id>/view.html (akvf view) for parameterizations (decimated for display "
+                              "above " +
+                                  std::to_string(kViewFaceLimit) + " faces)"},
                              {"threads", "N", "worker threads per case (default: all cores)"},
                              {"help", "", "show this help"},
                          });

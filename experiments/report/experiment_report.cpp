@@ -65,16 +65,15 @@ std::string case_links(const std::string& out_dir, const ExperimentCase& c, cons
   for (const char* name : {"view.html", "final.svg", "final.png", "trace.csv"})
     if (fs::exists(join_path(out_dir, folder + name)))
       links += " <a href=\"" + xml_escape(folder + name) + "\">" + name + "</a>";
-  if (!fs::exists(join_path(out_dir, folder + "view.html")) && summary.contains("elements") &&
+  if (fs::exists(join_path(out_dir, folder + "view.html")) && summary.contains("elements") &&
       summary["elements"].get<long long>() > kViewFaceLimit)
-    links += " (no view: " + std::to_string(summary["elements"].get<long long>()) +
-             " faces, above the view's limit of " + std::to_string(kViewFaceLimit) +
-             "; decimation for display is not implemented)";
+    links += " (the view is decimated for display to at most " + std::to_string(kViewFaceLimit) + " of its " +
+             std::to_string(summary["elements"].get<long long>()) + " faces)";
   return links;
 }
 
 // OUT/index.html: the table, the plots, and per case its view, final layout
-// and trace (views exist where the run had --views).
+// and trace (views exist where the run had --views; large ones decimated).
 void write_index_html(const std::string& out_dir, const Manifest& manifest, const std::vector<Json>& summaries,
                       const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows,
                       const std::vector<std::string>& plots) {

@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "experiments/report/display_decimation.h"
 #include "experiments/report/distortion_color.h"
 #include "experiments/report/seam_split_mesh.h"
 #include "experiments/report/text_utilities.h"
@@ -57,8 +58,15 @@ std::string script_safe(const std::string& json) {
 }
 
 nlohmann::json page_data(const ViewContent& content) {
-  const SeamSplitMesh split = split_at_seams(content.mesh, content.uv, content.uv_faces);
   const Eigen::VectorXd distortion = face_symmetric_dirichlet(content.mesh, content.uv, content.uv_faces);
+  const DisplayMesh display =
+      decimate_for_display(split_at_seams(content.mesh, content.uv, content.uv_faces), kViewFaceLimit);
+  const SeamSplitMesh& split = display.mesh;
+  std::string note = content.note;
+  if (split.mesh.num_faces() < content.mesh.num_faces())
+    note += (note.empty() ? "" : " ") + std::string("Decimated for display: ") +
+            std::to_string(split.mesh.num_faces()) + " of " + std::to_string(content.mesh.num_faces()) +
+            " faces shown (vertex clustering); the distortion colours and mean are the original faces'.";
   std::vector<float> positions, uv;
   std::vector<std::uint32_t> indices;
   std::vector<unsigned char> colors;
@@ -66,13 +74,15 @@ nlohmann::json page_data(const ViewContent& content) {
     for (int c = 0; c < 3; ++c) positions.push_back(static_cast<float>(split.mesh.V(v, c)));
     for (int c = 0; c < 2; ++c) uv.push_back(static_cast<float>(split.uv(v, c)));
   }
-  double finite_sum = 0, area_sum = 0;
-  int inverted = 0;
   for (int f = 0; f < split.mesh.num_faces(); ++f) {
     for (int k = 0; k < 3; ++k) indices.push_back(static_cast<std::uint32_t>(split.mesh.F(f, k)));
-    for (unsigned char channel : distortion_color(distortion[f] - 4)) colors.push_back(channel);
-    const Eigen::Vector3d a = split.mesh.V.row(split.mesh.F(f, 0)), b = split.mesh.V.row(split.mesh.F(f, 1)),
-                          c = split.mesh.V.row(split.mesh.F(f, 2));
+    for (unsigned char channel : distortion_color(distortion[display.source_face[f]] - 4)) colors.push_back(channel);
+  }
+  double finite_sum = 0, area_sum = 0;
+  int inverted = 0;
+  const TriMesh& m = content.mesh;
+  for (int f = 0; f < m.num_faces(); ++f) {
+    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
     const double area = 0.5 * (b - a).cross(c - a).norm();
     if (std::isfinite(distortion[f])) {
       finite_sum += area * distortion[f];
@@ -82,7 +92,7 @@ nlohmann::json page_data(const ViewContent& content) {
     }
   }
   return {{"title", content.title},
-          {"note", content.note},
+          {"note", note},
           {"vertices", content.mesh.num_vertices()},
           {"faces", content.mesh.num_faces()},
           {"mean_distortion", area_sum > 0 ? finite_sum / area_sum : 0.0},

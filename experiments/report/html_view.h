@@ -11,10 +11,11 @@
 
 namespace akvf {
 
-// The experiment runner writes views of meshes up to this many faces: a
-// face costs about 70 bytes of the page (positions, UVs, indices and colours
-// in base64), so 500 000 faces make a page of about 35 MB, which browsers
-// still open in seconds.
+// A view shows at most this many faces; larger meshes are decimated for
+// display (display_decimation.h) and the page says so. A face costs about
+// 70 bytes of the page (positions, UVs, indices and colours in base64), so
+// 500 000 faces make a page of about 35 MB, which browsers still open in
+// seconds.
 inline constexpr long long kViewFaceLimit = 500000;
 
 struct ViewContent {

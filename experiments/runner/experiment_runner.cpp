@@ -90,7 +90,7 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
   out.vertices = setup.disk.mesh.num_vertices();
   out.elements = setup.disk.mesh.num_faces();
   if (setup.disk.cut) out.cut = cut_record(setup.disk);
-  if (views && out.elements <= kViewFaceLimit)
+  if (views)
     out.view.reset(new ViewContent{setup.disk.mesh,
                                    chart_uv(setup, out.result.x),
                                    setup.disk.mesh.F,

@@ -27,6 +27,8 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
   const int charts = static_cast<int>(boundary_loops.size());
   if (charts == 1) return tutte_embedding(mesh, boundary_loops[0], weights, warnings);
   const std::vector<std::vector<int>> vertices = chart_vertices(mesh.F, face_chart, charts, mesh.num_vertices());
+  std::vector<std::vector<int>> faces(charts);
+  for (int f = 0; f < mesh.num_faces(); ++f) faces[face_chart[f]].push_back(f);
   Eigen::MatrixXd UV = Eigen::MatrixXd::Zero(mesh.num_vertices(), 2);
   std::vector<int> local(mesh.num_vertices(), -1);
   for (int c = 0; c < charts; ++c) {
@@ -36,10 +38,9 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
       local[vertices[c][i]] = static_cast<int>(i);
       chart.V.row(i) = mesh.V.row(vertices[c][i]);
     }
-    const int faces = static_cast<int>(std::count(face_chart.begin(), face_chart.end(), c));
-    chart.F.resize(faces, 3);
-    for (int f = 0, row = 0; f < mesh.num_faces(); ++f)
-      if (face_chart[f] == c) chart.F.row(row++) = mesh.F.row(f).unaryExpr([&](int v) { return local[v]; });
+    chart.F.resize(static_cast<Eigen::Index>(faces[c].size()), 3);
+    for (std::size_t row = 0; row < faces[c].size(); ++row)
+      chart.F.row(row) = mesh.F.row(faces[c][row]).unaryExpr([&](int v) { return local[v]; });
     std::vector<int> loop(boundary_loops[c].size());
     std::transform(boundary_loops[c].begin(), boundary_loops[c].end(), loop.begin(), [&](int v) { return local[v]; });
     const Eigen::MatrixXd chart_uv = tutte_embedding(chart, loop, weights, warnings);

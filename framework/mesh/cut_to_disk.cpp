@@ -252,6 +252,21 @@ DiskCut cut_to_disks(const TriMesh& mesh) {
     }
   }
 
+  // A closed genus-0 component whose far end is a neighbour of the root
+  // (a tetrahedron, say) would open into a 2-gon, which has no planar map:
+  // the path is extended by one more edge at its far end, so the boundary
+  // has at least 4 edges (cutting along any simple path of a sphere still
+  // leaves a disk).
+  for (int c = 0; c < charts; ++c) {
+    if (out.chart_loops[c] != 0 || out.chart_genus[c] != 0) continue;
+    const int end = far[c], parent = tree.parent_edge[end];
+    if (parent < 0 || other_end(s.edges[parent], end) != root[c]) continue;
+    for (int i = s.adjacency_offsets[end]; i < s.adjacency_offsets[end + 1]; ++i)
+      if (other_end(s.edges[s.adjacency[i]], end) != root[c]) {
+        in_graph[s.adjacency[i]] = 1;
+        break;
+      }
+  }
   std::vector<char> cut(num_edges, 0);
   for (int e = 0; e < num_edges; ++e) cut[e] = in_graph[e] && s.edges[e].real && s.edges[e].face[1] < nf;
   out.cut_edges = static_cast<int>(std::count(cut.begin(), cut.end(), 1));
