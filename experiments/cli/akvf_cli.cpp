@@ -22,7 +22,7 @@ const char* kUsage =
     "usage: akvf COMMAND [options]\n"
     "\n"
     "commands:\n"
-    "  param MESH   parameterize a disk-topology triangle mesh (.obj, .off, .ply, .stl)\n"
+    "  param MESH   parameterize a triangle mesh (.obj, .off, .ply, .stl): a disk, or any with --cut auto\n"
     "  demo         parameterize a built-in mesh and write its outputs (no input files)\n"
     "  deform TETS  deform a tet mesh with positional constraints (.mesh, .obj or .tet)\n"
     "  plot TRACES  SVG line plot of trace CSV files (energy against iterations or seconds)\n"

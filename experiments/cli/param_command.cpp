@@ -143,7 +143,9 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   CommandLine cl(
       "akvf param MESH.{obj,off,ply,stl} [options]\n\n"
       "Parameterizes a disk-topology triangle mesh by minimizing a distortion energy\n"
-      "with a preconditioned, flip-free descent (Claici et al. 2017, Algorithm 1).",
+      "with a preconditioned, flip-free descent (Claici et al. 2017, Algorithm 1).\n"
+      "--cut auto first cuts a closed, multi-boundary, higher-genus or multi-component\n"
+      "mesh into disk charts.",
       specs);
   cl.parse(args);
   if (cl.has("help")) {
