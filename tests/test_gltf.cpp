@@ -12,6 +12,7 @@
 #include "experiments/report/checker_texture.h"
 #include "experiments/report/display_decimation.h"
 #include "experiments/report/gltf_writer.h"
+#include "experiments/report/html_view.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
 
@@ -138,4 +139,30 @@ TEST_CASE("display decimation: at most the asked faces, seam copies kept apart, 
   CHECK((small.mesh.uv.colwise().minCoeff().array() >= r.uv.colwise().minCoeff().array() - 1e-12).all());
   CHECK((small.mesh.uv.colwise().maxCoeff().array() <= r.uv.colwise().maxCoeff().array() + 1e-12).all());
   CHECK(small.mesh.mesh.V.rowwise().norm().maxCoeff() <= 3 + 1e-12);
+}
+
+TEST_CASE("the view's data: any coordinate range, finite numbers, the distortion's mean at equal area") {
+  if (!akvf::html_view_available()) return akvf::test::skip("three.js was not found at configure time");
+  const fs::path dir = akvf::test::scratch_dir("view_data");
+  for (const double scale : {1e-300, 1.0, 1e300}) {
+    CAPTURE(scale);
+    akvf::ViewContent content;
+    content.mesh = akvf::test::bumpy_disk(6, 6);
+    content.uv = content.mesh.V.leftCols(2) * 3;  // a map with distortion: bumps flattened
+    content.mesh.V *= scale;
+    content.uv_faces = content.mesh.F;
+    content.title = "bumpy </script> & <b>";
+    akvf::write_html_view((dir / "v.html").string(), content);
+    const std::string page = akvf::test::read_text(dir / "v.html");
+    CHECK(page.find("<title>bumpy &lt;/script&gt; &amp; &lt;b&gt;</title>") != std::string::npos);
+    const std::string open = "id=\"akvf-data\">";
+    const std::size_t start = page.find(open) + open.size();
+    const nlohmann::json data = nlohmann::json::parse(page.substr(start, page.find("</script>", start) - start));
+    CHECK(data["title"] == "bumpy </script> & <b>");  // escaped as <\/ inside the script, the same JSON string
+    CHECK(data["faces"] == content.mesh.num_faces());
+    CHECK(data["degenerate_or_inverted"] == 0);
+    CHECK(data["mean_distortion"].get<double>() > 4);
+    CHECK(data["mean_distortion"].get<double>() < 4.5);
+  }
+  fs::remove_all(dir);
 }

@@ -57,6 +57,15 @@ std::string script_safe(const std::string& json) {
   return out;
 }
 
+// The mesh moved and scaled into the unit box (areas of any coordinate
+// range stay finite; ratios of areas do not change).
+TriMesh unit_extent(const TriMesh& mesh) {
+  TriMesh unit = mesh;
+  const Eigen::RowVector3d low = mesh.V.colwise().minCoeff();
+  unit.V = (mesh.V.rowwise() - low) / std::max((mesh.V.colwise().maxCoeff() - low).maxCoeff(), 1e-300);
+  return unit;
+}
+
 nlohmann::json page_data(const ViewContent& content) {
   const Eigen::VectorXd distortion = face_symmetric_dirichlet(content.mesh, content.uv, content.uv_faces);
   const DisplayMesh display =
@@ -70,9 +79,16 @@ nlohmann::json page_data(const ViewContent& content) {
   std::vector<float> positions, uv;
   std::vector<std::uint32_t> indices;
   std::vector<unsigned char> colors;
+  // Centred and scaled to a unit box (the picture is the same, and any
+  // coordinate range fits the page's 32-bit floats).
+  const Eigen::RowVector3d low = split.mesh.V.colwise().minCoeff(), high = split.mesh.V.colwise().maxCoeff();
+  const Eigen::RowVector2d uv_low = split.uv.colwise().minCoeff(), uv_high = split.uv.colwise().maxCoeff();
+  const double extent = std::max((high - low).maxCoeff(), 1e-300),
+               uv_extent = std::max((uv_high - uv_low).maxCoeff(), 1e-300);
   for (int v = 0; v < split.mesh.num_vertices(); ++v) {
-    for (int c = 0; c < 3; ++c) positions.push_back(static_cast<float>(split.mesh.V(v, c)));
-    for (int c = 0; c < 2; ++c) uv.push_back(static_cast<float>(split.uv(v, c)));
+    for (int c = 0; c < 3; ++c)
+      positions.push_back(static_cast<float>((split.mesh.V(v, c) - 0.5 * (low[c] + high[c])) / extent));
+    for (int c = 0; c < 2; ++c) uv.push_back(static_cast<float>((split.uv(v, c) - uv_low[c]) / uv_extent));
   }
   for (int f = 0; f < split.mesh.num_faces(); ++f) {
     for (int k = 0; k < 3; ++k) indices.push_back(static_cast<std::uint32_t>(split.mesh.F(f, k)));
@@ -80,7 +96,7 @@ nlohmann::json page_data(const ViewContent& content) {
   }
   double finite_sum = 0, area_sum = 0;
   int inverted = 0;
-  const TriMesh& m = content.mesh;
+  const TriMesh m = unit_extent(content.mesh);
   for (int f = 0; f < m.num_faces(); ++f) {
     const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
     const double area = 0.5 * (b - a).cross(c - a).norm();
@@ -108,13 +124,16 @@ nlohmann::json page_data(const ViewContent& content) {
 
 Eigen::VectorXd face_symmetric_dirichlet(const TriMesh& mesh, const Eigen::MatrixXd& uv,
                                          const Eigen::MatrixXi& uv_faces) {
-  const RestTriangles rest = rest_triangles(mesh);
+  // Both scaled to unit extent first: the value does not depend on either
+  // scale, and squares of any coordinate range stay finite.
+  const RestTriangles rest = rest_triangles(unit_extent(mesh));
+  const double uv_extent = std::max((uv.colwise().maxCoeff() - uv.colwise().minCoeff()).maxCoeff(), 1e-300);
   double uv_area = 0;
   std::vector<Eigen::Matrix2d> Ds(mesh.num_faces());
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    const Eigen::RowVector2d p0 = uv.row(uv_faces(f, 0));
-    Ds[f].col(0) = (uv.row(uv_faces(f, 1)) - p0).transpose();
-    Ds[f].col(1) = (uv.row(uv_faces(f, 2)) - p0).transpose();
+    const Eigen::RowVector2d p0 = uv.row(uv_faces(f, 0)) / uv_extent;
+    Ds[f].col(0) = (uv.row(uv_faces(f, 1)) / uv_extent - p0).transpose();
+    Ds[f].col(1) = (uv.row(uv_faces(f, 2)) / uv_extent - p0).transpose();
     uv_area += 0.5 * Ds[f].determinant();
   }
   const double scale = uv_area > 0 ? std::sqrt(rest.total_area / uv_area) : 1;
