@@ -212,9 +212,12 @@ std::string write_experiment_report(const std::string& out_dir) {
           slug(manifest.meshes[i].label) + (std::string(axis) == "iter" ? "-iterations" : "-seconds");
       write_file_atomically(join_path(join_path(out_dir, "plots"), name + ".svg"),
                             [&](std::ostream& out) { out << svg; });
-      plots.push_back("plots/" + name + ".svg");
     }
   }
+  // Every plot in the folder (also those of a run whose traces are gone).
+  for (const auto& entry : fs::directory_iterator(join_path(out_dir, "plots")))
+    if (entry.path().extension() == ".svg") plots.push_back("plots/" + entry.path().filename().string());
+  std::sort(plots.begin(), plots.end());
   write_index_html(out_dir, manifest, summaries, header, rows, plots);
   return table;
 }
