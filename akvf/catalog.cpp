@@ -19,13 +19,19 @@ namespace akvf {
 
 namespace {
 
+// The options of akvf-newton's Newton phase: in 2D its own (it reuses
+// factorizations as AKVF does: --newton-reuse auto), in 3D projected
+// Newton's (AKVF does not reuse there).
+const FactorOptions& newton_phase_options(const PreconditionerSettings2D& settings) { return settings.newton_phase; }
+const FactorOptions& newton_phase_options(const PreconditionerSettings3D& settings) { return settings.newton; }
+
 // AKVF, then projected Newton on the same matrix pattern: both take their
 // symbolic analysis from one cache (the settings' own, or a new one).
 template <int D, class Akvf, class Settings>
 std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objective, const Settings& settings) {
   Settings shared = settings;
   if (!shared.akvf.factor.analysis_cache) shared.share_analyses(std::make_shared<SymbolicAnalysisCache>());
-  const FactorOptions newton = shared.newton;
+  const FactorOptions newton = newton_phase_options(shared);
   return std::make_unique<SwitchingPreconditioner>(
       "akvf-newton", std::make_unique<Akvf>(objective, shared.akvf),
       [&objective, newton] { return std::make_unique<NewtonPreconditioner<D>>(objective, newton); });

@@ -24,7 +24,10 @@ using DensityRegistry2D = Registry<DistortionDensity2D, const EnergySettings&>;
 // Options of the preconditioners that have them, set from the command line.
 struct PreconditionerSettings2D {
   AkvfOptions2D akvf;
-  FactorOptions newton;     // factored every iteration unless reuse is set
+  FactorOptions newton;  // factored every iteration unless reuse is set
+  // The Newton phase of akvf-newton: reuses factorizations as AKVF does
+  // (docs/performance.md, "Factorization reuse in the Newton phase").
+  FactorOptions newton_phase = AkvfOptions2D{}.factor;
   FactorOptions laplacian;  // constant: factored once
   FactorOptions slim;       // factored every iteration unless reuse is set
 

@@ -14,6 +14,13 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.line_search = o.line_search;
   c.acceleration = o.acceleration;
   c.preconditioner_settings.akvf.factor.reuse_tolerance = o.akvf_reuse;
+  // --newton-reuse auto: plain newton factors every iteration (the
+  // literature's method); akvf-newton's Newton phase reuses as AKVF does.
+  const bool automatic = o.newton_reuse == "auto";
+  c.preconditioner_settings.newton.reuse_tolerance = automatic ? 0 : std::stod(o.newton_reuse);
+  c.preconditioner_settings.newton_phase = c.preconditioner_settings.newton;
+  c.preconditioner_settings.newton_phase.reuse_tolerance =
+      automatic ? o.akvf_reuse : c.preconditioner_settings.newton.reuse_tolerance;
   c.line_search_settings.rho = o.ls_rho;
   c.init_from_file = o.init == "file";
   if (!c.init_from_file) c.init = parse_tutte_weights(o.init);

@@ -33,6 +33,8 @@ struct ParameterizeOptions {
   std::string line_search = "backtracking";    // or "wolfe-bisection"
   std::string acceleration = "auto";           // AQP momentum: auto (laplacian only), on, off
   double akvf_reuse = 0.03;                    // AKVF: reuse the last factor through CG to this residual; 0 = never
+  std::string newton_reuse = "auto";           // projected Newton's reuse tolerance, or "auto": 0 for newton,
+                                               // akvf_reuse for the Newton phase of akvf-newton
   double ls_rho = 0.5;                         // backtracking shrink factor in (0, 1)
   std::string init = "tutte";                  // initial map: tutte (uniform weights), cotan; "file" is the
                                                // command line's (the API takes Parameterizer::solve(uv0))
