@@ -32,25 +32,29 @@ std::string option_text(const OptionField<Options>& field, const pybind11::handl
   };
   if (value.is_none()) return field.format(Options{});
   const bool is_bool = py::isinstance<py::bool_>(value) || type == "bool_";
+  const auto number_text = [&] {
+    const double number = py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
+    if (std::isinf(number) && number > 0) return std::string("inf");
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", number);
+    return std::string(text);
+  };
   switch (field.kind) {
-    case OptionKind::kText:  // a word, or a switch written on|off on the command line (flaps)
+    case OptionKind::kText:  // a word, or a switch written on|off on the command line (flaps),
+                             // or a number where the word may be one (newton_reuse="auto" or 0.03)
       if (is_bool) return py::reinterpret_borrow<py::object>(value).cast<bool>() ? "on" : "off";
-      if (!py::isinstance<py::str>(value)) throw wrong("a string");
-      return value.cast<std::string>();
+      if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+      if (py::hasattr(value, "__float__")) return number_text();
+      throw wrong("a string");
     case OptionKind::kSwitch:
       if (!is_bool) throw wrong("True or False");
       return py::reinterpret_borrow<py::object>(value).cast<bool>() ? "true" : "false";
     case OptionKind::kInteger:
       if (is_bool || !py::hasattr(value, "__index__")) throw wrong("an integer");
       return py::str(py::module_::import("operator").attr("index")(value)).cast<std::string>();
-    case OptionKind::kNumber: {
+    case OptionKind::kNumber:
       if (is_bool || !(py::hasattr(value, "__float__"))) throw wrong("a number");
-      const double number = py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
-      if (std::isinf(number) && number > 0) return "inf";
-      char text[40];
-      std::snprintf(text, sizeof text, "%.17g", number);
-      return text;
-    }
+      return number_text();
   }
   throw wrong("a value");
 }

@@ -217,3 +217,14 @@ def test_uv_faces_is_F_without_the_cut(disk):
     V, F = disk
     r = akvf.parameterize(V, F)
     assert np.array_equal(r.uv_faces, F)
+
+
+def test_newton_reuse_takes_auto_or_a_number(disk):
+    V, F = disk
+    plain = akvf.parameterize(V, F, precond="newton")
+    assert plain.statistics["reused_solves"] == 0  # auto: newton factors every iteration
+    reused = akvf.parameterize(V, F, precond="newton", newton_reuse=0.5)
+    assert reused.status == "converged"
+    assert np.array_equal(akvf.parameterize(V, F, precond="newton", newton_reuse="0.5").uv, reused.uv)
+    with pytest.raises(akvf.OptionsError, match="auto or a number in"):
+        akvf.parameterize(V, F, newton_reuse=2.0)
