@@ -31,7 +31,7 @@
   const C = decode(data.face_colors, Uint8Array);
   document.getElementById('note').textContent =
     data.faces + ' faces, ' + data.vertices + ' vertices; mean distortion ' + data.mean_distortion.toFixed(4) +
-    ' (4 = isometric)' + (data.degenerate_or_inverted ? '; ' + data.degenerate_or_inverted + ' faces inverted or collapsed' : '') +
+    ' (symmetric Dirichlet, the map scaled to the surface\'s area; 4 = isometric)' + (data.degenerate_or_inverted ? '; ' + data.degenerate_or_inverted + ' faces inverted or collapsed' : '') +
     (data.note ? '. ' + data.note : '');
 
   // The UVs in the unit square (aspect kept): the texture repeats per unit.
