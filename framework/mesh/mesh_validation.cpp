@@ -92,13 +92,17 @@ void cut_into_charts(const std::string& name, DiskMesh* disk) {
   disk->chart_input_loops = std::move(cut.chart_loops);
 }
 
-// One boundary loop and Euler characteristic 1 per chart (a disk each), or
-// the error that says which the mesh is not.
+// One component unless cut, and one boundary loop and Euler characteristic
+// 1 per chart (a disk each), or the error that says which the mesh is not.
 void find_chart_boundaries(const std::string& name, DiskMesh* disk) {
   const TriMesh& m = disk->mesh;
   const EdgeTopology topology = edge_topology(m.F);
   int charts = 0;
   const std::vector<int> chart_of = vertex_components(m.F, m.num_vertices(), &charts);
+  if (!disk->cut && charts != 1)
+    throw ValidationError(name + ": mesh has " + std::to_string(charts) +
+                          " connected components; parameterize one disk-shaped component at a time, or all as "
+                          "charts side by side with the option cut auto (akvf param --cut auto)");
   std::vector<std::vector<std::vector<int>>> loops(charts);
   for (auto& loop : boundary_loops(topology, m.num_vertices()))
     loops[chart_of[loop.front()]].push_back(std::move(loop));
@@ -160,15 +164,7 @@ DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool c
     if (starts_boundary[from]++)
       throw ValidationError(name + ": vertex " + at_input(from) + numbering_note(b) +
                             " is non-manifold: two separate boundary fans meet there");
-  if (cut) {
-    cut_into_charts(name, &out);
-  } else {
-    const int components = count_components(m.F, m.num_vertices());
-    if (components != 1)
-      throw ValidationError(name + ": mesh has " + std::to_string(components) +
-                            " connected components; parameterize one disk-shaped component at a time, or all as "
-                            "charts side by side with the option cut auto (akvf param --cut auto)");
-  }
+  if (cut) cut_into_charts(name, &out);
   find_chart_boundaries(name, &out);
   return out;
 }
