@@ -150,24 +150,17 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                 "AKVF: reuse the last factorization through CG to relative residual TAU "
                                 "(0 = factor K every iteration, as in Algorithm 1)",
                                 &O::akvf_reuse, "in [0, 1)", [](double t) { return t >= 0 && t < 1; }));
-    f.push_back(text_field<O>("newton_reuse", "newton-reuse", "auto|TAU",
-                              "projected Newton: reuse the last factorization through CG to relative residual TAU; "
-                              "auto: 0 for newton (factor every iteration), --akvf-reuse for the Newton phase of "
-                              "akvf-newton",
-                              &O::newton_reuse, [](const O& o) {
-                                if (o.newton_reuse == "auto") return;
-                                std::size_t used = 0;
-                                double tau = -1;
-                                try {
-                                  tau = std::stod(o.newton_reuse, &used);
-                                } catch (const std::exception&) {
-                                  used = 0;
-                                }
-                                if (used != o.newton_reuse.size() || !(tau >= 0 && tau < 1))
-                                  throw OptionsError(
-                                      "option --newton-reuse must be auto or a number in [0, 1), found '" +
-                                      o.newton_reuse + "'");
-                              }));
+    f.push_back(
+        text_field<O>("newton_reuse", "newton-reuse", "auto|TAU",
+                      "projected Newton: reuse the last factorization through CG to relative residual TAU; "
+                      "auto: 0 for newton (factor every iteration), --akvf-reuse for the Newton phase of "
+                      "akvf-newton",
+                      &O::newton_reuse, [](const O& o) {
+                        double tau = -1;
+                        if (o.newton_reuse != "auto" && !(parse_real(o.newton_reuse, &tau) && tau >= 0 && tau < 1))
+                          throw OptionsError("option --newton-reuse must be auto or a number in [0, 1), found '" +
+                                             o.newton_reuse + "'");
+                      }));
     f.push_back(number_field<O>("ls_rho", "ls-rho", "X", "backtracking shrink factor (the paper's text says 0.9)",
                                 &O::ls_rho, "in (0, 1)", [](double r) { return r > 0 && r < 1; }));
     f.push_back(text_field<O>("init", "init", "NAME",

@@ -1,6 +1,7 @@
 #include "akvf/options.h"
 
 #include "akvf/catalog.h"
+#include "framework/mesh/text_reader.h"
 #include "framework/process/error.h"
 
 namespace akvf {
@@ -17,7 +18,9 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   // --newton-reuse auto: plain newton factors every iteration (the
   // literature's method); akvf-newton's Newton phase reuses as AKVF does.
   const bool automatic = o.newton_reuse == "auto";
-  c.preconditioner_settings.newton.reuse_tolerance = automatic ? 0 : std::stod(o.newton_reuse);
+  double tau = 0;
+  if (!automatic) parse_real(o.newton_reuse, &tau);  // checked by the options schema
+  c.preconditioner_settings.newton.reuse_tolerance = tau;
   c.preconditioner_settings.newton_phase = c.preconditioner_settings.newton;
   c.preconditioner_settings.newton_phase.reuse_tolerance =
       automatic ? o.akvf_reuse : c.preconditioner_settings.newton.reuse_tolerance;
