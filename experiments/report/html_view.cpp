@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "experiments/report/checker_texture.h"
 #include "experiments/report/display_decimation.h"
 #include "experiments/report/distortion_color.h"
 #include "experiments/report/seam_split_mesh.h"
@@ -57,8 +58,9 @@ std::string script_safe(const std::string& json) {
   return out;
 }
 
-// The mesh moved and scaled into the unit box (areas of any coordinate
-// range stay finite; ratios of areas do not change).
+// The mesh moved and scaled into the unit box: areas of any coordinate
+// range stay finite, their ratios do not change, and the page's 32-bit
+// floats hold every coordinate.
 TriMesh unit_extent(const TriMesh& mesh) {
   TriMesh unit = mesh;
   const Eigen::RowVector3d low = mesh.V.colwise().minCoeff();
@@ -66,74 +68,22 @@ TriMesh unit_extent(const TriMesh& mesh) {
   return unit;
 }
 
-nlohmann::json page_data(const ViewContent& content) {
-  const Eigen::VectorXd distortion = face_symmetric_dirichlet(content.mesh, content.uv, content.uv_faces);
-  const DisplayMesh display =
-      decimate_for_display(split_at_seams(content.mesh, content.uv, content.uv_faces), kViewFaceLimit);
-  const SeamSplitMesh& split = display.mesh;
-  std::string note = content.note;
-  if (split.mesh.num_faces() < content.mesh.num_faces())
-    note += (note.empty() ? "" : " ") + std::string("Decimated for display: ") +
-            std::to_string(split.mesh.num_faces()) + " of " + std::to_string(content.mesh.num_faces()) +
-            " faces shown (vertex clustering); the distortion colours and mean are the original faces'.";
-  std::vector<float> positions, uv;
-  std::vector<std::uint32_t> indices;
-  std::vector<unsigned char> colors;
-  // Centred and scaled to a unit box (the picture is the same, and any
-  // coordinate range fits the page's 32-bit floats).
-  const Eigen::RowVector3d low = split.mesh.V.colwise().minCoeff(), high = split.mesh.V.colwise().maxCoeff();
-  const Eigen::RowVector2d uv_low = split.uv.colwise().minCoeff(), uv_high = split.uv.colwise().maxCoeff();
-  const double extent = std::max((high - low).maxCoeff(), 1e-300),
-               uv_extent = std::max((uv_high - uv_low).maxCoeff(), 1e-300);
-  for (int v = 0; v < split.mesh.num_vertices(); ++v) {
-    for (int c = 0; c < 3; ++c)
-      positions.push_back(static_cast<float>((split.mesh.V(v, c) - 0.5 * (low[c] + high[c])) / extent));
-    for (int c = 0; c < 2; ++c) uv.push_back(static_cast<float>((split.uv(v, c) - uv_low[c]) / uv_extent));
-  }
-  for (int f = 0; f < split.mesh.num_faces(); ++f) {
-    for (int k = 0; k < 3; ++k) indices.push_back(static_cast<std::uint32_t>(split.mesh.F(f, k)));
-    for (unsigned char channel : distortion_color(distortion[display.source_face[f]] - 4)) colors.push_back(channel);
-  }
-  double finite_sum = 0, area_sum = 0;
-  int inverted = 0;
-  const TriMesh m = unit_extent(content.mesh);
-  for (int f = 0; f < m.num_faces(); ++f) {
-    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
-    const double area = 0.5 * (b - a).cross(c - a).norm();
-    if (std::isfinite(distortion[f])) {
-      finite_sum += area * distortion[f];
-      area_sum += area;
-    } else {
-      ++inverted;
-    }
-  }
-  return {{"title", content.title},
-          {"note", note},
-          {"vertices", content.mesh.num_vertices()},
-          {"faces", content.mesh.num_faces()},
-          {"mean_distortion", area_sum > 0 ? finite_sum / area_sum : 0.0},
-          {"degenerate_or_inverted", inverted},
-          {"positions", base64_of(positions)},
-          {"uv", base64_of(uv)},
-          {"indices", base64_of(indices)},
-          {"face_colors", base64_of(colors)},
-          {"summary", content.summary}};
-}
+// The symmetric Dirichlet distortion of each face under the map scaled to
+// the surface's area (the energy's scale: 4 is isometric; +infinity where the
+// map inverts or collapses a face), and each face's area. Mesh and map of
+// unit extent (unit_extent, unit_square_uv).
+struct MapDistortion {
+  Eigen::VectorXd value, area;
+};
 
-}  // namespace
-
-Eigen::VectorXd face_symmetric_dirichlet(const TriMesh& mesh, const Eigen::MatrixXd& uv,
-                                         const Eigen::MatrixXi& uv_faces) {
-  // Both scaled to unit extent first: the value does not depend on either
-  // scale, and squares of any coordinate range stay finite.
-  const RestTriangles rest = rest_triangles(unit_extent(mesh));
-  const double uv_extent = std::max((uv.colwise().maxCoeff() - uv.colwise().minCoeff()).maxCoeff(), 1e-300);
+MapDistortion map_distortion(const TriMesh& mesh, const Eigen::MatrixXd& uv, const Eigen::MatrixXi& uv_faces) {
+  const RestTriangles rest = rest_triangles(mesh);
   double uv_area = 0;
   std::vector<Eigen::Matrix2d> Ds(mesh.num_faces());
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    const Eigen::RowVector2d p0 = uv.row(uv_faces(f, 0)) / uv_extent;
-    Ds[f].col(0) = (uv.row(uv_faces(f, 1)) / uv_extent - p0).transpose();
-    Ds[f].col(1) = (uv.row(uv_faces(f, 2)) / uv_extent - p0).transpose();
+    const Eigen::RowVector2d p0 = uv.row(uv_faces(f, 0));
+    Ds[f].col(0) = (uv.row(uv_faces(f, 1)) - p0).transpose();
+    Ds[f].col(1) = (uv.row(uv_faces(f, 2)) - p0).transpose();
     uv_area += 0.5 * Ds[f].determinant();
   }
   const double scale = uv_area > 0 ? std::sqrt(rest.total_area / uv_area) : 1;
@@ -144,8 +94,56 @@ Eigen::VectorXd face_symmetric_dirichlet(const TriMesh& mesh, const Eigen::Matri
     // ||J||_F^2 + ||J^-1||_F^2, and ||J^-1||_F = ||J||_F / |det J| in 2D.
     values[f] = det > 0 ? J.squaredNorm() * (1 + 1 / (det * det)) : std::numeric_limits<double>::infinity();
   }
-  return values;
+  return {values, rest.area};
 }
+
+nlohmann::json page_data(const ViewContent& content) {
+  const TriMesh mesh = unit_extent(content.mesh);
+  const Eigen::MatrixXd uv = unit_square_uv(content.uv);
+  const MapDistortion distortion = map_distortion(mesh, uv, content.uv_faces);
+  const DisplayMesh display = decimate_for_display(split_at_seams(mesh, uv, content.uv_faces), kViewFaceLimit);
+  const SeamSplitMesh& split = display.mesh;
+  std::string note = content.note;
+  if (split.mesh.num_faces() < mesh.num_faces())
+    note += (note.empty() ? "" : " ") + std::string("Decimated for display: ") +
+            std::to_string(split.mesh.num_faces()) + " of " + std::to_string(mesh.num_faces()) +
+            " faces shown (vertex clustering); the distortion colours and mean are the original faces'.";
+  std::vector<float> positions, texcoords;
+  std::vector<std::uint32_t> indices;
+  std::vector<unsigned char> colors;
+  for (int v = 0; v < split.mesh.num_vertices(); ++v) {
+    for (int c = 0; c < 3; ++c) positions.push_back(static_cast<float>(split.mesh.V(v, c)));
+    for (int c = 0; c < 2; ++c) texcoords.push_back(static_cast<float>(split.uv(v, c)));
+  }
+  for (int f = 0; f < split.mesh.num_faces(); ++f) {
+    for (int k = 0; k < 3; ++k) indices.push_back(static_cast<std::uint32_t>(split.mesh.F(f, k)));
+    for (unsigned char channel : distortion_color(distortion.value[display.source_face[f]] - 4))
+      colors.push_back(channel);
+  }
+  double finite_sum = 0, area_sum = 0;
+  int inverted = 0;
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    if (std::isfinite(distortion.value[f])) {
+      finite_sum += distortion.area[f] * distortion.value[f];
+      area_sum += distortion.area[f];
+    } else {
+      ++inverted;
+    }
+  }
+  return {{"title", content.title},
+          {"note", note},
+          {"vertices", mesh.num_vertices()},
+          {"faces", mesh.num_faces()},
+          {"mean_distortion", area_sum > 0 ? finite_sum / area_sum : 0.0},
+          {"degenerate_or_inverted", inverted},
+          {"positions", base64_of(positions)},
+          {"uv", base64_of(texcoords)},
+          {"indices", base64_of(indices)},
+          {"face_colors", base64_of(colors)},
+          {"summary", content.summary}};
+}
+
+}  // namespace
 
 bool html_view_available() { return embedded::three_js != nullptr && embedded::orbit_controls_js != nullptr; }
 

@@ -27,12 +27,6 @@ struct ViewContent {
   std::string note;                // shown under the title, e.g. what was left out
 };
 
-// The symmetric Dirichlet distortion of each face under the map, with the
-// map scaled to the surface's area (the energy's scale, so 4 is isometric;
-// +infinity where the map inverts or collapses a face).
-Eigen::VectorXd face_symmetric_dirichlet(const TriMesh& mesh, const Eigen::MatrixXd& uv,
-                                         const Eigen::MatrixXi& uv_faces);
-
 // True when this build embeds three.js (libjs-three was found).
 bool html_view_available();
 // OptionsError saying what to install unless html_view_available().

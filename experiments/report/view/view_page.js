@@ -34,14 +34,6 @@
     ' (symmetric Dirichlet, the map scaled to the surface\'s area; 4 = isometric)' + (data.degenerate_or_inverted ? '; ' + data.degenerate_or_inverted + ' faces inverted or collapsed' : '') +
     (data.note ? '. ' + data.note : '');
 
-  // The UVs in the unit square (aspect kept): the texture repeats per unit.
-  let uMin = Infinity, vMin = Infinity, uMax = -Infinity, vMax = -Infinity;
-  for (let i = 0; i < T.length; i += 2) {
-    uMin = Math.min(uMin, T[i]); uMax = Math.max(uMax, T[i]);
-    vMin = Math.min(vMin, T[i + 1]); vMax = Math.max(vMax, T[i + 1]);
-  }
-  const extent = Math.max(uMax - uMin, vMax - vMin, 1e-300);
-
   // Unindexed corners: a face's colour on each of its corners.
   const corners = I.length;
   const position = new Float32Array(3 * corners), uv = new Float32Array(2 * corners);
@@ -49,7 +41,7 @@
   for (let c = 0; c < corners; ++c) {
     const v = I[c], f = Math.floor(c / 3);
     position[3 * c] = P[3 * v]; position[3 * c + 1] = P[3 * v + 1]; position[3 * c + 2] = P[3 * v + 2];
-    uv[2 * c] = (T[2 * v] - uMin) / extent; uv[2 * c + 1] = (T[2 * v + 1] - vMin) / extent;
+    uv[2 * c] = T[2 * v]; uv[2 * c + 1] = T[2 * v + 1];  // in the unit square (html_view.cpp)
     color[3 * c] = C[3 * f] / 255; color[3 * c + 1] = C[3 * f + 1] / 255; color[3 * c + 2] = C[3 * f + 2] / 255;
   }
 
