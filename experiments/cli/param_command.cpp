@@ -16,6 +16,7 @@
 #include "experiments/report/checker_texture.h"
 #include "experiments/report/gltf_writer.h"
 #include "experiments/report/html_view.h"
+#include "experiments/report/layout.h"
 #include "experiments/report/run_summary.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/report/uv_png.h"
@@ -113,7 +114,8 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
     const Json summary = param_summary(name, options, setup, result);
     if (!outputs.summary.empty()) write_summary(outputs.summary, summary);
     if (!outputs.view.empty()) {
-      ViewContent view{input, UV, UV_faces, std::filesystem::path(name).filename().string(), summary, ""};
+      ViewContent view = view_of(setup, result.x, std::filesystem::path(name).filename().string());
+      view.summary = summary;
       write_html_view(outputs.view, view);
     }
   }

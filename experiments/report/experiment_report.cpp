@@ -177,7 +177,6 @@ std::string write_experiment_report(const std::string& out_dir) {
   });
 
   fs::create_directories(join_path(out_dir, "plots"));
-  std::vector<std::string> plots;
   for (std::size_t i = 0; i < manifest.meshes.size(); ++i) {
     for (const char* axis : {"iter", "seconds"}) {
       std::vector<PlotSeries> series;
@@ -215,6 +214,7 @@ std::string write_experiment_report(const std::string& out_dir) {
     }
   }
   // Every plot in the folder (also those of a run whose traces are gone).
+  std::vector<std::string> plots;
   for (const auto& entry : fs::directory_iterator(join_path(out_dir, "plots")))
     if (entry.path().extension() == ".svg") plots.push_back("plots/" + entry.path().filename().string());
   std::sort(plots.begin(), plots.end());

@@ -10,4 +10,13 @@ Layout layout_of(const ParamSetup& setup, const Eigen::VectorXd& x) {
   return layout;
 }
 
+ViewContent view_of(const ParamSetup& setup, const Eigen::VectorXd& x, const std::string& title) {
+  ViewContent view;
+  view.mesh = setup.disk.mesh;
+  view.uv = chart_uv(setup, x);
+  view.uv_faces = setup.disk.mesh.F;
+  view.title = title;
+  return view;
+}
+
 }  // namespace akvf

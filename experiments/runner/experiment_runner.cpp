@@ -1,7 +1,5 @@
 #include "experiments/runner/experiment_runner.h"
 
-#include "experiments/report/html_view.h"
-
 #include <tbb/global_control.h>
 
 #include <chrono>
@@ -9,6 +7,7 @@
 #include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -18,6 +17,7 @@
 #include "akvf/slim_cube.h"
 #include "experiments/cli/run_reporting.h"
 #include "experiments/report/html_view.h"
+#include "experiments/report/layout.h"
 #include "experiments/report/run_summary.h"
 #include "experiments/report/text_utilities.h"
 #include "experiments/report/trace_csv.h"
@@ -53,8 +53,8 @@ struct CaseResult {
   OptimizerResult result;
   double lower_bound = 0;
   int vertices = 0, elements = 0;
-  std::unique_ptr<ViewContent> view;  // the final map, when views are asked for
-  Json cut;                           // cut_record after --cut auto, else null
+  std::optional<ViewContent> view;  // the final map, when views are asked for
+  Json cut;                         // cut_record after --cut auto, else null
 };
 
 CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, const std::string& mesh_path,
@@ -90,13 +90,7 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
   out.vertices = setup.disk.mesh.num_vertices();
   out.elements = setup.disk.mesh.num_faces();
   if (setup.disk.cut) out.cut = cut_record(setup.disk);
-  if (views)
-    out.view.reset(new ViewContent{setup.disk.mesh,
-                                   chart_uv(setup, out.result.x),
-                                   setup.disk.mesh.F,
-                                   c.mesh_label + " - " + c.method_label,
-                                   {},
-                                   ""});
+  if (views) out.view = view_of(setup, out.result.x, c.mesh_label + " - " + c.method_label);
   return out;
 }
 
