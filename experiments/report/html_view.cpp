@@ -1,8 +1,6 @@
 #include "experiments/report/html_view.h"
 
-#include <Eigen/Geometry>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <vector>
 
