@@ -1,5 +1,6 @@
 #include "experiments/report/html_view.h"
 
+#include <Eigen/LU>
 #include <cmath>
 #include <limits>
 #include <vector>
