@@ -163,6 +163,18 @@ void require_solver(const std::string& name) {
   throw OptionsError("unknown solver '" + name + "' (valid: " + kDescentSolver + ", " + kLbfgsMethod + ")");
 }
 
+void require_linear_solver(const std::string& name) {
+  if (name != "auto" && name != "cholmod" && name != "amg")
+    throw OptionsError("unknown linear solver '" + name + "' (valid: auto, cholmod, amg)");
+}
+
+LinearSolver linear_solver_for(const std::string& name, long unknowns) {
+  require_linear_solver(name);
+  if (name == "amg") return LinearSolver::kAmg;
+  if (name == "auto" && AlgebraicMultigrid::available() && unknowns >= kAmgMinimumUnknowns) return LinearSolver::kAmg;
+  return LinearSolver::kCholmod;
+}
+
 void require_method(const std::string& name) {
   if (name == kLbfgsMethod || preconditioners_2d().contains(name)) return;
   throw OptionsError("unknown preconditioner '" + name + "' (valid: " + preconditioners_2d().names() + ", " +

@@ -35,6 +35,11 @@ struct PreconditionerSettings2D {
   void share_analyses(const std::shared_ptr<SymbolicAnalysisCache>& cache) {
     for (FactorOptions* options : {&akvf.factor, &newton, &laplacian, &slim}) options->analysis_cache = cache;
   }
+  // Every factored preconditioner solves with `solver`.
+  void set_linear_solver(LinearSolver solver) {
+    for (FactorOptions* options : {&akvf.factor, &newton, &newton_phase, &laplacian, &slim})
+      options->linear_solver = solver;
+  }
 };
 
 using PreconditionerRegistry2D = Registry<Preconditioner, const MeshObjective2D&, const PreconditionerSettings2D&>;
@@ -54,6 +59,14 @@ void require_solver(const std::string& name);
 // OptionsError listing every valid --precond name (and the alias lbfgs) when
 // `name` is none.
 void require_method(const std::string& name);
+
+// --linear-solver: "cholmod" (sparse Cholesky), "amg" (CG with algebraic
+// multigrid, solvers/algebraic_multigrid.h) or "auto": amg from
+// kAmgMinimumUnknowns unknowns on (measured: docs/performance.md, "Linear
+// solvers"), when this build has it. OptionsError for any other name.
+inline constexpr long kAmgMinimumUnknowns = 2000000;
+void require_linear_solver(const std::string& name);
+LinearSolver linear_solver_for(const std::string& name, long unknowns);
 
 // The registry tag of preconditioners that AQP's momentum accompanies by
 // default (the Laplacian, as AQP pairs them).
@@ -82,6 +95,10 @@ struct PreconditionerSettings3D {
   // Every factored preconditioner takes its symbolic analyses from `cache`.
   void share_analyses(const std::shared_ptr<SymbolicAnalysisCache>& cache) {
     for (FactorOptions* options : {&akvf.factor, &newton, &laplacian, &slim}) options->analysis_cache = cache;
+  }
+  // Every factored preconditioner solves with `solver`.
+  void set_linear_solver(LinearSolver solver) {
+    for (FactorOptions* options : {&akvf.factor, &newton, &laplacian, &slim}) options->linear_solver = solver;
   }
 };
 using PreconditionerRegistry3D = Registry<Preconditioner, const MeshObjective3D&, const PreconditionerSettings3D&>;

@@ -34,7 +34,8 @@ struct DeformOptions {
   double grad_tol = 1e-3;
   int max_iters = 100;  // Figure 8 runs 100 iterations
   double time_limit = std::numeric_limits<double>::infinity();
-  int threads = 0;  // 0 = all cores
+  std::string linear_solver = "auto";  // cholmod, amg (algebraic multigrid) or auto (amg on large meshes)
+  int threads = 0;                     // 0 = all cores
   // As ParameterizeOptions::callbacks; x is interleaved x0 y0 z0 x1 ... at
   // the input's scale.
   std::vector<IterationCallback> callbacks;

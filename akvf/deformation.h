@@ -32,7 +32,8 @@ struct DeformConfig {
   // AKVF exactly as §6.2 states it: K + c I, without the constraints'
   // Hessian and without the energy scale (docs/design.md measures both).
   bool akvf_as_written = false;
-  int threads = 0;  // worker threads during the run; 0 = all cores
+  std::string linear_solver = "auto";  // resolved per mesh by linear_solver_for (catalog.h)
+  int threads = 0;                     // worker threads during the run; 0 = all cores
   OptimizerOptions optimizer = [] {
     OptimizerOptions o;
     o.max_iterations = 100;  // Figure 8 runs 100 iterations of each method

@@ -126,6 +126,11 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
                                      [](int n) { return n >= 0; }));
   fields->push_back(number_field<O>("time_limit", "time-limit", "SECONDS", "stop after this much optimizer time",
                                     &O::time_limit, "> 0 seconds", [](double t) { return t > 0; }));
+  fields->push_back(text_field<O>("linear_solver", "linear-solver", "auto|cholmod|amg",
+                                  "linear systems: cholmod (sparse Cholesky), amg (CG with hypre's algebraic "
+                                  "multigrid, for millions of faces), auto (amg from " +
+                                      std::to_string(kAmgMinimumUnknowns) + " unknowns)",
+                                  &O::linear_solver, [](const O& o) { require_linear_solver(o.linear_solver); }));
   fields->push_back(integer_field<O>("threads", "threads", "N", "worker threads (0 = all cores)", &O::threads,
                                      ">= 0 (0 = all cores)", [](int n) { return n >= 0; }));
 }

@@ -33,6 +33,7 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.optimizer.max_iterations = o.max_iters;
   c.optimizer.time_limit = o.time_limit;
   c.warm_start_max_iterations = o.warm_start_iters;
+  c.linear_solver = o.linear_solver;
   c.threads = o.threads;
   return c;
 }
@@ -55,6 +56,7 @@ DeformConfig deform_config(const DeformOptions& o) {
   c.optimizer.gradient_tolerance = o.grad_tol;
   c.optimizer.max_iterations = o.max_iters;
   c.optimizer.time_limit = o.time_limit;
+  c.linear_solver = o.linear_solver;
   c.threads = o.threads;
   return c;
 }

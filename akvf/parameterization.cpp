@@ -108,8 +108,9 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
     run.result = minimize_lbfgs(*setup.objective, setup.x0, config.optimizer, {}, callbacks);  // no momentum
     return run;
   }
-  auto preconditioner =
-      preconditioners_2d().create(config.preconditioner, *setup.objective, config.preconditioner_settings);
+  PreconditionerSettings2D settings = config.preconditioner_settings;
+  settings.set_linear_solver(linear_solver_for(config.linear_solver, setup.x0.size()));
+  auto preconditioner = preconditioners_2d().create(config.preconditioner, *setup.objective, settings);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
   run.preconditioner_name = preconditioner->name();
   run.result = minimize(*setup.objective, *preconditioner, *line_search, setup.x0, optimizer, callbacks);

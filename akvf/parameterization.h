@@ -42,6 +42,7 @@ struct ParamConfig {
   // initial map (symmetric Dirichlet with AKVF to gradient 1e-3 first).
   int warm_start_max_iterations = 1000;
   // Worker threads (TBB and OpenBLAS) during the run; 0 = all cores.
+  std::string linear_solver = "auto";  // resolved per mesh by linear_solver_for (catalog.h)
   int threads = 0;
 };
 

@@ -44,8 +44,9 @@ struct ParameterizeOptions {
   double grad_tol = 1e-3;                      // converged when ||grad E|| < grad_tol (area-1 units)
   int max_iters = 1000;                        // >= 0
   double time_limit = std::numeric_limits<double>::infinity();  // optimizer seconds, > 0
-  int warm_start_iters = 1000;  // limit of the symmetric Dirichlet warm start of overflowing energies
-  int threads = 0;              // worker threads for this call; 0 = all cores
+  int warm_start_iters = 1000;         // limit of the symmetric Dirichlet warm start of overflowing energies
+  std::string linear_solver = "auto";  // cholmod, amg (algebraic multigrid) or auto (amg on large meshes)
+  int threads = 0;                     // worker threads for this call; 0 = all cores
   // Called after every iteration (row 0 = the initial map) with the summary
   // and the current map (interleaved u0 v0 u1 v1 ..., area-1 units; use
   // Parameterizer::uv_of to get #V by 2 at the input's scale). Returning

@@ -28,5 +28,5 @@ configure_package_config_file(cmake/akvfConfig.cmake.in ${PROJECT_BINARY_DIR}/ak
 # 0.x: a minor version may change the API, so 0.2 accepts 0.2.* only.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/akvfConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/akvfConfig.cmake ${PROJECT_BINARY_DIR}/akvfConfigVersion.cmake
-  cmake/FindCHOLMOD.cmake DESTINATION ${AKVF_CMAKE_DIR})
+  cmake/FindCHOLMOD.cmake cmake/FindHYPRE.cmake DESTINATION ${AKVF_CMAKE_DIR})
 install(FILES LICENSE DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/akvf)

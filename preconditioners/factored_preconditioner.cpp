@@ -33,6 +33,15 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
   if (!(options_.cg_tolerance >= 0 && options_.cg_tolerance < 1)) throw OptionsError("CG tolerance must be in [0, 1)");
   if (options_.cg_max_iterations < 1) throw OptionsError("CG needs at least one iteration");
   if (options_.reuse_max_cg < 1) throw OptionsError("factorization reuse needs at least one CG iteration");
+  if (options_.linear_solver == LinearSolver::kAmg) {
+    if (!AlgebraicMultigrid::available()) AlgebraicMultigrid().setup({}, 1);  // throws what to install
+    if (!(options_.amg_tolerance > 0 && options_.amg_tolerance < 1))
+      throw OptionsError("the multigrid solve's tolerance must be in (0, 1)");
+    if (options_.amg_max_cg < 1 || options_.amg_setup_cycles < 0)
+      throw OptionsError("the multigrid solve needs at least one CG iteration and a setup cost >= 0");
+    if (options_.cg_tolerance > 0)
+      throw OptionsError("choose one of the Jacobi CG solve (a CG tolerance) and the multigrid solve");
+  }
   if (options_.extra_diagonal.size() != 0 &&
       (options_.extra_diagonal.size() != static_cast<Eigen::Index>(D) * num_vertices ||
        !(options_.extra_diagonal.array() >= 0).all()))
@@ -49,6 +58,10 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
 
 template <int D>
 std::string FactoredPreconditioner<D>::report() const {
+  if (statistics_.multigrid_setups > 0)
+    return std::to_string(statistics_.multigrid_setups) + " multigrid setups, " +
+           std::to_string(statistics_.reused_solves) + " solves with an earlier hierarchy (" +
+           std::to_string(statistics_.cg_iterations) + " CG iterations)";
   if (statistics_.cg_solves > 0)
     return std::to_string(statistics_.cg_solves) + " CG solves (" + std::to_string(statistics_.cg_iterations) +
            " iterations), no factorization";
@@ -67,6 +80,11 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
     matrix_.add_to_diagonal(options_.tikhonov * matrix_.mean_diagonal() + options_.absolute_shift);
     if (options_.extra_diagonal.size() != 0) matrix_.add_to_diagonal(options_.extra_diagonal);
   };
+  if (options_.linear_solver == LinearSolver::kAmg) {
+    // apply() builds or reuses the hierarchy (a constant P is assembled once).
+    if (!is_constant() || !multigrid_.ready()) assemble_shifted();
+    return;
+  }
   if (is_constant()) {
     if (!cholesky_.analyzed()) {
       assemble_shifted();
@@ -107,6 +125,10 @@ void FactoredPreconditioner<D>::apply(const Eigen::VectorXd& gradient, Eigen::Ve
     solve_by_conjugate_gradients(gradient, result);
     return;
   }
+  if (options_.linear_solver == LinearSolver::kAmg) {
+    solve_by_multigrid(gradient, result);
+    return;
+  }
   if (!factor_is_current_) {
     if (solve_with_previous_factor(gradient, result)) {
       ++statistics_.reused_solves;
@@ -123,54 +145,91 @@ void FactoredPreconditioner<D>::apply(const Eigen::VectorXd& gradient, Eigen::Ve
 
 template <int D>
 bool FactoredPreconditioner<D>::solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d) {
+  const auto inverse = [this](const Eigen::VectorXd& r, Eigen::VectorXd* z) { cholesky_.solve(r, z); };
+  return projected_cg(g, factored_null_basis_, inverse, options_.reuse_tolerance, options_.reuse_max_cg, true, d)
+      .converged;
+}
+
+template <int D>
+void FactoredPreconditioner<D>::solve_by_multigrid(const Eigen::VectorXd& g, Eigen::VectorXd* d) {
+  const auto inverse = [this](const Eigen::VectorXd& r, Eigen::VectorXd* z) { multigrid_.apply(r, z); };
+  if (multigrid_.ready()) {
+    // A constant P keeps its hierarchy; otherwise the old one serves while it
+    // costs less than a new setup (module comment).
+    const int budget = is_constant()
+                           ? options_.amg_max_cg
+                           : std::min(options_.amg_max_cg, fresh_multigrid_iterations_ + options_.amg_setup_cycles);
+    const CgOutcome reused =
+        projected_cg(g, multigrid_null_basis_, inverse, options_.amg_tolerance, budget, !is_constant(), d);
+    if (reused.converged || is_constant()) {
+      ++statistics_.reused_solves;
+      return;
+    }
+  }
+  multigrid_.setup(matrix_.upper(), D);
+  multigrid_null_basis_ = null_basis_;
+  ++statistics_.multigrid_setups;
+  fresh_multigrid_iterations_ =
+      projected_cg(g, multigrid_null_basis_, inverse, options_.amg_tolerance, options_.amg_max_cg, false, d).iterations;
+}
+
+template <int D>
+typename FactoredPreconditioner<D>::CgOutcome FactoredPreconditioner<D>::projected_cg(
+    const Eigen::VectorXd& g, const ComponentMotions& built_null_basis, const Inverse& inverse, double tolerance,
+    int max_iterations, bool give_up_early, Eigen::VectorXd* d) {
   // CG on A = P(x) + eps I restricted to the complement of the current null
   // space N, with the symmetric PSD preconditioner
-  //   M^-1 = P_N P_N' (P' + eps I)^-1 P_N' P_N,
-  // where P' is the factored (older) matrix, N' its null space and P_X the
-  // orthogonal projector onto the complement of X.
+  //   M^-1 = P_N P_N' Minv P_N' P_N,
+  // where Minv is `inverse` (built from an older matrix P'), N' the null
+  // space when it was built and P_X the orthogonal projector onto the
+  // complement of X.
   const auto project = [](const ComponentMotions& motions, Eigen::VectorXd& v) { motions.project_out(&v); };
   const auto A = matrix_.upper().template selfadjointView<Eigen::Upper>();
   const auto precondition = [&](Eigen::VectorXd r, Eigen::VectorXd* z) {
     project(null_basis_, r);
-    project(factored_null_basis_, r);
-    cholesky_.solve(r, z);
-    project(factored_null_basis_, *z);
+    project(built_null_basis, r);
+    inverse(r, z);
+    project(built_null_basis, *z);
     project(null_basis_, *z);
   };
+  CgOutcome outcome;
   Eigen::VectorXd r = g;
   project(null_basis_, r);
-  const double target = options_.reuse_tolerance * g.norm();
+  const double target = tolerance * g.norm();
   const double initial_residual = r.norm();
   d->setZero(g.size());
   Eigen::VectorXd z, p, q;
   precondition(r, &z);
   p = z;
   double rz = r.dot(z);
-  for (int k = 1; k <= options_.reuse_max_cg; ++k) {
+  for (int k = 1; k <= max_iterations; ++k) {
     ++statistics_.cg_iterations;
+    outcome.iterations = k;
     q = A * p;
     const double curvature = p.dot(q);
-    if (!(curvature > 0)) return false;
+    if (!(curvature > 0)) break;
     const double alpha = rz / curvature;
     *d += alpha * p;
     r -= alpha * q;
     const double residual = r.norm();
     if (residual <= target) {
-      project(null_basis_, *d);
-      return true;
+      outcome.converged = true;
+      break;
     }
     // Give up early when the mean contraction so far, continued to the last
     // allowed iteration, would still miss the target by a wide margin.
-    if (k >= 2 && k < options_.reuse_max_cg) {
+    if (give_up_early && k >= 2 && k < max_iterations) {
       const double rate = std::pow(residual / initial_residual, 1.0 / k);
-      if (residual * std::pow(rate, options_.reuse_max_cg - k) > 3 * target) return false;
+      if (residual * std::pow(rate, max_iterations - k) > 3 * target) break;
     }
     precondition(r, &z);
     const double rz_next = r.dot(z);
+    if (!(rz_next > 0)) break;  // the preconditioner is not positive definite here
     p = z + (rz_next / rz) * p;
     rz = rz_next;
   }
-  return false;
+  project(null_basis_, *d);
+  return outcome;
 }
 
 template <int D>

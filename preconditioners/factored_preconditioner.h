@@ -23,6 +23,18 @@
 // An attempt is abandoned as soon as its mean residual contraction, continued
 // to max_cg, would miss tau by more than 3x (that saves most of the cost of
 // a failed attempt; on horse_b it turns 1.05 s into 1.0 s).
+//
+// Algebraic multigrid (linear_solver = kAmg). Instead of a factorization,
+// hypre's BoomerAMG builds a hierarchy of P(x) (solvers/algebraic_multigrid.h)
+// and CG preconditioned by one V-cycle solves to amg_tolerance, with the null
+// space projected as above. The hierarchy is reused at later iterations as a
+// factor is: CG on the new P(x) with the old hierarchy, accepted if it
+// converges within the iterations a fresh hierarchy took plus
+// amg_setup_cycles (the setup costs about that many CG iterations, measured
+// in docs/performance.md), else a new hierarchy is built. A solve that does
+// not reach the tolerance within amg_max_cg iterations still gives a descent
+// direction (its last CG iterate).
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -30,12 +42,22 @@
 #include "framework/optimization/mesh_objective.h"
 #include "framework/optimization/preconditioner.h"
 #include "preconditioners/motion_bases.h"
+#include "solvers/algebraic_multigrid.h"
 #include "solvers/sparse_cholesky.h"
 #include "solvers/symbolic_analysis_cache.h"
 
 namespace akvf {
 
+// How P's systems are solved: CHOLMOD's sparse Cholesky, or conjugate
+// gradients preconditioned by algebraic multigrid (scales to millions of
+// unknowns: no fill).
+enum class LinearSolver { kCholmod, kAmg };
+
 struct FactorOptions {
+  LinearSolver linear_solver = LinearSolver::kCholmod;
+  double amg_tolerance = 1e-2;  // relative residual of the multigrid-preconditioned CG
+  int amg_max_cg = 200;
+  int amg_setup_cycles = 4;    // a hierarchy's setup in CG iterations: the reuse budget's slack
   double tikhonov = 1e-8;      // shift relative to mean(diag P)
   double absolute_shift = 0;   // added to the relative shift: c of K + c I (§6.2 uses 1e-4)
   double reuse_tolerance = 0;  // tau; 0 factors at every update
@@ -96,10 +118,26 @@ class FactoredPreconditioner : public Preconditioner {
   void factorize_current();
   void solve_by_conjugate_gradients(const Eigen::VectorXd& g, Eigen::VectorXd* d);
   bool solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d);
+  void solve_by_multigrid(const Eigen::VectorXd& g, Eigen::VectorXd* d);
+  // CG on (P(x) + shift) d = g in the complement of the current null space,
+  // preconditioned by `inverse` (an older factor or hierarchy, built when
+  // the null space was `built_null_basis`), to tolerance * |g| within
+  // max_iterations; with give_up_early it stops once its mean contraction
+  // would miss the tolerance by more than 3x. d is the last iterate.
+  struct CgOutcome {
+    bool converged = false;
+    int iterations = 0;
+  };
+  using Inverse = std::function<void(const Eigen::VectorXd&, Eigen::VectorXd*)>;
+  CgOutcome projected_cg(const Eigen::VectorXd& g, const ComponentMotions& built_null_basis, const Inverse& inverse,
+                         double tolerance, int max_iterations, bool give_up_early, Eigen::VectorXd* d);
 
   FactorOptions options_;
   Matrix matrix_;
   SparseCholesky cholesky_;
+  AlgebraicMultigrid multigrid_;
+  ComponentMotions multigrid_null_basis_;  // at the hierarchy's setup
+  int fresh_multigrid_iterations_ = 0;     // CG iterations of the last solve with a new hierarchy
   // Vertices of each connected component, if there are several (the charts
   // of a cut mesh): null_space() applies to each on its own.
   std::shared_ptr<const std::vector<std::vector<int>>> component_vertices_;

@@ -39,6 +39,7 @@ PreconditionerStatistics SwitchingPreconditioner::statistics() const {
     sum.reused_solves += more.reused_solves;
     sum.cg_iterations += more.cg_iterations;
     sum.symbolic_analyses += more.symbolic_analyses;
+    sum.multigrid_setups += more.multigrid_setups;
   }
   return sum;
 }

@@ -158,6 +158,7 @@ py::dict result_dict(const Result& r) {
   statistics["cg_solves"] = s.preconditioner.cg_solves;
   statistics["cg_iterations"] = s.preconditioner.cg_iterations;
   statistics["symbolic_analyses"] = s.preconditioner.symbolic_analyses;
+  statistics["multigrid_setups"] = s.preconditioner.multigrid_setups;
   d["statistics"] = statistics;
   d["preconditioner_report"] = r.preconditioner_report;
   d["warnings"] = py::cast(r.warnings);

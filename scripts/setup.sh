@@ -10,6 +10,7 @@ packages=(
   pybind11-dev python3-dev python3-pybind11 python3-numpy python3-pytest  # the Python module (python/)
   python3-jsonschema  # the tests check every --summary against docs/run_summary.schema.json
   clang libclang-rt-14-dev  # scripts/sanitize.sh: ASan, UBSan and libFuzzer
+  libhypre-dev  # algebraic multigrid (hypre's BoomerAMG) for --linear-solver amg
   libjs-three  # three.js, embedded in the HTML views (akvf view)
   chromium  # the browser test of the views (tests/browser/check_pages.py), headless
 )

@@ -3,7 +3,9 @@
 //   K assembly (Eq. 5), energy + gradient, numeric factorization, solve, one
 //   whole iteration with a factorization (update, solve, flip-free line
 //   search, gradient); a density's energy, gradient and projected Hessian,
-//   hand-written against automatic differentiation.
+//   hand-written against automatic differentiation; the algebraic multigrid
+//   path (hierarchy setup, one V-cycle, a CG solve to 1e-2) on horse_b and
+//   horse_b subdivided to 16x and 64x its faces (635 K and 2.5 M).
 // Run: ./build/akvf_benchmarks [--benchmark_filter=horse]
 #include <benchmark/benchmark.h>
 
@@ -17,7 +19,9 @@
 #include "energies/symmetric_dirichlet.h"
 #include "experiments/cli/native_runtime.h"
 #include "framework/mesh/mesh_io.h"
+#include "framework/mesh/mesh_subdivision.h"
 #include "preconditioners/akvf_preconditioner_2d.h"
+#include "solvers/algebraic_multigrid.h"
 #include "solvers/backtracking_line_search.h"
 #include "solvers/sparse_cholesky.h"
 
@@ -37,9 +41,10 @@ struct Fixture {
   Eigen::VectorXd x;
 };
 
-Fixture* fixture(const std::string& mesh) {
-  static std::map<std::string, std::unique_ptr<Fixture>> cache;
-  auto& slot = cache[mesh];
+// `mesh` after `subdivide` rounds of midpoint subdivision (faces x 4 each).
+Fixture* fixture(const std::string& mesh, int subdivide = 0) {
+  static std::map<std::pair<std::string, int>, std::unique_ptr<Fixture>> cache;
+  auto& slot = cache[{mesh, subdivide}];
   if (!slot) {
     const std::string dir = data_dir();
     if (dir.empty()) return nullptr;
@@ -47,15 +52,16 @@ Fixture* fixture(const std::string& mesh) {
     akvf::ParamConfig config;
     config.optimizer.max_iterations = 5;
     auto f = std::make_unique<Fixture>();
-    f->setup = akvf::prepare_parameterization(akvf::read_triangle_mesh(path), path, config);
+    f->setup = akvf::prepare_parameterization(akvf::subdivide_midpoint(akvf::read_triangle_mesh(path), subdivide), path,
+                                              config);
     f->x = akvf::run_parameterization(f->setup, config).result.x;
     slot = std::move(f);
   }
   return slot.get();
 }
 
-#define REQUIRE_FIXTURE(state, mesh)                            \
-  Fixture* f = fixture(mesh);                                   \
+#define REQUIRE_FIXTURE(state, mesh, ...)                       \
+  Fixture* f = fixture(mesh, ##__VA_ARGS__);                    \
   if (!f) {                                                     \
     state.SkipWithError("meshes not found: set AKVF_DATA_DIR"); \
     return;                                                     \
@@ -153,6 +159,49 @@ void BM_WholeIteration(benchmark::State& state, const std::string& mesh) {
   }
 }
 
+// The multigrid path (solvers/algebraic_multigrid.h) on K(x) + eps I:
+// building the hierarchy, one V-cycle, and AKVF's solve (CG preconditioned by
+// V-cycles to 1e-2 relative, rigid motions projected) with a built hierarchy.
+void BM_MultigridSetup(benchmark::State& state, const std::string& mesh, int subdivide) {
+  REQUIRE_FIXTURE(state, mesh, subdivide);
+  const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
+  akvf::AlgebraicMultigrid multigrid;
+  for (auto _ : state) multigrid.setup(K.upper(), 2);
+  state.counters["unknowns"] = static_cast<double>(f->x.size());
+}
+
+void BM_MultigridCycle(benchmark::State& state, const std::string& mesh, int subdivide) {
+  REQUIRE_FIXTURE(state, mesh, subdivide);
+  const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
+  akvf::AlgebraicMultigrid multigrid;
+  multigrid.setup(K.upper(), 2);
+  Eigen::VectorXd g, z;
+  f->setup.objective->value_and_gradient(f->x, &g);
+  for (auto _ : state) {
+    multigrid.apply(g, &z);
+    benchmark::DoNotOptimize(z.data());
+  }
+}
+
+void BM_MultigridSolve(benchmark::State& state, const std::string& mesh, int subdivide) {
+  REQUIRE_FIXTURE(state, mesh, subdivide);
+  akvf::AkvfOptions2D options;
+  options.factor.linear_solver = akvf::LinearSolver::kAmg;
+  akvf::AkvfPreconditioner2D preconditioner(*f->setup.objective, options);
+  Eigen::VectorXd g, d;
+  const double energy = f->setup.objective->value_and_gradient(f->x, &g);
+  preconditioner.update({f->x, g, energy, 1});
+  preconditioner.apply(g, &d);  // builds the hierarchy; later solves reuse it on the same matrix
+  const int setup_iterations = preconditioner.statistics().cg_iterations;
+  for (auto _ : state) {
+    preconditioner.apply(g, &d);
+    benchmark::DoNotOptimize(d.data());
+  }
+  const akvf::PreconditionerStatistics s = preconditioner.statistics();
+  state.counters["cg_iterations"] = static_cast<double>(s.cg_iterations - setup_iterations) / state.iterations();
+  state.counters["setups"] = s.multigrid_setups;
+}
+
 // The symmetric Dirichlet density written once as a template, for automatic
 // differentiation (energies/autodiff_density.h).
 struct TemplateSymmetricDirichlet {
@@ -206,6 +255,16 @@ void register_all() {
                                  false)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("DensityDerivatives/autodiff/" + mesh).c_str(), BM_DensityDerivatives, mesh, true)
+        ->Unit(benchmark::kMillisecond);
+  }
+  if (!akvf::AlgebraicMultigrid::available()) return;
+  for (const int subdivide : {0, 2, 3}) {
+    const std::string name = "horse_b.obj/x" + std::to_string(1 << (2 * subdivide));
+    benchmark::RegisterBenchmark(("MultigridSetup/" + name).c_str(), BM_MultigridSetup, "horse_b.obj", subdivide)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("MultigridCycle/" + name).c_str(), BM_MultigridCycle, "horse_b.obj", subdivide)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("MultigridSolve/" + name).c_str(), BM_MultigridSolve, "horse_b.obj", subdivide)
         ->Unit(benchmark::kMillisecond);
   }
 }

@@ -25,6 +25,7 @@ struct PreconditionerStatistics {
   int reused_solves = 0;      // directions from CG with an older factorization
   int cg_iterations = 0;      // over both kinds of CG solve
   int symbolic_analyses = 0;  // sparsity patterns analyzed (not taken from an earlier solve)
+  int multigrid_setups = 0;   // algebraic multigrid hierarchies built (--linear-solver amg)
 };
 
 class Preconditioner {

@@ -54,8 +54,9 @@ class Result:
     ``message``; ``iterations``; ``energy`` and ``grad_norm`` at the end;
     ``trace`` (a dict of NumPy arrays with the trace CSV's columns, row 0 =
     the start); ``statistics`` (the preconditioner's work: factorizations,
-    reused_solves, cg_solves, cg_iterations, symbolic_analyses, and seconds per
-    phase); ``preconditioner_report``; ``warnings``.
+    reused_solves, cg_solves, cg_iterations, symbolic_analyses,
+    multigrid_setups, and seconds per phase); ``preconditioner_report``;
+    ``warnings``.
     """
 
     def __init__(self, fields):
