@@ -62,9 +62,12 @@ void require_method(const std::string& name);
 
 // --linear-solver: "cholmod" (sparse Cholesky), "amg" (CG with algebraic
 // multigrid, solvers/algebraic_multigrid.h) or "auto": amg from
-// kAmgMinimumUnknowns unknowns on (measured: docs/performance.md, "Linear
-// solvers"), when this build has it. OptionsError for any other name.
-inline constexpr long kAmgMinimumUnknowns = 2000000;
+// kAmgMinimumUnknowns unknowns on, when this build has it. OptionsError for
+// any other name. The switch is above the largest mesh where the two were
+// measured even (horse_b x64, 2.55 M unknowns: docs/performance.md, "Linear
+// solvers"): CHOLMOD wins below it, and its fill grows faster than the
+// multigrid's linear cost above it.
+inline constexpr long kAmgMinimumUnknowns = 4194304;  // 2^22
 void require_linear_solver(const std::string& name);
 LinearSolver linear_solver_for(const std::string& name, long unknowns);
 

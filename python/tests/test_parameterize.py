@@ -228,3 +228,21 @@ def test_newton_reuse_takes_auto_or_a_number(disk):
     assert np.array_equal(akvf.parameterize(V, F, precond="newton", newton_reuse="0.5").uv, reused.uv)
     with pytest.raises(akvf.OptionsError, match="auto or a number in"):
         akvf.parameterize(V, F, newton_reuse=2.0)
+
+
+def test_linear_solver_amg_reaches_the_cholesky_energy(disk):
+    V, F = disk
+    cholmod = akvf.parameterize(V, F, linear_solver="cholmod", grad_tol=1e-6)
+    assert cholmod.statistics["multigrid_setups"] == 0
+    with pytest.raises(akvf.OptionsError, match="unknown linear solver 'lu'"):
+        akvf.parameterize(V, F, linear_solver="lu")
+    try:
+        amg = akvf.parameterize(V, F, linear_solver="amg", grad_tol=1e-6)
+    except akvf.OptionsError as error:  # a build without hypre says what to install
+        assert "install libhypre-dev" in str(error)
+        return
+    assert amg.status == "converged"
+    assert amg.statistics["multigrid_setups"] >= 1
+    assert amg.statistics["factorizations"] == 0
+    assert amg.energy == pytest.approx(cholmod.energy, rel=1e-8)
+    assert (signed_areas(amg.uv, F) > 0).all()
