@@ -63,10 +63,10 @@ void require_method(const std::string& name);
 // --linear-solver: "cholmod" (sparse Cholesky), "amg" (CG with algebraic
 // multigrid, solvers/algebraic_multigrid.h) or "auto": amg from
 // kAmgMinimumUnknowns unknowns on, when this build has it. OptionsError for
-// any other name. The switch is above the largest mesh where the two were
-// measured even (horse_b x64, 2.55 M unknowns: docs/performance.md, "Linear
-// solvers"): CHOLMOD wins below it, and its fill grows faster than the
-// multigrid's linear cost above it.
+// any other name. CHOLMOD was still the faster at the largest mesh measured
+// (horse_b x64, 2.55 M unknowns: docs/performance.md, "Linear solvers"), so
+// the switch sits above it, where CHOLMOD's fill (5.2 GB peak at 2.5 M faces,
+// growing faster than linearly) nears this machine's memory.
 inline constexpr long kAmgMinimumUnknowns = 4194304;  // 2^22
 void require_linear_solver(const std::string& name);
 LinearSolver linear_solver_for(const std::string& name, long unknowns);

@@ -202,6 +202,7 @@ typename FactoredPreconditioner<D>::CgOutcome FactoredPreconditioner<D>::project
   precondition(r, &z);
   p = z;
   double rz = r.dot(z);
+  if (!(rz > 0)) return outcome;  // d = 0: no direction from a preconditioner that is not positive definite here
   for (int k = 1; k <= max_iterations; ++k) {
     ++statistics_.cg_iterations;
     outcome.iterations = k;
