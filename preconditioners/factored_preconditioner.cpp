@@ -34,7 +34,7 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
   if (options_.cg_max_iterations < 1) throw OptionsError("CG needs at least one iteration");
   if (options_.reuse_max_cg < 1) throw OptionsError("factorization reuse needs at least one CG iteration");
   if (options_.linear_solver == LinearSolver::kAmg) {
-    if (!AlgebraicMultigrid::available()) AlgebraicMultigrid().setup({}, 1);  // throws what to install
+    AlgebraicMultigrid::require_available();
     if (!(options_.amg_tolerance > 0 && options_.amg_tolerance < 1))
       throw OptionsError("the multigrid solve's tolerance must be in (0, 1)");
     if (options_.amg_max_cg < 1 || options_.amg_setup_cycles < 0)

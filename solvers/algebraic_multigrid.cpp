@@ -84,6 +84,7 @@ AlgebraicMultigrid::~AlgebraicMultigrid() {
 }
 
 bool AlgebraicMultigrid::available() { return true; }
+void AlgebraicMultigrid::require_available() {}
 bool AlgebraicMultigrid::ready() const { return impl_->solver != nullptr; }
 
 namespace {
@@ -173,7 +174,7 @@ void AlgebraicMultigrid::setup(const Eigen::SparseMatrix<double>& upper, int blo
   // forward going down, backward going up) makes the cycle symmetric. Measured
   // on K of horse_b x16 (641 K unknowns, docs/performance.md): without the
   // aggressive level the setup took 2.9 s and a cycle 293 ms (with symmetric
-  // hybrid Gauss-Seidel on both legs); with these settings 1.7 s and 48 ms.
+  // hybrid Gauss-Seidel on both legs); with these settings 1.25 s and 50 ms.
   // The rigid motions as interpolation vectors (nodal coarsening, GM
   // variant 2) doubled the setup on horse_b without fewer CG iterations.
   HYPRE_BoomerAMGSetCoarsenType(s, 10);
@@ -214,15 +215,14 @@ struct AlgebraicMultigrid::Impl {};
 AlgebraicMultigrid::AlgebraicMultigrid() = default;
 AlgebraicMultigrid::~AlgebraicMultigrid() = default;
 bool AlgebraicMultigrid::available() { return false; }
-bool AlgebraicMultigrid::ready() const { return false; }
-void AlgebraicMultigrid::setup(const Eigen::SparseMatrix<double>&, int) {
+void AlgebraicMultigrid::require_available() {
   throw OptionsError(
       "--linear-solver amg: this build of akvf has no algebraic multigrid (hypre was not found at configure "
       "time; install libhypre-dev, e.g. by scripts/setup.sh, and reconfigure)");
 }
-void AlgebraicMultigrid::apply(const Eigen::VectorXd&, Eigen::VectorXd*) const {
-  throw OptionsError("algebraic multigrid: not available in this build");
-}
+bool AlgebraicMultigrid::ready() const { return false; }
+void AlgebraicMultigrid::setup(const Eigen::SparseMatrix<double>&, int) { require_available(); }
+void AlgebraicMultigrid::apply(const Eigen::VectorXd&, Eigen::VectorXd*) const { require_available(); }
 
 #endif
 

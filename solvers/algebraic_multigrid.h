@@ -10,7 +10,8 @@
 // hypre is an MPI library: the first setup() initializes MPI (as a
 // singleton, one process, no mpirun) unless the program already did, and
 // finalizes it at exit. Built without hypre (not found at configure time, or AKVF_WITH_HYPRE=OFF),
-// available() is false and setup() throws OptionsError naming what to install.
+// available() is false and require_available() and setup() throw
+// OptionsError naming what to install.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
@@ -26,6 +27,8 @@ class AlgebraicMultigrid {
 
   // True if this build links hypre.
   static bool available();
+  // OptionsError saying what to install unless available().
+  static void require_available();
 
   // Builds the hierarchy of the SPD matrix whose upper triangle (column major)
   // is `upper`. The unknowns come in groups of block_size consecutive ones

@@ -11,21 +11,20 @@
 #include "akvf/parameterize.h"
 #include "framework/optimization/distortion_objective.h"
 #include "preconditioners/akvf_preconditioner_2d.h"
-#include "preconditioners/killing_operator_2d.h"
 #include "preconditioners/motion_bases.h"
 #include "solvers/algebraic_multigrid.h"
 #include "tests/test_support.h"
 
 namespace {
 
-// K(x) + 1e-8 mean(diag K) I of a curved grid at its Tutte map (Eq. (5)),
-// as AKVF factors it: upper triangle, 2 unknowns per vertex.
+// K(x) + eps I of a curved grid at its Tutte map (Eq. (5)), as the AKVF
+// preconditioner assembles it: upper triangle, 2 unknowns per vertex.
 Eigen::SparseMatrix<double> killing_operator(const akvf::ParamSetup& setup) {
-  const akvf::DistortionObjective2D& objective = *setup.objective;
-  akvf::ElementMatrix2D K(objective.elements(), objective.num_vertices());
-  akvf::assemble_killing_operator_2d(objective.elements(), setup.x0, objective.rest().area, true, &K);
-  K.add_to_diagonal(1e-8 * K.mean_diagonal());
-  return K.upper();
+  akvf::AkvfPreconditioner2D akvf(*setup.objective);
+  Eigen::VectorXd g;
+  const double energy = setup.objective->value_and_gradient(setup.x0, &g);
+  akvf.update({setup.x0, g, energy, 0});
+  return akvf.matrix().upper();
 }
 
 Eigen::VectorXd random_vector(Eigen::Index n, unsigned seed) {
