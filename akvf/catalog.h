@@ -12,6 +12,7 @@
 #include "framework/optimization/registry.h"
 #include "preconditioners/akvf_preconditioner_2d.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
+#include "preconditioners/switching_preconditioner.h"
 
 namespace akvf {
 
@@ -30,6 +31,9 @@ struct PreconditionerSettings2D {
   FactorOptions newton_phase = AkvfOptions2D{}.factor;
   FactorOptions laplacian;  // constant: factored once
   FactorOptions slim;       // factored every iteration unless reuse is set
+  // When akvf-newton switches; its isometric step is the energy's (set by
+  // the catalog), its backtracking factor the line search's.
+  SwitchRule akvf_newton_switch;
 
   // Every factored preconditioner takes its symbolic analyses from `cache`.
   void share_analyses(const std::shared_ptr<SymbolicAnalysisCache>& cache) {
@@ -88,6 +92,7 @@ struct PreconditionerSettings3D {
   FactorOptions newton = shifted_factor_options(1e-4);
   FactorOptions laplacian = shifted_factor_options(1e-4);
   FactorOptions slim = shifted_factor_options(1e-4);
+  SwitchRule akvf_newton_switch;  // as in 2D
 
   // Jacobi-CG to this relative residual instead of factoring, for every
   // matrix that changes per iteration (akvf, newton, slim; the Laplacian is

@@ -19,6 +19,7 @@ namespace {
 PreconditionerSettings3D preconditioner_settings(const DeformConfig& config, long unknowns) {
   PreconditionerSettings3D settings = config.preconditioner_settings;
   settings.set_linear_solver(linear_solver_for(config.linear_solver, unknowns));
+  settings.akvf_newton_switch.backtracking_factor = config.line_search_settings.rho;
   if (config.akvf_as_written && !config.hard_constraints) {
     settings.akvf.include_problem_hessian = false;
     settings.akvf.secant_scaling = false;

@@ -13,11 +13,26 @@ namespace akvf {
 
 // vec(S)^T [d^2 D / dvec(J)^2 at J = I] vec(S), S = e1 e2^T + e2 e1^T
 // (|S|^2 = 2, (1/2)|S + S^T|^2 = 4). Positive for every energy here.
-inline double rest_shear_curvature(const DistortionDensity<3>& density) {
-  Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
+template <int D>
+double rest_shear_curvature(const DistortionDensity<D>& density) {
+  Eigen::Matrix<double, D, D> S = Eigen::Matrix<double, D, D>::Zero();
   S(0, 1) = S(1, 0) = 1;
-  const Eigen::Map<const Eigen::Matrix<double, 9, 1>> s(S.data());
-  return s.dot(density.hessian(Eigen::Matrix3d::Identity()) * s);
+  const Eigen::Map<const Eigen::Matrix<double, D * D, 1>> s(S.data());
+  return s.dot(density.hessian(Eigen::Matrix<double, D, D>::Identity()) * s);
+}
+
+// The step along AKVF's direction d = -K^+ grad E that Newton's method would
+// take at an isometry, 1 / c with c = (energy's curvature) / (K's curvature)
+// along a rest shear: the energy, normalized by the rest measure, curves by
+// rest_shear_curvature / measure; K by 4 per unit measure. For the energies
+// whose second variation at a rotation R is a multiple of |sym(R^T dJ)|^2
+// (symmetric Dirichlet: 2|A|^2 + 2 tr(A^2) = 4|sym A|^2; ARAP; their
+// exponentials, whose gradient vanishes there), the Hessian at an isometric
+// map *is* c K(x), so AKVF is Newton's method there up to this step
+// (symmetric Dirichlet on a unit-area mesh: c = 16 / 4, the step 1/4).
+template <int D>
+double isometric_newton_step(const DistortionDensity<D>& density, double rest_measure) {
+  return 4 * rest_measure / rest_shear_curvature(density);
 }
 
 }  // namespace akvf

@@ -1,5 +1,7 @@
 #include "preconditioners/switching_preconditioner.h"
 
+#include <cmath>
+
 namespace akvf {
 
 SwitchingPreconditioner::SwitchingPreconditioner(std::string name, std::unique_ptr<Preconditioner> first,
@@ -8,8 +10,9 @@ SwitchingPreconditioner::SwitchingPreconditioner(std::string name, std::unique_p
 
 void SwitchingPreconditioner::update(const OptimizationState& state) {
   if (!second_) {
-    const bool curvature_limited =
-        state.previous_step > 0 && state.previous_step < rule_.bound_share * state.previous_max_step;
+    const bool curvature_limited = state.previous_step > 0 &&
+                                   state.previous_step < rule_.bound_share * state.previous_max_step &&
+                                   state.previous_step < std::sqrt(rule_.backtracking_factor) * rule_.isometric_step;
     curvature_limited_steps_ = curvature_limited ? curvature_limited_steps_ + 1 : 0;
     if (curvature_limited_steps_ >= rule_.patience) {
       second_ = make_second_();

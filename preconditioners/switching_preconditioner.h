@@ -9,12 +9,28 @@
 // is set by the energy's curvature along a direction K scales poorly: the
 // line search shortens it several times per iteration and AKVF converges
 // linearly (docs/design.md, "The default method"). That regime is where a
-// Newton model converges quadratically. The switch is made when, in
-// `patience` consecutive iterations, the accepted step was below
-// `bound_share` times its flip-free bound, i.e. the line search had to
-// shorten the step while the barrier was at least 1 / bound_share times
-// farther. It is made once and never undone.
+// Newton model converges quadratically, unless AKVF is itself close to
+// Newton's method: at an isometry the Hessian of the isometric energies is a
+// multiple c K(x) of the Killing operator (energy_scale.h), and AKVF's
+// direction needs only the step 1/c. The switch is made when, in `patience`
+// consecutive iterations, the accepted step was
+//   - below `bound_share` times its flip-free bound: the line search had to
+//     shorten the step while the barrier was at least 1 / bound_share times
+//     farther (the curvature set it), and
+//   - below sqrt(rho) / c, rho the backtracking factor: the trial before it,
+//     t / rho, was rejected, and along a quadratic the sufficient-decrease
+//     test (small c1) rejects exactly the steps beyond twice the minimizing
+//     step t*; so t* < t / (2 rho) < 1 / (2 sqrt(rho) c), whereas with c K
+//     as the Hessian t* = 1/c. The energy then curves along d more than
+//     2 sqrt(rho) (1.41 for rho = 0.5) times what c K predicts: K no longer
+//     models the Hessian up to its isometric scale.
+// On a nearly isometric map (a developable strip) the second condition keeps
+// AKVF, whose steps there are 1/c and whose direction is the better model
+// of the flat bending modes than the per-element projected Hessian
+// (docs/design.md, "The default method"). The switch is made once and never
+// undone.
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -25,6 +41,9 @@ namespace akvf {
 struct SwitchRule {
   double bound_share = 0.5;  // a step below this share of alpha_max was set by curvature
   int patience = 2;          // consecutive such steps before switching
+  // 1/c of energy_scale.h (isometric_newton_step); infinity drops the test.
+  double isometric_step = std::numeric_limits<double>::infinity();
+  double backtracking_factor = 0.5;  // rho of the line search
 };
 
 class SwitchingPreconditioner final : public Preconditioner {

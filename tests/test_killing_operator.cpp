@@ -11,6 +11,7 @@
 #include "energies/symmetric_dirichlet.h"
 #include "framework/optimization/distortion_objective.h"
 #include "preconditioners/akvf_preconditioner_2d.h"
+#include "preconditioners/energy_scale.h"
 #include "preconditioners/killing_operator_2d.h"
 #include "preconditioners/laplacian_preconditioner.h"
 #include "preconditioners/newton_preconditioner.h"
@@ -244,4 +245,41 @@ TEST_CASE("SLIM refuses an energy without a singular-value derivative") {
                                               mesh.num_vertices());
   CHECK(akvf::test::error_message([&] { akvf::SlimPreconditioner2D slim(objective); }) ==
         "the slim preconditioner needs an energy with a singular-value derivative; 'plain' has none");
+}
+
+// The reason AKVF is kept on nearly isometric maps (switching_preconditioner.h,
+// energy_scale.h): at an isometry the Hessian of symmetric Dirichlet, ARAP
+// and exponential symmetric Dirichlet is c K(x), c = 1 / isometric_newton_step;
+// MIPS's is not (it is flat along conformal maps, not only rigid ones).
+TEST_CASE("at an isometric map the Hessian of the isometric energies is c K(x), c the isometric Newton scale") {
+  akvf::TriMesh mesh = akvf::test::grid_disk(6, 5, 0.2, 3);  // planar, jittered: every UV rotation is isometric
+  akvf::normalize_to_unit_area(&mesh);
+  const Eigen::Matrix2d rotation = Eigen::Rotation2Dd(0.7).toRotationMatrix();
+  const Eigen::VectorXd x = akvf::stack_uv(mesh.V.leftCols<2>() * rotation.transpose());
+  auto unshifted = [](const akvf::FactoredPreconditioner2D& p) {
+    Eigen::MatrixXd P(p.matrix().full());
+    P.diagonal().array() -= 1e-8 * P.diagonal().mean() / (1 + 1e-8);
+    return P;
+  };
+  for (const auto& density : std::vector<std::shared_ptr<akvf::DistortionDensity2D>>{
+           std::make_shared<akvf::SymmetricDirichlet2D>(), std::make_shared<akvf::Arap2D>(),
+           std::make_shared<akvf::ExpSymmetricDirichlet2D>(0.5), std::make_shared<akvf::Mips2D>()}) {
+    CAPTURE(density->name());
+    const akvf::DistortionObjective2D objective(mesh.F, akvf::rest_triangles(mesh), density, mesh.num_vertices());
+    Eigen::VectorXd g, d;
+    objective.value_and_gradient(x, &g);
+    akvf::NewtonPreconditioner2D newton(objective);
+    akvf::AkvfPreconditioner2D akvf_k(objective);
+    newton.update({x, g, 0.0, 1});
+    akvf_k.update({x, g, 0.0, 1});
+    const double c = 1 / akvf::isometric_newton_step(*density, objective.rest().total_area);
+    const Eigen::MatrixXd H = unshifted(newton), K = unshifted(akvf_k);
+    if (density->name() == "mips") {
+      CHECK((H - c * K).norm() > 0.1 * H.norm());
+    } else {
+      CHECK((H - c * K).norm() <= 1e-8 * H.norm());
+    }
+  }
+  CHECK(akvf::isometric_newton_step(akvf::SymmetricDirichlet2D(), 1.0) == doctest::Approx(0.25).epsilon(1e-12));
+  CHECK(akvf::isometric_newton_step(akvf::Arap2D(), 1.0) == doctest::Approx(1.0).epsilon(1e-12));
 }

@@ -13,6 +13,8 @@
 #include "framework/mesh/rest_geometry.h"
 #include "framework/process/error.h"
 #include "framework/process/interrupt.h"
+#include "preconditioners/identity_preconditioner.h"
+#include "preconditioners/switching_preconditioner.h"
 #include "solvers/backtracking_line_search.h"
 #include "tests/test_support.h"
 
@@ -376,4 +378,33 @@ TEST_CASE("the assembled gradient of E matches finite differences of E for every
       CHECK(g[i] == doctest::Approx(fd).epsilon(1e-5).scale(std::max(1.0, g.norm())));
     }
   }
+}
+
+// switching_preconditioner.h: the switch needs `patience` consecutive steps
+// that are both curvature-limited (below half the flip-free bound) and
+// shorter than sqrt(rho) times AKVF's isometric Newton step.
+TEST_CASE("akvf-newton switches after two steps set by curvature and shorter than the isometric step allows") {
+  akvf::SwitchRule rule;
+  rule.isometric_step = 0.25;  // symmetric Dirichlet on a unit-area mesh
+  rule.backtracking_factor = 0.5;
+  auto switch_after = [&](const std::vector<std::pair<double, double>>& steps) {
+    akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(),
+                                    [] { return std::make_unique<akvf::IdentityPreconditioner>(); }, rule);
+    const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
+    p.update({x, g, 1.0, 1});
+    int k = 2;
+    for (const auto& [step, max_step] : steps) p.update({x, g, 1.0, k++, step, max_step});
+    return p.switch_iteration();
+  };
+  // Newton-like AKVF steps 1/c on a nearly isometric map: never.
+  CHECK(switch_after({{0.25, 100}, {0.25, 100}, {0.25, 100}, {0.25, 100}}) == 0);
+  // Shortened below the isometric step twice in a row: at the next iteration.
+  CHECK(switch_after({{0.25, 100}, {0.125, 100}, {0.0625, 100}, {0.25, 100}}) == 4);
+  // Not consecutive: never.
+  CHECK(switch_after({{0.125, 100}, {0.25, 100}, {0.125, 100}, {0.5, 100}}) == 0);
+  // Short, but the flip-free bound set them (0.125 >= half of 0.2): never.
+  CHECK(switch_after({{0.125, 0.2}, {0.125, 0.2}, {0.125, 0.2}}) == 0);
+  // Without the isometric test (infinity), two curvature-limited steps switch.
+  rule.isometric_step = std::numeric_limits<double>::infinity();
+  CHECK(switch_after({{0.25, 100}, {0.25, 100}}) == 3);
 }
