@@ -25,16 +25,22 @@ namespace {
 const FactorOptions& newton_phase_options(const PreconditionerSettings2D& settings) { return settings.newton_phase; }
 const FactorOptions& newton_phase_options(const PreconditionerSettings3D& settings) { return settings.newton; }
 
-// AKVF's step at which it is Newton's method (energy_scale.h), for the
-// switch rule. In 2D K is unscaled: 1/c. In 3D AKVF scales K by s_k, the
-// energy's curvature along its last step (akvf_preconditioner_3d.h, s_1 = c),
-// so that step is 1: a step below sqrt(rho) there says the energy curves
-// along the new direction 2 sqrt(rho) times more than s_k K predicts.
-double akvf_isometric_step(const MeshObjective2D& objective, const PreconditionerSettings2D&) {
-  return isometric_newton_step(objective.density(), objective.rest().total_area);
+// The switch rule's view of AKVF (energy_scale.h, switching_preconditioner.h).
+// In 2D K is unscaled: its Newton step at an isometry is 1/c. In 3D AKVF
+// scales K by s_k, the energy's curvature along its last step
+// (akvf_preconditioner_3d.h, s_1 = c): that step is 1, and the scale is
+// measured.
+SwitchRule akvf_switch_rule(const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
+  SwitchRule rule = settings.akvf_newton_switch;
+  rule.isometric_step = isometric_newton_step(objective.density(), objective.rest().total_area);
+  return rule;
 }
-double akvf_isometric_step(const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
-  return settings.akvf.secant_scaling ? 1.0 : isometric_newton_step(objective.density(), objective.rest().total_volume);
+SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
+  SwitchRule rule = settings.akvf_newton_switch;
+  rule.measured_scale = settings.akvf.secant_scaling;
+  rule.isometric_step =
+      rule.measured_scale ? 1.0 : isometric_newton_step(objective.density(), objective.rest().total_volume);
+  return rule;
 }
 
 // AKVF, then projected Newton on the same matrix pattern: both take their
@@ -44,11 +50,10 @@ std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objecti
   Settings shared = settings;
   if (!shared.akvf.factor.analysis_cache) shared.share_analyses(std::make_shared<SymbolicAnalysisCache>());
   const FactorOptions newton = newton_phase_options(shared);
-  SwitchRule rule = settings.akvf_newton_switch;
-  rule.isometric_step = akvf_isometric_step(objective, settings);
   return std::make_unique<SwitchingPreconditioner>(
       "akvf-newton", std::make_unique<Akvf>(objective, shared.akvf),
-      [&objective, newton] { return std::make_unique<NewtonPreconditioner<D>>(objective, newton); }, rule);
+      [&objective, newton] { return std::make_unique<NewtonPreconditioner<D>>(objective, newton); },
+      akvf_switch_rule(objective, settings));
 }
 
 }  // namespace

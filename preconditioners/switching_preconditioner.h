@@ -11,24 +11,26 @@
 // linearly (docs/design.md, "The default method"). That regime is where a
 // Newton model converges quadratically, unless AKVF is itself close to
 // Newton's method: at an isometry the Hessian of the isometric energies is a
-// multiple c K(x) of the Killing operator (energy_scale.h), and AKVF's
-// direction needs only the step 1/c. The switch is made when, in `patience`
-// consecutive iterations, the accepted step was
-//   - below `bound_share` times its flip-free bound: the line search had to
-//     shorten the step while the barrier was at least 1 / bound_share times
-//     farther (the curvature set it), and
-//   - below sqrt(rho) / c, rho the backtracking factor: the trial before it,
-//     t / rho, was rejected, and along a quadratic the sufficient-decrease
-//     test (small c1) rejects exactly the steps beyond twice the minimizing
-//     step t*; so t* < t / (2 rho) < 1 / (2 sqrt(rho) c), whereas with c K
-//     as the Hessian t* = 1/c. The energy then curves along d more than
-//     2 sqrt(rho) (1.41 for rho = 0.5) times what c K predicts: K no longer
-//     models the Hessian up to its isometric scale.
-// On a nearly isometric map (a developable strip) the second condition keeps
-// AKVF, whose steps there are 1/c and whose direction is the better model
-// of the flat bending modes than the per-element projected Hessian
-// (docs/design.md, "The default method"). The switch is made once and never
-// undone.
+// multiple c K(x) of the Killing operator (energy_scale.h), so AKVF's
+// direction with the step 1/c is Newton's. The switch is made when, in
+// `patience` consecutive iterations, the accepted step t was below
+// `bound_share` times its flip-free bound (the line search had to shorten
+// the step while the barrier was at least 1 / bound_share times farther: the
+// curvature set it) and did not show AKVF to be Newton-like. It shows that
+// when the line search rejected a longer trial, t / rho, and t >= sqrt(rho)/c
+// (rho the backtracking factor). Along a quadratic the sufficient-decrease
+// test (small c1) accepts exactly the steps below twice the minimizing step
+// t*, so then t / 2 < t* < t / (2 rho): t* lies within a factor 1 / rho of
+// t, and above sqrt(rho) / (2 c), i.e. the energy curves along d less than
+// 2 / sqrt(rho) (2.8 for rho = 0.5) times what c K predicts. A first trial
+// accepted at once says nothing about the curvature (the step may be far
+// too short) unless AKVF's scale is itself measured (`measured_scale`), and
+// a step shortened below sqrt(rho) / c says K misjudges it; both count
+// toward the switch.
+// On a nearly isometric map (hilbert_b, a developable strip) AKVF's steps
+// are 1/c and it keeps AKVF, whose K models the flat bending modes better
+// than the per-element projected Hessian (docs/design.md, "The default
+// method"). The switch is made once and never undone.
 #include <functional>
 #include <limits>
 #include <memory>
@@ -41,9 +43,14 @@ namespace akvf {
 struct SwitchRule {
   double bound_share = 0.5;  // a step below this share of alpha_max was set by curvature
   int patience = 2;          // consecutive such steps before switching
-  // 1/c of energy_scale.h (isometric_newton_step); infinity drops the test.
+  // 1/c of energy_scale.h (isometric_newton_step); infinity: no step is
+  // Newton-like, every curvature-set step counts.
   double isometric_step = std::numeric_limits<double>::infinity();
   double backtracking_factor = 0.5;  // rho of the line search
+  // AKVF scales K by the curvature measured along its last step (3D, the
+  // secant scale s_k): a first trial accepted at once then also shows the
+  // model's curvature right, so the backtracking is not required.
+  bool measured_scale = false;
 };
 
 class SwitchingPreconditioner final : public Preconditioner {

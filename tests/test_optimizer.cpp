@@ -381,30 +381,37 @@ TEST_CASE("the assembled gradient of E matches finite differences of E for every
 }
 
 // switching_preconditioner.h: the switch needs `patience` consecutive steps
-// that are both curvature-limited (below half the flip-free bound) and
-// shorter than sqrt(rho) times AKVF's isometric Newton step.
-TEST_CASE("akvf-newton switches after two steps set by curvature and shorter than the isometric step allows") {
+// set by curvature (below half the flip-free bound) that do not show AKVF to
+// be Newton-like (backtracked to a step of at least sqrt(rho) times AKVF's
+// isometric Newton step).
+TEST_CASE("akvf-newton switches after two curvature-set steps that do not show AKVF to be Newton-like") {
   akvf::SwitchRule rule;
   rule.isometric_step = 0.25;  // symmetric Dirichlet on a unit-area mesh
   rule.backtracking_factor = 0.5;
-  auto switch_after = [&](const std::vector<std::pair<double, double>>& steps) {
+  struct Step {
+    double step, max_step;
+    bool backtracked;
+  };
+  auto switch_after = [&](const std::vector<Step>& steps) {
     akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(),
                                     [] { return std::make_unique<akvf::IdentityPreconditioner>(); }, rule);
     const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
     p.update({x, g, 1.0, 1});
     int k = 2;
-    for (const auto& [step, max_step] : steps) p.update({x, g, 1.0, k++, step, max_step});
+    for (const Step& s : steps) p.update({x, g, 1.0, k++, s.step, s.max_step, s.backtracked});
     return p.switch_iteration();
   };
-  // Newton-like AKVF steps 1/c on a nearly isometric map: never.
-  CHECK(switch_after({{0.25, 100}, {0.25, 100}, {0.25, 100}, {0.25, 100}}) == 0);
-  // Shortened below the isometric step twice in a row: at the next iteration.
-  CHECK(switch_after({{0.25, 100}, {0.125, 100}, {0.0625, 100}, {0.25, 100}}) == 4);
+  // Backtracked to AKVF's isometric step 1/c on a nearly isometric map: never.
+  CHECK(switch_after({{0.25, 100, true}, {0.25, 100, true}, {0.5, 100, true}, {0.25, 100, true}}) == 0);
+  // Backtracked below sqrt(rho)/c twice in a row: at the next iteration.
+  CHECK(switch_after({{0.25, 100, true}, {0.125, 100, true}, {0.0625, 100, true}, {0.25, 100, true}}) == 4);
+  // The first trial accepted far inside the bound says nothing: it counts.
+  CHECK(switch_after({{0.25, 100, false}, {1.0, 2.5, false}}) == 3);
   // Not consecutive: never.
-  CHECK(switch_after({{0.125, 100}, {0.25, 100}, {0.125, 100}, {0.5, 100}}) == 0);
+  CHECK(switch_after({{0.125, 100, true}, {0.25, 100, true}, {0.125, 100, true}, {0.5, 100, true}}) == 0);
   // Short, but the flip-free bound set them (0.125 >= half of 0.2): never.
-  CHECK(switch_after({{0.125, 0.2}, {0.125, 0.2}, {0.125, 0.2}}) == 0);
-  // Without the isometric test (infinity), two curvature-limited steps switch.
+  CHECK(switch_after({{0.125, 0.2, true}, {0.125, 0.2, true}, {0.125, 0.2, true}}) == 0);
+  // Without an isometric step (infinity) every curvature-set step counts.
   rule.isometric_step = std::numeric_limits<double>::infinity();
-  CHECK(switch_after({{0.25, 100}, {0.25, 100}}) == 3);
+  CHECK(switch_after({{0.25, 100, true}, {0.25, 100, true}}) == 3);
 }

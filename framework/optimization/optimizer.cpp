@@ -126,6 +126,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
   if (notify(row)) return finish(TerminationStatus::kUserStopped, "stopped by a callback");
 
   int stalled_iterations = 0;
+  bool backtracked = false;  // the last line search accepted less than its first trial
   Eigen::VectorXd previous = x;
   Extrapolation extrapolation;
   for (int k = 1;; ++k) {
@@ -145,7 +146,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     const double start_energy = accelerated ? extrapolation.energy : energy;
 
     const auto precond_start = Clock::now();
-    preconditioner.update({start_x, start_gradient, start_energy, k, row.step, row.max_step});
+    preconditioner.update({start_x, start_gradient, start_energy, k, row.step, row.max_step, backtracked});
     preconditioner.apply(start_gradient, &preconditioned);
     const double precond_seconds = std::chrono::duration<double>(Clock::now() - precond_start).count();
 
@@ -158,6 +159,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     if (!search.success)
       return finish(TerminationStatus::kLineSearchFailed,
                     "line search failed at iteration " + std::to_string(k) + ": " + search.message);
+    backtracked = search.step < search.initial_step;
     Eigen::VectorXd next = start_x + search.step * direction;
     previous.swap(x);
     x.swap(next);

@@ -15,6 +15,8 @@ struct OptimizationState {
   // (0 before the first step).
   double previous_step = 0;
   double previous_max_step = 0;
+  // Whether that step's line search rejected a longer trial first.
+  bool previous_backtracked = false;
 };
 
 // The work a preconditioner did, as numbers (all zero for those that do no
