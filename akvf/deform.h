@@ -24,7 +24,7 @@ namespace akvf {
 struct DeformOptions {
   std::string energy = "symmetric-dirichlet";  // a name of energies_3d()
   double exponent = 1;                         // k of the exponential energies; > 0
-  std::string preconditioner = "akvf";         // a name of preconditioners_3d()
+  std::string preconditioner = "akvf-newton";  // a name of preconditioners_3d()
   std::string line_search = "backtracking";
   std::string acceleration = "auto";
   double weight = 1e5;           // w of the soft constraints (unit rest volume); > 0

@@ -20,7 +20,7 @@ namespace akvf {
 struct DeformConfig {
   std::string energy = "symmetric-dirichlet";
   EnergySettings energy_settings;
-  std::string preconditioner = "akvf";
+  std::string preconditioner = "akvf-newton";        // the default method (docs/design.md)
   PreconditionerSettings3D preconditioner_settings;  // c of K + c I, CG instead of the factorization, ...
   std::string line_search = "backtracking";
   std::string acceleration = "auto";  // AQP momentum: see acceleration_eta() in catalog.h

@@ -17,8 +17,8 @@ namespace akvf {
 struct ParamConfig {
   std::string energy = "symmetric-dirichlet";
   EnergySettings energy_settings;
-  std::string solver = "descent";  // kDescentSolver or kLbfgsMethod (catalog.h)
-  std::string preconditioner = "akvf";
+  std::string solver = "descent";              // kDescentSolver or kLbfgsMethod (catalog.h)
+  std::string preconditioner = "akvf-newton";  // the default method (docs/design.md)
   std::string line_search = "backtracking";
   LineSearchSettings line_search_settings;
   PreconditionerSettings2D preconditioner_settings;

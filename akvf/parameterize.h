@@ -29,7 +29,7 @@ struct ParameterizeOptions {
   std::string energy = "symmetric-dirichlet";  // a name of energies_2d(), built in or registered
   double exponent = 1;                         // k of exp-symmetric-dirichlet and amips; > 0
   std::string solver = "descent";              // "descent" (Algorithm 1 with `preconditioner`) or "lbfgs"
-  std::string preconditioner = "akvf";         // a name of preconditioners_2d(); "lbfgs" = solver lbfgs
+  std::string preconditioner = "akvf-newton";  // a name of preconditioners_2d(); "lbfgs" = solver lbfgs
   std::string line_search = "backtracking";    // or "wolfe-bisection"
   std::string acceleration = "auto";           // AQP momentum: auto (laplacian only), on, off
   double akvf_reuse = 0.03;                    // AKVF: reuse the last factor through CG to this residual; 0 = never

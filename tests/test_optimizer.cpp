@@ -393,8 +393,9 @@ TEST_CASE("akvf-newton switches after two curvature-set steps that do not show A
     bool backtracked;
   };
   auto switch_after = [&](const std::vector<Step>& steps) {
-    akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(),
-                                    [] { return std::make_unique<akvf::IdentityPreconditioner>(); }, rule);
+    akvf::SwitchingPreconditioner p(
+        "test", std::make_unique<akvf::IdentityPreconditioner>(),
+        [] { return std::make_unique<akvf::IdentityPreconditioner>(); }, rule);
     const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
     p.update({x, g, 1.0, 1});
     int k = 2;

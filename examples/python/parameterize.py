@@ -28,7 +28,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("mesh", nargs="?", help="a disk-topology OBJ or OFF mesh (default: a curved grid)")
     parser.add_argument("--out", help="write the mesh with its UVs (OBJ)")
-    parser.add_argument("--precond", default="akvf", help="see akvf.preconditioners()")
+    parser.add_argument("--precond", default="akvf-newton", help="see akvf.preconditioners() (default: the library's, akvf-newton)")
     args = parser.parse_args()
 
     V, F = akvf.read_mesh(args.mesh) if args.mesh else curved_grid()
