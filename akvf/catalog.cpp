@@ -50,9 +50,12 @@ std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objecti
   Settings shared = settings;
   if (!shared.akvf.factor.analysis_cache) shared.share_analyses(std::make_shared<SymbolicAnalysisCache>());
   const FactorOptions newton = newton_phase_options(shared);
+  const EigenvalueFilter filter = settings.newton_filter;
   return std::make_unique<SwitchingPreconditioner>(
       "akvf-newton", std::make_unique<Akvf>(objective, shared.akvf),
-      [&objective, newton] { return std::make_unique<NewtonPreconditioner<D>>(objective, newton); },
+      [&objective, newton, filter] {
+        return std::make_unique<NewtonPreconditioner<D>>(objective, newton, default_newton_projection(D), filter);
+      },
       akvf_switch_rule(objective, settings));
 }
 
@@ -103,7 +106,8 @@ PreconditionerRegistry3D& mutable_preconditioners_3d() {
           });
     r.add("newton", "projected Newton: tet Hessians clamped to PSD, plus the constraints' Hessian",
           [](const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
-            return std::make_unique<NewtonPreconditioner3D>(objective, settings.newton);
+            return std::make_unique<NewtonPreconditioner3D>(objective, settings.newton, default_newton_projection(3),
+                                                            settings.newton_filter);
           });
     r.add("akvf-newton",
           "AKVF while the flip-free bound sets the step, projected Newton once the curvature does "
@@ -141,7 +145,8 @@ PreconditionerRegistry2D& mutable_preconditioners_2d() {
           });
     r.add("newton", "projected Newton: element Hessians clamped to PSD, CHOLMOD",
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
-            return std::make_unique<NewtonPreconditioner2D>(objective, settings.newton);
+            return std::make_unique<NewtonPreconditioner2D>(objective, settings.newton, default_newton_projection(2),
+                                                            settings.newton_filter);
           });
     r.add("akvf-newton",
           "AKVF while the flip-free bound sets the step, projected Newton once the curvature does "

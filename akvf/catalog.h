@@ -12,6 +12,7 @@
 #include "framework/optimization/registry.h"
 #include "preconditioners/akvf_preconditioner_2d.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
+#include "preconditioners/newton_preconditioner.h"
 #include "preconditioners/switching_preconditioner.h"
 
 namespace akvf {
@@ -34,6 +35,7 @@ struct PreconditionerSettings2D {
   // When akvf-newton switches; its isometric step is the energy's (set by
   // the catalog), its backtracking factor the line search's.
   SwitchRule akvf_newton_switch;
+  EigenvalueFilter newton_filter = EigenvalueFilter::kClamp;  // newton and akvf-newton's phase
 
   // Every factored preconditioner takes its symbolic analyses from `cache`.
   void share_analyses(const std::shared_ptr<SymbolicAnalysisCache>& cache) {
@@ -93,6 +95,7 @@ struct PreconditionerSettings3D {
   FactorOptions laplacian = shifted_factor_options(1e-4);
   FactorOptions slim = shifted_factor_options(1e-4);
   SwitchRule akvf_newton_switch;  // as in 2D
+  EigenvalueFilter newton_filter = EigenvalueFilter::kClamp;
 
   // Jacobi-CG to this relative residual instead of factoring, for every
   // matrix that changes per iteration (akvf, newton, slim; the Laplacian is

@@ -131,6 +131,11 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
                                   "multigrid, for millions of faces), auto (amg from " +
                                       std::to_string(kAmgMinimumUnknowns) + " unknowns)",
                                   &O::linear_solver, [](const O& o) { require_linear_solver(o.linear_solver); }));
+  fields->push_back(text_field<O>("eigen_filter", "eigen-filter", "clamp|abs|adaptive",
+                                  "projected Newton (newton, akvf-newton): the element Hessians' negative "
+                                  "eigenvalues clamped to 0, mirrored (abs), or adaptive (Chen et al. 2024: clamp "
+                                  "while the last step's decrease matched the quadratic model to 1 %, else mirror)",
+                                  &O::eigen_filter, [](const O& o) { parse_eigenvalue_filter(o.eigen_filter); }));
   fields->push_back(integer_field<O>("threads", "threads", "N", "worker threads (0 = all cores)", &O::threads,
                                      ">= 0 (0 = all cores)", [](int n) { return n >= 0; }));
 }

@@ -25,6 +25,7 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.preconditioner_settings.newton_phase.reuse_tolerance =
       automatic ? o.akvf_reuse : c.preconditioner_settings.newton.reuse_tolerance;
   c.line_search_settings.rho = o.ls_rho;
+  c.preconditioner_settings.newton_filter = parse_eigenvalue_filter(o.eigen_filter);
   c.init_from_file = o.init == "file";
   if (!c.init_from_file) c.init = parse_tutte_weights(o.init);
   c.optimize_flaps = o.flaps;
@@ -52,6 +53,7 @@ DeformConfig deform_config(const DeformOptions& o) {
   c.weight = o.weight;
   c.hard_constraints = o.hard;
   c.preconditioner_settings.set_cg_tolerance(o.cg_tol);
+  c.preconditioner_settings.newton_filter = parse_eigenvalue_filter(o.eigen_filter);
   c.akvf_as_written = o.akvf_as_written;
   c.optimizer.gradient_tolerance = o.grad_tol;
   c.optimizer.max_iterations = o.max_iters;

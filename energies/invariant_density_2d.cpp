@@ -43,7 +43,7 @@ InvariantDensity2D::Hessian InvariantDensity2D::hessian(const Matrix& J) const {
   return 2 * d.f_s * Hessian::Identity() + d.f_g * det_hessian + G * second * G.transpose();
 }
 
-InvariantDensity2D::Hessian InvariantDensity2D::projected_hessian(const Matrix& J) const {
+InvariantDensity2D::Hessian InvariantDensity2D::filtered_hessian(const Matrix& J, bool absolute) const {
   // Signed SVD in closed form: J = R(phi) diag(s1, s2) R(theta), R(t) the
   // rotation by t, so U = R(phi) and V = R(-theta); s2 < 0 iff det J < 0.
   const double E = (J(0, 0) + J(1, 1)) / 2, F = (J(0, 0) - J(1, 1)) / 2;
@@ -69,6 +69,7 @@ InvariantDensity2D::Hessian InvariantDensity2D::projected_hessian(const Matrix& 
 
   Hessian P = Hessian::Zero();
   const auto add = [&](double lambda, const Eigen::Matrix2d& M) {
+    if (absolute) lambda = std::abs(lambda);
     if (!(lambda > 0)) return;
     const Eigen::Matrix2d mode = U * M * Vt;
     const Eigen::Vector4d v = vec(mode);

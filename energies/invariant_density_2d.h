@@ -28,7 +28,9 @@ class InvariantDensity2D : public DistortionDensity2D, public SingularValueDeriv
   //   A = 2 f_s I + f_g [0 1; 1 0] + B^T [f_ss f_sg; f_sg f_gg] B,
   //   B = [2 sigma_1, 2 sigma_2; sigma_2, sigma_1]
   // (the rows are ds and dg along diag(e)). No iterative eigensolver.
-  Hessian projected_hessian(const Matrix& J) const final;
+  Hessian projected_hessian(const Matrix& J) const final { return filtered_hessian(J, false); }
+  // The same eigensystem with |lambda| for every eigenvalue.
+  Hessian absolute_hessian(const Matrix& J) const final { return filtered_hessian(J, true); }
 
   // dD/dsigma_i = 2 f_s sigma_i + f_g sigma_j (j != i).
   Eigen::Vector2d singular_value_gradient(const Eigen::Vector2d& sigma) const final;
@@ -37,6 +39,11 @@ class InvariantDensity2D : public DistortionDensity2D, public SingularValueDeriv
   // f and its partials (g > 0). value() uses the same f, so the energy the
   // line search sees and the one reported with the gradient agree bitwise.
   virtual InvariantDerivatives2D derivatives(double s, double g) const = 0;
+
+ private:
+  // The closed-form eigensystem above, negative eigenvalues dropped
+  // (clamped) or mirrored (absolute).
+  Hessian filtered_hessian(const Matrix& J, bool absolute) const;
 };
 
 }  // namespace akvf

@@ -6,28 +6,62 @@
 // second-order solvers; shift, projection and factorization reuse as in
 // factored_preconditioner.h. In 3D deformation the constraint term's Hessian
 // comes in through FactorOptions::extra_diagonal.
+//
+// The element Hessians' negative eigenvalues are filtered by `filter`:
+// clamped to 0 (the default, TinyAD's projected Newton), mirrored to their
+// absolute values, or adaptively as in Chen et al. 2024 ("Trust-Region
+// Eigenvalue Filtering for Projected Newton"): clamped when the last step's
+// actual decrease matched the exact quadratic model's prediction,
+//   rho = (E(x_prev) - E(x)) / -(g_prev^T s + s^T H(x_prev) s / 2),
+//   s = x - x_prev, H the unfiltered Hessian,
+// to within |rho - 1| < adaptive_tolerance (theirs: 0.01), mirrored
+// otherwise (and at the first iteration, where there is no step yet).
+#include <string>
+
 #include "framework/optimization/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {
 
+enum class EigenvalueFilter { kClamp, kAbsolute, kAdaptive };
+// The motions projected out of the direction by default: rigid motions in 2D
+// (the energy's null space), none in 3D (the constraints fix the motion).
+constexpr MotionProjection default_newton_projection(int dimension) {
+  return dimension == 2 ? MotionProjection::kRigidMotions : MotionProjection::kNone;
+}
+// "clamp", "abs", "adaptive"; OptionsError naming the valid ones otherwise.
+EigenvalueFilter parse_eigenvalue_filter(const std::string& name);
+
 template <int D>
 class NewtonPreconditioner final : public FactoredPreconditioner<D> {
  public:
-  // projection: rigid motions by default in 2D (the energy's null space),
-  // none in 3D (the constraints fix the motion).
   explicit NewtonPreconditioner(const MeshObjective<D>& objective, FactorOptions options = {},
-                                MotionProjection projection = D == 2 ? MotionProjection::kRigidMotions
-                                                                     : MotionProjection::kNone);
+                                MotionProjection projection = default_newton_projection(D),
+                                EigenvalueFilter filter = EigenvalueFilter::kClamp);
   std::string name() const override { return "newton"; }
+  // The filter the last assembly used (kClamp or kAbsolute), and how many
+  // assemblies mirrored.
+  EigenvalueFilter last_filter() const { return last_filter_; }
+  int mirrored_assemblies() const { return mirrored_assemblies_; }
+
+  static constexpr double adaptive_tolerance = 0.01;
 
  private:
   using Matrix = typename FactoredPreconditioner<D>::Matrix;
   void assemble(const OptimizationState& state, Matrix* matrix) override;
   Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return motion_basis(D, projection_, x); }
+  // kAdaptive's choice at `state` (and remembers the state for the next).
+  EigenvalueFilter adaptive_choice(const OptimizationState& state);
+  // s^T H(x) s with the unfiltered Hessian, the constraints' term included.
+  double exact_curvature(const Eigen::VectorXd& x, const Eigen::VectorXd& s) const;
 
   const MeshObjective<D>& objective_;
   MotionProjection projection_;
+  EigenvalueFilter filter_;
+  EigenvalueFilter last_filter_ = EigenvalueFilter::kClamp;
+  int mirrored_assemblies_ = 0;
+  Eigen::VectorXd previous_x_, previous_gradient_;
+  double previous_energy_ = 0;
 };
 
 using NewtonPreconditioner2D = NewtonPreconditioner<2>;

@@ -283,3 +283,36 @@ TEST_CASE("at an isometric map the Hessian of the isometric energies is c K(x), 
   CHECK(akvf::isometric_newton_step(akvf::SymmetricDirichlet2D(), 1.0) == doctest::Approx(0.25).epsilon(1e-12));
   CHECK(akvf::isometric_newton_step(akvf::Arap2D(), 1.0) == doctest::Approx(1.0).epsilon(1e-12));
 }
+
+// Chen et al. 2024's adaptive filter (newton_preconditioner.h): mirror at the
+// first iteration and after a step the exact quadratic model mispredicted,
+// clamp after one it predicted to 1 %.
+TEST_CASE("the adaptive eigenvalue filter clamps only after a step the quadratic model predicted") {
+  akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
+  const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
+  const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.8);
+  akvf::NewtonPreconditioner2D newton(objective, {}, akvf::default_newton_projection(2),
+                                      akvf::EigenvalueFilter::kAdaptive);
+  auto visit = [&](const Eigen::VectorXd& at, int iteration) {
+    Eigen::VectorXd g;
+    const double energy = objective.value_and_gradient(at, &g);
+    newton.update({at, g, energy, iteration});
+    return g;
+  };
+  const Eigen::VectorXd g = visit(x, 1);
+  CHECK(newton.last_filter() == akvf::EigenvalueFilter::kAbsolute);  // no step yet
+  Eigen::VectorXd d;
+  newton.apply(g, &d);
+  const Eigen::VectorXd near = x - 1e-4 * d;
+  visit(near, 2);  // a short step: the quadratic model is exact to O(step^3)
+  CHECK(newton.last_filter() == akvf::EigenvalueFilter::kClamp);
+  // A gradient step 200 times longer, which the model mispredicts.
+  const Eigen::VectorXd far = near - 0.02 * d.norm() / g.norm() * g;
+  CHECK(objective.count_inverted(far) == 0);
+  visit(far, 3);
+  CHECK(newton.last_filter() == akvf::EigenvalueFilter::kAbsolute);
+  CHECK(newton.mirrored_assemblies() == 2);
+  CHECK(akvf::parse_eigenvalue_filter("adaptive") == akvf::EigenvalueFilter::kAdaptive);
+  CHECK(akvf::test::error_message([] { akvf::parse_eigenvalue_filter("mirror"); }) ==
+        "unknown eigenvalue filter 'mirror' (valid: clamp, abs, adaptive)");
+}

@@ -118,7 +118,7 @@ TEST_CASE("3D singular-value derivatives match finite differences in sigma") {
   }
 }
 
-TEST_CASE("the closed-form projected Hessian of every 2D energy is the eigenvalue-clamped Hessian") {
+TEST_CASE("the closed-form filtered Hessians of every 2D energy are the eigenvalue-clamped and -mirrored Hessians") {
   const akvf::SymmetricDirichlet2D sd;
   const akvf::Arap2D arap;
   const akvf::Mips2D mips;
@@ -142,7 +142,10 @@ TEST_CASE("the closed-form projected Hessian of every 2D energy is the eigenvalu
       const Eigen::Matrix4d clamped =
           eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
       CHECK((density->projected_hessian(J) - clamped).norm() <= 1e-10 * (1 + clamped.norm()));
+      const Eigen::Matrix4d mirrored =
+          eig.eigenvectors() * eig.eigenvalues().cwiseAbs().asDiagonal() * eig.eigenvectors().transpose();
+      CHECK((density->absolute_hessian(J) - mirrored).norm() <= 1e-10 * (1 + mirrored.norm()));
     }
   }
-  CHECK(indefinite > 100);  // the clamping was exercised
+  CHECK(indefinite > 100);  // the clamping and the mirroring were exercised
 }

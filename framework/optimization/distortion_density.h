@@ -34,6 +34,13 @@ class DistortionDensity {
     const Eigen::SelfAdjointEigenSolver<Hessian> eig(hessian(J));
     return eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
   }
+  // The Hessian with negative eigenvalues replaced by their absolute values
+  // (mirrored), the filter Chen et al. 2024 use where the quadratic model
+  // fits poorly.
+  virtual Hessian absolute_hessian(const Matrix& J) const {
+    const Eigen::SelfAdjointEigenSolver<Hessian> eig(hessian(J));
+    return eig.eigenvectors() * eig.eigenvalues().cwiseAbs().asDiagonal() * eig.eigenvectors().transpose();
+  }
 };
 
 using DistortionDensity2D = DistortionDensity<2>;
