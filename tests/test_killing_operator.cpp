@@ -266,7 +266,7 @@ TEST_CASE("at an isometric map the Hessian of the isometric energies is c K(x), 
            std::make_shared<akvf::ExpSymmetricDirichlet2D>(0.5), std::make_shared<akvf::Mips2D>()}) {
     CAPTURE(density->name());
     const akvf::DistortionObjective2D objective(mesh.F, akvf::rest_triangles(mesh), density, mesh.num_vertices());
-    Eigen::VectorXd g, d;
+    Eigen::VectorXd g;
     objective.value_and_gradient(x, &g);
     akvf::NewtonPreconditioner2D newton(objective);
     akvf::AkvfPreconditioner2D akvf_k(objective);
