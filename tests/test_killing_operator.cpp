@@ -306,9 +306,11 @@ TEST_CASE("the adaptive eigenvalue filter clamps only after a step the quadratic
   const Eigen::VectorXd near = x - 1e-4 * d;
   visit(near, 2);  // a short step: the quadratic model is exact to O(step^3)
   CHECK(newton.last_filter() == akvf::EigenvalueFilter::kClamp);
-  // A gradient step 200 times longer, which the model mispredicts.
-  const Eigen::VectorXd far = near - 0.02 * d.norm() / g.norm() * g;
+  // A gradient step to 0.9 of the flip-free bound: an element nearly
+  // collapses and the energy rises, which no quadratic model predicts.
+  const Eigen::VectorXd far = near - 0.9 * objective.max_feasible_step(near, -g) * g;
   CHECK(objective.count_inverted(far) == 0);
+  CHECK(objective.value(far) > objective.value(near));
   visit(far, 3);
   CHECK(newton.last_filter() == akvf::EigenvalueFilter::kAbsolute);
   CHECK(newton.mirrored_assemblies() == 2);
