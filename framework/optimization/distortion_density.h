@@ -2,6 +2,8 @@
 // The per-element distortion density D(J) of Eq. (1), as a function of the
 // element's Jacobian J (Dim x Dim). A density knows nothing of meshes; the
 // assembler (distortion_objective.h) sums A_hat_f D(J_f) over elements.
+#include <cmath>
+
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <string>
@@ -31,15 +33,21 @@ class DistortionDensity {
 
   // The Hessian with negative eigenvalues clamped to zero (projected Newton).
   virtual Hessian projected_hessian(const Matrix& J) const {
-    const Eigen::SelfAdjointEigenSolver<Hessian> eig(hessian(J));
-    return eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
+    return with_eigenvalues(hessian(J), [](double lambda) { return lambda > 0 ? lambda : 0.0; });
   }
   // The Hessian with negative eigenvalues replaced by their absolute values
   // (mirrored), the filter Chen et al. 2024 use where the quadratic model
   // fits poorly.
   virtual Hessian absolute_hessian(const Matrix& J) const {
-    const Eigen::SelfAdjointEigenSolver<Hessian> eig(hessian(J));
-    return eig.eigenvectors() * eig.eigenvalues().cwiseAbs().asDiagonal() * eig.eigenvectors().transpose();
+    return with_eigenvalues(hessian(J), [](double lambda) { return std::abs(lambda); });
+  }
+
+ protected:
+  // H's eigen-decomposition with every eigenvalue lambda replaced by f(lambda).
+  template <class F>
+  static Hessian with_eigenvalues(const Hessian& H, F f) {
+    const Eigen::SelfAdjointEigenSolver<Hessian> eig(H);
+    return eig.eigenvectors() * eig.eigenvalues().unaryExpr(f).asDiagonal() * eig.eigenvectors().transpose();
   }
 };
 
