@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "energies/singular_eigensystem_3d.h"
+
 namespace akvf {
 
 namespace {
@@ -55,6 +57,17 @@ Arap3D::Hessian Arap3D::hessian(const Matrix& J) const {
       H -= (4 / (polar.sigma[i] + polar.sigma[j])) * t * t.transpose();
     }
   return H;
+}
+
+Arap3D::Hessian Arap3D::filtered_hessian(const Matrix& J, bool absolute) const {
+  SingularEigensystem3D system(J);
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    system.twist[k] = 2 - 4 / (system.sigma[i] + system.sigma[j]);
+    system.flip[k] = 2;
+  }
+  system.scaling = 2 * Eigen::Matrix3d::Identity();
+  return system.filtered_hessian(absolute);
 }
 
 Eigen::Vector3d Arap3D::singular_value_gradient(const Eigen::Vector3d& sigma) const {

@@ -27,7 +27,14 @@ class Arap3D final : public DistortionDensity3D, public SingularValueDerivative<
   double value(const Matrix& J) const override;
   double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const override;
   Hessian hessian(const Matrix& J) const override;
+  // Closed form (singular_eigensystem_3d.h): Psi_i = 2 (sigma_i - 1), so the
+  // twists have 2 - 4 / (sigma_i + sigma_j), the flips and scalings 2.
+  Hessian projected_hessian(const Matrix& J) const override { return filtered_hessian(J, false); }
+  Hessian absolute_hessian(const Matrix& J) const override { return filtered_hessian(J, true); }
   Eigen::Vector3d singular_value_gradient(const Eigen::Vector3d& sigma) const override;
+
+ private:
+  Hessian filtered_hessian(const Matrix& J, bool absolute) const;
 };
 
 }  // namespace akvf

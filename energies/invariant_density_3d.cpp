@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "energies/singular_eigensystem_3d.h"
 #include "framework/process/error.h"
 
 namespace akvf {
@@ -93,6 +94,31 @@ InvariantDensity3D::Hessian InvariantDensity3D::hessian(const Matrix& J) const {
   second << d.f_ss, d.f_sc, d.f_sg, d.f_sc, d.f_cc, d.f_cg, d.f_sg, d.f_cg, d.f_gg;
   return G * second * G.transpose() + 2 * d.f_s * Matrix9::Identity() + d.f_c * cofactor_norm_hessian(J) +
          d.f_g * determinant_hessian(J);
+}
+
+InvariantDensity3D::Hessian InvariantDensity3D::filtered_hessian(const Matrix& J, bool absolute) const {
+  SingularEigensystem3D system(J);
+  const Eigen::Vector3d& sigma = system.sigma;
+  const Eigen::Vector3d squared = sigma.cwiseAbs2();
+  const InvariantDerivatives3D d = derivatives(J.squaredNorm(), cofactor_norm2(J), J.determinant());
+  Eigen::Matrix3d B, second_c, second_g;  // B's rows: ds, dc, dg along dsigma
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    system.twist[k] = 2 * d.f_s + 2 * d.f_c * (sigma[i] * sigma[j] + squared[k]) + d.f_g * sigma[k];
+    system.flip[k] = 2 * d.f_s + 2 * d.f_c * (squared[k] - sigma[i] * sigma[j]) - d.f_g * sigma[k];
+    B(0, k) = 2 * sigma[k];
+    B(1, k) = 2 * sigma[k] * (squared[i] + squared[j]);
+    B(2, k) = sigma[i] * sigma[j];
+    second_c(k, k) = 2 * (squared[i] + squared[j]);
+    second_c(i, j) = second_c(j, i) = 4 * sigma[i] * sigma[j];
+    second_g(k, k) = 0;
+    second_g(i, j) = second_g(j, i) = sigma[k];
+  }
+  Eigen::Matrix3d second;
+  second << d.f_ss, d.f_sc, d.f_sg, d.f_sc, d.f_cc, d.f_cg, d.f_sg, d.f_cg, d.f_gg;
+  system.scaling =
+      B.transpose() * second * B + 2 * d.f_s * Eigen::Matrix3d::Identity() + d.f_c * second_c + d.f_g * second_g;
+  return system.filtered_hessian(absolute);
 }
 
 Eigen::Vector3d InvariantDensity3D::singular_value_gradient(const Eigen::Vector3d& sigma) const {

@@ -22,11 +22,24 @@ class InvariantDensity3D : public DistortionDensity<3>, public SingularValueDeri
   double value(const Matrix& J) const final;
   double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const final;
   Hessian hessian(const Matrix& J) const final;
+  // The Hessian with negative eigenvalues clamped to 0 (absolute: mirrored),
+  // from the closed-form eigensystem of singular_eigensystem_3d.h. With
+  // Psi(sigma) = f(s, c, g) the pair (i, j), k the third index, has
+  //   twist  2 f_s + 2 f_c (sigma_i sigma_j + sigma_k^2) + f_g sigma_k,
+  //   flip   2 f_s + 2 f_c (sigma_k^2 - sigma_i sigma_j) - f_g sigma_k
+  // ((Psi_i +- Psi_j) / (sigma_i +- sigma_j) with the division done by hand),
+  // and d2 Psi / dsigma^2 = B^T f'' B + 2 f_s I + f_c d2c/dsigma^2 + f_g
+  // d2g/dsigma^2, B = d(s, c, g)/dsigma.
+  Hessian projected_hessian(const Matrix& J) const final { return filtered_hessian(J, false); }
+  Hessian absolute_hessian(const Matrix& J) const final { return filtered_hessian(J, true); }
   // dD/dsigma_i = 2 sigma_i (f_s + f_c (sigma_j^2 + sigma_k^2)) + f_g sigma_j sigma_k.
   Eigen::Vector3d singular_value_gradient(const Eigen::Vector3d& sigma) const final;
 
  protected:
   virtual InvariantDerivatives3D derivatives(double s, double c, double g) const = 0;
+
+ private:
+  Hessian filtered_hessian(const Matrix& J, bool absolute) const;
 };
 
 }  // namespace akvf

@@ -149,3 +149,40 @@ TEST_CASE("the closed-form filtered Hessians of every 2D energy are the eigenval
   }
   CHECK(indefinite > 100);  // the clamping and the mirroring were exercised
 }
+
+TEST_CASE("the closed-form filtered Hessians of every 3D energy are the eigenvalue-clamped and -mirrored Hessians") {
+  const akvf::SymmetricDirichlet3D sd;
+  const akvf::Arap3D arap;
+  const akvf::Mips3D mips;
+  const akvf::ExpSymmetricDirichlet3D exp_sd(0.5);
+  const akvf::Amips3D amips(2.0);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> angle(-3.14, 3.14), coordinate(-1, 1), stretch(0.3, 2.5);
+  const auto rotation = [&] {
+    const Eigen::Vector3d axis(coordinate(rng), coordinate(rng), coordinate(rng));
+    return Eigen::AngleAxisd(angle(rng), axis.normalized()).toRotationMatrix();
+  };
+  int indefinite = 0;
+  for (const akvf::DistortionDensity3D* density :
+       std::initializer_list<const akvf::DistortionDensity3D*>{&sd, &arap, &mips, &exp_sd, &amips}) {
+    CAPTURE(density->name());
+    for (int trial = 0; trial < 200; ++trial) {
+      // J = R diag(sigma) R', with two or three equal singular values now and then.
+      Eigen::Vector3d sigma(stretch(rng), stretch(rng), stretch(rng));
+      if (trial % 10 == 0) sigma[1] = sigma[0];
+      if (trial % 20 == 0) sigma[2] = sigma[0];
+      const Eigen::Matrix3d J = rotation() * sigma.asDiagonal() * rotation();
+      CAPTURE(sigma.transpose());
+      if (density == &exp_sd && J.squaredNorm() > 6) continue;  // exp(k (s + c/g^2)) overflows the tolerance
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 9, 9>> eig(density->hessian(J));
+      indefinite += eig.eigenvalues().minCoeff() < 0;
+      const Eigen::Matrix<double, 9, 9> clamped =
+          eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
+      CHECK((density->projected_hessian(J) - clamped).norm() <= 1e-10 * (1 + clamped.norm()));
+      const Eigen::Matrix<double, 9, 9> mirrored =
+          eig.eigenvectors() * eig.eigenvalues().cwiseAbs().asDiagonal() * eig.eigenvectors().transpose();
+      CHECK((density->absolute_hessian(J) - mirrored).norm() <= 1e-10 * (1 + mirrored.norm()));
+    }
+  }
+  CHECK(indefinite > 100);  // the clamping and the mirroring were exercised
+}

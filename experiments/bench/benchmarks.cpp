@@ -3,7 +3,8 @@
 //   K assembly (Eq. 5), energy + gradient, numeric factorization, solve, one
 //   whole iteration with a factorization (update, solve, flip-free line
 //   search, gradient); a density's energy, gradient and projected Hessian,
-//   hand-written against automatic differentiation; the algebraic multigrid
+//   hand-written against automatic differentiation; the 3D projected Hessian
+//   in closed form against a 9x9 eigensolver; the algebraic multigrid
 //   path (hierarchy setup, one V-cycle, a CG solve to 1e-2) on horse_b and
 //   horse_b subdivided to 16x and 64x its faces (635 K and 2.5 M).
 // Run: ./build/akvf_benchmarks [--benchmark_filter=horse]
@@ -13,8 +14,10 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <random>
 
 #include "akvf/parameterization.h"
+#include "energies/arap.h"
 #include "energies/autodiff_density.h"
 #include "energies/symmetric_dirichlet.h"
 #include "experiments/cli/native_runtime.h"
@@ -235,7 +238,40 @@ void BM_DensityDerivatives(benchmark::State& state, const std::string& mesh, boo
   }
 }
 
+// The projected Hessian of 10 000 random tet Jacobians (singular values in
+// [0.3, 3], det > 0), for a 3D energy: the closed-form eigensystem
+// (singular_eigensystem_3d.h) against the generic 9x9 eigensolver it replaced.
+template <class Density>
+void BM_ProjectedHessian3D(benchmark::State& state, bool eigensolver) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> coordinate(-1, 1), stretch(0.3, 3.0);
+  std::vector<Eigen::Matrix3d> jacobians;
+  while (jacobians.size() < 10000) {
+    const Eigen::Matrix3d J = Eigen::Matrix3d::NullaryExpr([&](Eigen::Index, Eigen::Index) { return coordinate(rng); });
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    const Eigen::Vector3d sigma(stretch(rng), stretch(rng), stretch(rng));
+    if (J.determinant() > 0) jacobians.push_back(svd.matrixU() * sigma.asDiagonal() * svd.matrixV().transpose());
+  }
+  const Density density;
+  for (auto _ : state) {
+    double sum = 0;
+    for (const Eigen::Matrix3d& J : jacobians)
+      sum +=
+          (eigensolver ? density.akvf::DistortionDensity3D::projected_hessian(J) : density.projected_hessian(J))(0, 0);
+    benchmark::DoNotOptimize(sum);
+  }
+}
+
 void register_all() {
+  for (const bool eigensolver : {false, true}) {
+    const std::string how = eigensolver ? "eigensolver" : "closed-form";
+    benchmark::RegisterBenchmark(("ProjectedHessian3D/symmetric-dirichlet/" + how).c_str(),
+                                 BM_ProjectedHessian3D<akvf::SymmetricDirichlet3D>, eigensolver)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("ProjectedHessian3D/arap/" + how).c_str(), BM_ProjectedHessian3D<akvf::Arap3D>,
+                                 eigensolver)
+        ->Unit(benchmark::kMillisecond);
+  }
   for (const std::string mesh : {"camelhead.off", "horse_b.obj"}) {
     benchmark::RegisterBenchmark(("KillingAssembly/" + mesh).c_str(), BM_KillingAssembly, mesh)
         ->Unit(benchmark::kMillisecond);
