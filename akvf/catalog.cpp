@@ -28,8 +28,7 @@ const FactorOptions& newton_phase_options(const PreconditionerSettings3D& settin
 // The switch rule's view of AKVF (energy_scale.h, switching_preconditioner.h).
 // In 2D K is unscaled: its Newton step at an isometry is 1/c. In 3D AKVF
 // scales K by s_k, the energy's curvature along its last step
-// (akvf_preconditioner_3d.h, s_1 = c): that step is 1, and the scale is
-// measured.
+// (akvf_preconditioner_3d.h, s_1 = c): that step is 1.
 SwitchRule akvf_switch_rule(const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
   SwitchRule rule = settings.akvf_newton_switch;
   rule.isometric_step = isometric_newton_step(objective.density(), objective.rest().total_area);
@@ -37,24 +36,28 @@ SwitchRule akvf_switch_rule(const MeshObjective2D& objective, const Precondition
 }
 SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
   SwitchRule rule = settings.akvf_newton_switch;
-  rule.measured_scale = settings.akvf.secant_scaling;
   rule.isometric_step =
-      rule.measured_scale ? 1.0 : isometric_newton_step(objective.density(), objective.rest().total_volume);
+      settings.akvf.secant_scaling ? 1.0 : isometric_newton_step(objective.density(), objective.rest().total_volume);
   return rule;
 }
 
-// AKVF, then projected Newton on the same matrix pattern: both take their
-// symbolic analysis from one cache (the settings' own, or a new one).
+// AKVF, then projected Newton on the same matrix pattern: the Newton phase
+// shares AKVF's assembly pattern (element_matrix.h) and takes its symbolic
+// analysis from the same cache (the settings' own, or a new one), so the
+// switch costs no setup the pure methods do not pay before their start.
 template <int D, class Akvf, class Settings>
 std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objective, const Settings& settings) {
   Settings shared = settings;
   if (!shared.akvf.factor.analysis_cache) shared.share_analyses(std::make_shared<SymbolicAnalysisCache>());
   const FactorOptions newton = newton_phase_options(shared);
   const EigenvalueFilter filter = settings.newton_filter;
+  auto akvf = std::make_unique<Akvf>(objective, shared.akvf);
+  const Akvf* first = akvf.get();  // owned by the switching preconditioner, which calls the factory
   return std::make_unique<SwitchingPreconditioner>(
-      "akvf-newton", std::make_unique<Akvf>(objective, shared.akvf),
-      [&objective, newton, filter] {
-        return std::make_unique<NewtonPreconditioner<D>>(objective, newton, default_newton_projection(D), filter);
+      "akvf-newton", std::move(akvf),
+      [&objective, first, newton, filter] {
+        return std::make_unique<NewtonPreconditioner<D>>(objective, first->matrix(), newton,
+                                                         default_newton_projection(D), filter);
       },
       akvf_switch_rule(objective, settings));
 }

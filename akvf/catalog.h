@@ -39,7 +39,8 @@ struct PreconditionerSettings2D {
 
   // Every factored preconditioner takes its symbolic analyses from `cache`.
   void share_analyses(const std::shared_ptr<SymbolicAnalysisCache>& cache) {
-    for (FactorOptions* options : {&akvf.factor, &newton, &laplacian, &slim}) options->analysis_cache = cache;
+    for (FactorOptions* options : {&akvf.factor, &newton, &newton_phase, &laplacian, &slim})
+      options->analysis_cache = cache;
   }
   // Every factored preconditioner solves with `solver`.
   void set_linear_solver(LinearSolver solver) {

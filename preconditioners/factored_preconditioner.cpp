@@ -20,12 +20,25 @@ FactorOptions with_added_diagonal(FactorOptions options, const Eigen::VectorXd& 
 template <int D>
 FactoredPreconditioner<D>::FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options)
     : FactoredPreconditioner(objective.elements(), objective.num_vertices(),
-                             with_added_diagonal(std::move(options), objective.added_hessian_diagonal())) {}
+                             with_added_diagonal(std::move(options), objective.added_hessian_diagonal()), nullptr) {}
+
+template <int D>
+FactoredPreconditioner<D>::FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options,
+                                                  const Matrix& same_elements)
+    : FactoredPreconditioner(objective.elements(), objective.num_vertices(),
+                             with_added_diagonal(std::move(options), objective.added_hessian_diagonal()),
+                             &same_elements) {}
 
 template <int D>
 FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices,
                                                   FactorOptions options)
-    : options_(options), matrix_(elements, num_vertices) {
+    : FactoredPreconditioner(elements, num_vertices, std::move(options), nullptr) {}
+
+template <int D>
+FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices,
+                                                  FactorOptions options, const Matrix* same_elements)
+    : options_(options),
+      matrix_(same_elements ? Matrix::with_pattern_of(*same_elements) : Matrix(elements, num_vertices)) {
   if (!(options_.tikhonov > 0)) throw OptionsError("Tikhonov shift must be > 0");
   if (!(options_.absolute_shift >= 0)) throw OptionsError("absolute Tikhonov shift must be >= 0");
   if (!(options_.reuse_tolerance >= 0 && options_.reuse_tolerance < 1))

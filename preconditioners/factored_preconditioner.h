@@ -106,6 +106,9 @@ class FactoredPreconditioner : public Preconditioner {
   // problem adds to it (MeshObjective::added_hessian_diagonal) as the
   // extra diagonal, unless `options` already has one.
   FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options);
+  // The same, with P on the sparsity pattern of `same_elements`, a matrix
+  // already built on the objective's elements (shared, not rebuilt).
+  FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options, const Matrix& same_elements);
 
   // P's extra diagonal (FactorOptions::extra_diagonal as used).
   const Eigen::VectorXd& extra_diagonal() const { return options_.extra_diagonal; }
@@ -118,6 +121,8 @@ class FactoredPreconditioner : public Preconditioner {
   virtual bool is_constant() const { return false; }
 
  private:
+  FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices, FactorOptions options,
+                         const Matrix* same_elements);
   void factorize_current();
   void solve_by_conjugate_gradients(const Eigen::VectorXd& g, Eigen::VectorXd* d);
   bool solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d);

@@ -38,6 +38,11 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   explicit NewtonPreconditioner(const MeshObjective<D>& objective, FactorOptions options = {},
                                 MotionProjection projection = default_newton_projection(D),
                                 EigenvalueFilter filter = EigenvalueFilter::kClamp);
+  // The same on the sparsity pattern of `same_elements`, another
+  // preconditioner's matrix on the objective's elements (akvf-newton hands
+  // over AKVF's at the switch).
+  NewtonPreconditioner(const MeshObjective<D>& objective, const ElementMatrix<D, D + 1>& same_elements,
+                       FactorOptions options, MotionProjection projection, EigenvalueFilter filter);
   std::string name() const override { return "newton"; }
   // The filter the last assembly used (kClamp or kAbsolute), and how many
   // assemblies mirrored.

@@ -12,8 +12,8 @@ void SwitchingPreconditioner::update(const OptimizationState& state) {
   if (!second_) {
     const double step = state.previous_step;
     const bool curvature_limited = step > 0 && step < rule_.bound_share * state.previous_max_step;
-    const bool newton_like = (state.previous_backtracked || rule_.measured_scale) &&
-                             step >= std::sqrt(rule_.backtracking_factor) * rule_.isometric_step;
+    const bool newton_like =
+        state.previous_backtracked && step >= std::sqrt(rule_.backtracking_factor) * rule_.isometric_step;
     curvature_limited_steps_ = curvature_limited && !newton_like ? curvature_limited_steps_ + 1 : 0;
     if (curvature_limited_steps_ >= rule_.patience) {
       second_ = make_second_();

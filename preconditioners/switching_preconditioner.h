@@ -24,9 +24,12 @@
 // t, and above sqrt(rho) / (2 c), i.e. the energy curves along d less than
 // 2 / sqrt(rho) (2.8 for rho = 0.5) times what c K predicts. A first trial
 // accepted at once says nothing about the curvature (the step may be far
-// too short) unless AKVF's scale is itself measured (`measured_scale`), and
-// a step shortened below sqrt(rho) / c says K misjudges it; both count
-// toward the switch.
+// too short), and a step shortened below sqrt(rho) / c says K misjudges it;
+// both count toward the switch. That holds in 3D too, where AKVF scales K by
+// the curvature measured along its *previous* step (the secant scale s_k,
+// so its Newton step is 1): the scale says nothing about the new direction,
+// and on the SLIM cube AKVF's unit steps, all accepted at once, decrease the
+// energy far more slowly than Newton's (docs/design.md).
 // On a nearly isometric map (hilbert_b, a developable strip) AKVF's steps
 // are 1/c and it keeps AKVF, whose K models the flat bending modes better
 // than the per-element projected Hessian (docs/design.md, "The default
@@ -47,10 +50,6 @@ struct SwitchRule {
   // Newton-like, every curvature-set step counts.
   double isometric_step = std::numeric_limits<double>::infinity();
   double backtracking_factor = 0.5;  // rho of the line search
-  // AKVF scales K by the curvature measured along its last step (3D, the
-  // secant scale s_k): a first trial accepted at once then also shows the
-  // model's curvature right, so the backtracking is not required.
-  bool measured_scale = false;
 };
 
 class SwitchingPreconditioner final : public Preconditioner {

@@ -19,7 +19,9 @@ void parallel_for_index(int n, int grain, const Body& body) {
 }  // namespace
 
 template <int D, int N>
-ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vertices) : elements_(elements) {
+ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vertices) {
+  auto built = std::make_shared<Pattern>();
+  built->num_elements = static_cast<int>(elements.rows());
   const int n = D * num_vertices;
   const int ne = static_cast<int>(elements.rows());
   // Global dof of local dof i of element e.
@@ -46,22 +48,36 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
   // Invert it: for each nonzero, its contributing slots in increasing order,
   // so the gather sums in a fixed order whatever the thread count.
   const int nnz = static_cast<int>(upper_.nonZeros());
-  gather_offsets_.assign(nnz + 1, 0);
-  for (int e : slot_entry) ++gather_offsets_[e + 1];
-  for (int i = 0; i < nnz; ++i) gather_offsets_[i + 1] += gather_offsets_[i];
-  gather_sources_.resize(slot_entry.size());
-  std::vector<int> fill(gather_offsets_.begin(), gather_offsets_.end() - 1);
-  for (int s = 0; s < static_cast<int>(slot_entry.size()); ++s) gather_sources_[fill[slot_entry[s]]++] = s;
+  std::vector<int>& offsets = built->gather_offsets;
+  offsets.assign(nnz + 1, 0);
+  for (int e : slot_entry) ++offsets[e + 1];
+  for (int i = 0; i < nnz; ++i) offsets[i + 1] += offsets[i];
+  built->gather_sources.resize(slot_entry.size());
+  std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+  for (int s = 0; s < static_cast<int>(slot_entry.size()); ++s) built->gather_sources[fill[slot_entry[s]]++] = s;
 
-  diagonal_entries_.resize(n);
+  built->diagonal_entries.resize(n);
   // Rows are sorted within a column, so the diagonal is the last upper entry.
-  for (int i = 0; i < n; ++i) diagonal_entries_[i] = upper_.outerIndexPtr()[i + 1] - 1;
-  element_buffer_.resize(slot_entry.size());
+  for (int i = 0; i < n; ++i) built->diagonal_entries[i] = upper_.outerIndexPtr()[i + 1] - 1;
+  pattern_ = std::move(built);
+}
+
+template <int D, int N>
+ElementMatrix<D, N>::ElementMatrix(std::shared_ptr<const Pattern> pattern, Eigen::SparseMatrix<double> upper)
+    : pattern_(std::move(pattern)), upper_(std::move(upper)) {}
+
+template <int D, int N>
+ElementMatrix<D, N> ElementMatrix<D, N>::with_pattern_of(const ElementMatrix& other) {
+  Eigen::SparseMatrix<double> upper = other.upper_;
+  std::fill(upper.valuePtr(), upper.valuePtr() + upper.nonZeros(), 0.0);
+  return ElementMatrix(other.pattern_, std::move(upper));
 }
 
 template <int D, int N>
 void ElementMatrix<D, N>::assemble(const LocalFunction& local) {
-  parallel_for_index(static_cast<int>(elements_.rows()), 512, [&](int e) {
+  const Pattern& pattern = *pattern_;
+  element_buffer_.resize(static_cast<std::size_t>(kSlots) * pattern.num_elements);
+  parallel_for_index(pattern.num_elements, 512, [&](int e) {
     Local M;
     local(e, &M);
     double* out = element_buffer_.data() + static_cast<std::size_t>(kSlots) * e;
@@ -71,17 +87,18 @@ void ElementMatrix<D, N>::assemble(const LocalFunction& local) {
   double* values = upper_.valuePtr();
   parallel_for_index(static_cast<int>(upper_.nonZeros()), 4096, [&](int e) {
     double sum = 0;
-    for (int i = gather_offsets_[e]; i < gather_offsets_[e + 1]; ++i) sum += element_buffer_[gather_sources_[i]];
+    for (int i = pattern.gather_offsets[e]; i < pattern.gather_offsets[e + 1]; ++i)
+      sum += element_buffer_[pattern.gather_sources[i]];
     values[e] = sum;
   });
   double trace = 0;
-  for (int e : diagonal_entries_) trace += values[e];
-  mean_diagonal_ = trace / static_cast<double>(diagonal_entries_.size());
+  for (int e : pattern.diagonal_entries) trace += values[e];
+  mean_diagonal_ = trace / static_cast<double>(pattern.diagonal_entries.size());
 }
 
 template <int D, int N>
 void ElementMatrix<D, N>::add_to_diagonal(double shift) {
-  for (int e : diagonal_entries_) upper_.valuePtr()[e] += shift;
+  for (int e : pattern_->diagonal_entries) upper_.valuePtr()[e] += shift;
 }
 
 template <int D, int N>
@@ -92,7 +109,8 @@ void ElementMatrix<D, N>::scale(double factor) {
 
 template <int D, int N>
 void ElementMatrix<D, N>::add_to_diagonal(const Eigen::VectorXd& values) {
-  for (std::size_t i = 0; i < diagonal_entries_.size(); ++i) upper_.valuePtr()[diagonal_entries_[i]] += values[i];
+  const std::vector<int>& diagonal = pattern_->diagonal_entries;
+  for (std::size_t i = 0; i < diagonal.size(); ++i) upper_.valuePtr()[diagonal[i]] += values[i];
 }
 
 template <int D, int N>

@@ -7,7 +7,9 @@
 // the SLIM proxy and the Laplacian all have this form.
 //
 // The sparsity pattern (the upper triangle of D x D blocks for each vertex
-// and edge) is built once from the elements. Each local matrix's upper
+// and edge) is built once from the elements and may be shared by another
+// matrix on the same elements (with_pattern_of: akvf-newton's Newton phase
+// takes AKVF's at the switch instead of building it again). Each local matrix's upper
 // triangle, D N (D N + 1) / 2 numbers, goes to the global upper triangle;
 // assemble() computes the local matrices in parallel and gathers every
 // nonzero from its contributions in a fixed order, so the result is bitwise
@@ -15,6 +17,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace akvf {
@@ -29,6 +32,9 @@ class ElementMatrix {
 
   //   elements  #E by N vertex indices
   ElementMatrix(const Eigen::MatrixXi& elements, int num_vertices);
+  // A matrix on the same elements as `other`, sharing its pattern (values
+  // zero; nothing is rebuilt).
+  static ElementMatrix with_pattern_of(const ElementMatrix& other);
 
   void assemble(const LocalFunction& local);
   // upper() += shift I (Tikhonov regularization).
@@ -47,13 +53,18 @@ class ElementMatrix {
 
  private:
   static constexpr int kSlots = kLocalSize * (kLocalSize + 1) / 2;
+  // What depends on the elements only.
+  struct Pattern {
+    int num_elements = 0;
+    std::vector<int> gather_offsets;    // per nonzero: its contributions in gather_sources
+    std::vector<int> gather_sources;    // indices into element_buffer_
+    std::vector<int> diagonal_entries;  // nonzero index of each (i, i)
+  };
+  ElementMatrix(std::shared_ptr<const Pattern> pattern, Eigen::SparseMatrix<double> upper);
 
-  Eigen::MatrixXi elements_;
+  std::shared_ptr<const Pattern> pattern_;
   Eigen::SparseMatrix<double> upper_;
-  std::vector<double> element_buffer_;  // #E x kSlots local values
-  std::vector<int> gather_offsets_;     // per nonzero: its contributions in gather_sources_
-  std::vector<int> gather_sources_;     // indices into element_buffer_
-  std::vector<int> diagonal_entries_;   // nonzero index of each (i, i)
+  std::vector<double> element_buffer_;  // #E x kSlots local values (sized by assemble())
   double mean_diagonal_ = 0;
 };
 
