@@ -3,6 +3,7 @@
 // cannot read outside the data folder unless they say so.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -131,4 +132,56 @@ TEST_CASE("a manifest cannot read outside --data-dir unless it says so") {
   CHECK(err.str().find("meshes[0].file: ") != std::string::npos);
   CHECK(err.str().find("outside the data folder") != std::string::npos);
   fs::remove_all(dir);
+}
+
+TEST_CASE("a growing trace holds every row as the run goes and becomes the final trace at the end") {
+  const fs::path dir = scratch("growing");
+  const std::string path = (dir / "t.csv").string();
+  akvf::GrowingTraceCsv trace(path);
+  REQUIRE(trace.partial_path() == fs::weakly_canonical(dir / "t.csv").string() + ".partial");
+  std::vector<std::string> seen;  // the partial file after each row
+  const akvf::IterationCallback record = trace.callback();
+  const akvf::IterationCallback look = [&](const akvf::IterationSummary&, const Eigen::VectorXd&) {
+    std::ifstream in(trace.partial_path());
+    seen.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return akvf::CallbackAction::kContinue;
+  };
+  ParamConfig config;
+  config.optimizer.max_iterations = 3;
+  const akvf::ParamSetup setup = akvf::prepare_parameterization(akvf::test::bumpy_disk(7, 7), "b.obj", config);
+  const akvf::OptimizerResult result = akvf::run_parameterization(setup, config, {record, look}).result;
+  REQUIRE(seen.size() == 4);  // rows 0..3
+  const std::string final_text = trace_text(result);
+  for (std::size_t k = 0; k < seen.size(); ++k) {
+    CAPTURE(k);
+    CHECK(std::count(seen[k].begin(), seen[k].end(), '\n') == static_cast<long>(k + 2));  // header + rows 0..k
+    // Every row so far, as the final trace has it but with an empty status.
+    const std::string header_and_rows = seen[k];
+    CHECK(final_text.rfind(header_and_rows.substr(0, header_and_rows.size() - 1), 0) == 0);
+  }
+  CHECK(!fs::exists(path));  // nothing at PATH before finish()
+  trace.finish(result);
+  CHECK(!fs::exists(trace.partial_path()));
+  std::ifstream in(path);
+  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(written == final_text);
+  CHECK(written.find(",max-iterations\n") != std::string::npos);
+}
+
+TEST_CASE("a growing trace leaves special outputs and whatever is not a regular file at PATH.partial alone") {
+  CHECK(akvf::GrowingTraceCsv("/dev/null").partial_path().empty());
+  CHECK(akvf::GrowingTraceCsv("").partial_path().empty());
+  const fs::path dir = scratch("growing_folder");
+  fs::create_directories(dir / "t.csv.partial");  // a folder where the partial file would go
+  akvf::GrowingTraceCsv trace((dir / "t.csv").string());
+  ParamConfig config;
+  config.optimizer.max_iterations = 2;
+  const akvf::ParamSetup setup = akvf::prepare_parameterization(akvf::test::bumpy_disk(7, 7), "b.obj", config);
+  const akvf::OptimizerResult result = akvf::run_parameterization(setup, config, {trace.callback()}).result;
+  trace.finish(result);
+  CHECK(fs::is_directory(dir / "t.csv.partial"));
+  CHECK(fs::is_empty(dir / "t.csv.partial"));
+  std::ifstream in(dir / "t.csv");
+  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(written == trace_text(result));
 }

@@ -24,7 +24,8 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
       {"constraints", "FILE", "one `vertex_index x y z` per line (0-based), # comments"},
       {"preset", "NAME", "slim-cube: the SLIM paper's twisted cube (Figure 8)"},
       {"out", "OUT.mesh", "write the deformed mesh (.mesh MEDIT or .vtk VTK legacy)"},
-      {"trace", "TRACE.csv", "one CSV row per iteration; flips counts inverted tets"},
+      {"trace", "TRACE.csv",
+       "one CSV row per iteration; flips counts inverted tets (TRACE.csv.partial grows during the run)"},
       {"summary", "RUN.json",
        "write the run's summary: options, status, iterations, energy, memory (docs/experiments.md)"},
   };
@@ -67,6 +68,8 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
                                               : read_constraints_file(cl.text("constraints", ""), input.num_vertices());
   std::vector<IterationCallback> callbacks;
   if (!cl.has("quiet")) callbacks.push_back(progress_printer(err));
+  GrowingTraceCsv trace(trace_path);
+  callbacks.push_back(trace.callback());
   const DeformRun run = run_deformation(input, path, constraints, config, callbacks);
   for (const auto& warning : run.warnings) err << "warning: " << warning << '\n';
   const TetMesh& mesh = run.prepared.mesh;
@@ -84,7 +87,7 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
     else
       write_medit(out_path, deformed);
   }
-  if (!trace_path.empty()) write_trace_csv(trace_path, run.result);
+  trace.finish(run.result);
   if (!summary_path.empty()) {
     Json settings;
     record_options(deform_option_fields(), options, &settings);

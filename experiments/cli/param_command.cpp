@@ -77,6 +77,8 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
 
   std::vector<IterationCallback> callbacks;
   if (!quiet) callbacks.push_back(progress_printer(err));
+  GrowingTraceCsv trace(outputs.trace);
+  callbacks.push_back(trace.callback());
   const ParamRun run = run_parameterization(setup, config, callbacks);
   const OptimizerResult& result = run.result;
   const IterationSummary& last = result.trace.back();
@@ -104,7 +106,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
       write_obj_with_uv(outputs.obj, input, UV, UV_faces);
     }
   }
-  if (!outputs.trace.empty()) write_trace_csv(outputs.trace, result);
+  trace.finish(result);
   if (!outputs.svg.empty())
     write_layout_svg(outputs.svg, setup, result.x,
                      name + " - " + run.preconditioner_name + ", " + std::to_string(last.iteration) +
@@ -132,7 +134,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
       {"texture", "checker|none",
        "with --out: checker writes UV.mtl and a checkerboard UV_checker.png beside it, vt scaled into the unit "
        "square; none writes vt at the input's scale (default checker)"},
-      {"trace", "TRACE.csv", "write one CSV row per iteration (row 0 = initial map)"},
+      {"trace", "TRACE.csv",
+       "write one CSV row per iteration (row 0 = initial map; TRACE.csv.partial grows during the run)"},
       {"svg", "LAYOUT.svg", "write the UV layout shaded by distortion"},
       {"png", "LAYOUT.png", "write the UV layout shaded by distortion as a PNG image (any mesh size)"},
       {"png-size", "N", "the PNG's longer side in pixels, 16 to 16384 (default 1024)"},

@@ -1,6 +1,7 @@
 #include "experiments/report/trace_csv.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -13,26 +14,79 @@
 
 namespace akvf {
 
-void write_trace_csv(std::ostream& out, const OptimizerResult& result) {
+namespace {
+
+void write_header(std::ostream& out) {
   for (const TraceColumn& column : trace_columns()) out << column.name << ',';
   out << "status\n";
   out << std::setprecision(17);
+}
+
+// A row's numeric fields, each followed by a comma (the status comes last).
+void write_fields(std::ostream& out, const IterationSummary& row) {
+  for (const TraceColumn& column : trace_columns()) {
+    const double value = column.value(row);
+    if (column.integer)
+      out << static_cast<long long>(value) << ',';
+    else
+      out << value << ',';
+  }
+}
+
+}  // namespace
+
+void write_trace_csv(std::ostream& out, const OptimizerResult& result) {
+  write_header(out);
   std::string status_cell = status_with_reason(result);  // one CSV field: no commas
   std::replace(status_cell.begin(), status_cell.end(), ',', ';');
   for (std::size_t i = 0; i < result.trace.size(); ++i) {
-    for (const TraceColumn& column : trace_columns()) {
-      const double value = column.value(result.trace[i]);
-      if (column.integer)
-        out << static_cast<long long>(value) << ',';
-      else
-        out << value << ',';
-    }
+    write_fields(out, result.trace[i]);
     out << trace_status_cell(result.trace, i, status_cell) << '\n';
   }
 }
 
 void write_trace_csv(const std::string& path, const OptimizerResult& result) {
   write_file_atomically(path, [&](std::ostream& out) { write_trace_csv(out, result); });
+}
+
+GrowingTraceCsv::GrowingTraceCsv(std::string path) : path_(std::move(path)) {
+  if (!path_.empty() && !is_special_output(path_)) partial_path_ = resolve_output_path(path_) + ".partial";
+}
+
+IterationCallback GrowingTraceCsv::callback() {
+  return [this](const IterationSummary& row, const Eigen::VectorXd&) {
+    append(row);
+    return CallbackAction::kContinue;
+  };
+}
+
+void GrowingTraceCsv::append(const IterationSummary& row) {
+  if (partial_path_.empty()) return;
+  if (!partial_) {
+    // A regular file or nothing at PATH.partial: anything else (a link, a
+    // folder, a device) is left alone and the trace only written at the end.
+    std::error_code error;
+    const auto status = std::filesystem::symlink_status(partial_path_, error);
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+      partial_path_.clear();
+      return;
+    }
+    partial_ = std::make_unique<std::ofstream>(partial_path_, std::ios::trunc);
+    if (!*partial_) throw OutputError(partial_path_ + ": cannot write the growing trace");
+    write_header(*partial_);
+  }
+  write_fields(*partial_, row);
+  *partial_ << '\n' << std::flush;
+}
+
+void GrowingTraceCsv::finish(const OptimizerResult& result) {
+  if (path_.empty()) return;
+  write_trace_csv(path_, result);
+  if (partial_) {
+    partial_.reset();
+    std::error_code ignored;
+    std::filesystem::remove(partial_path_, ignored);
+  }
 }
 
 namespace {

@@ -58,7 +58,7 @@ struct CaseResult {
 };
 
 CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, const std::string& mesh_path,
-                          const std::string& case_dir, bool views) {
+                          const std::string& case_dir, bool views, const IterationCallback& progress) {
   const CaseSettings& s = c.settings;
   const ParamConfig config = param_config(s.param);
   const ParamSetup setup =
@@ -72,7 +72,7 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
     else
       write_layout_svg(join_path(case_dir, name + ".svg"), setup, x, title);
   };
-  std::vector<IterationCallback> callbacks;
+  std::vector<IterationCallback> callbacks = {progress};
   callbacks.push_back([&](const IterationSummary& row, const Eigen::VectorXd& x) {
     for (int k : s.snapshots)
       if (row.iteration == k)
@@ -111,7 +111,7 @@ std::string data_path(const Manifest& manifest, const std::string& data_dir, con
 }
 
 CaseResult run_deform_case(const ExperimentCase& c, const std::string& mesh_path, const Manifest& manifest,
-                           const std::string& data_dir) {
+                           const std::string& data_dir, const IterationCallback& progress) {
   const CaseSettings& s = c.settings;
   const TetMesh mesh = read_tet_mesh(mesh_path);
   const PositionConstraints constraints =
@@ -119,7 +119,7 @@ CaseResult run_deform_case(const ExperimentCase& c, const std::string& mesh_path
                                                mesh.num_vertices())
                        : slim_cube_constraints(mesh);
   const DeformConfig config = deform_config(s.deform);
-  const DeformRun run = run_deformation(mesh, mesh_path, constraints, config);
+  const DeformRun run = run_deformation(mesh, mesh_path, constraints, config, {progress});
   CaseResult out;
   out.result = run.result;
   out.lower_bound = energies_3d().create(s.deform.energy, {s.deform.exponent})->lower_bound();
@@ -147,9 +147,11 @@ Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOpt
     const std::string path =
         data_path(manifest, options.data_dir, mesh.file, "meshes[" + std::to_string(c.mesh_index) + "].file");
     reset_peak_memory();
-    CaseResult r = c.settings.problem == "param" ? run_param_case(c, mesh, path, case_dir, options.views)
-                                                 : run_deform_case(c, path, manifest, options.data_dir);
-    write_trace_csv(join_path(case_dir, "trace.csv"), r.result);
+    GrowingTraceCsv trace(join_path(case_dir, "trace.csv"));  // trace.csv.partial while the case runs
+    CaseResult r = c.settings.problem == "param"
+                       ? run_param_case(c, mesh, path, case_dir, options.views, trace.callback())
+                       : run_deform_case(c, path, manifest, options.data_dir, trace.callback());
+    trace.finish(r.result);
     summary.update(run_record(r.result, r.lower_bound, r.vertices, r.elements));
     if (!r.cut.is_null()) summary["cut"] = r.cut;
     if (r.view) {

@@ -1,7 +1,8 @@
 #pragma once
 // Runs the cases of a manifest (manifest.h) into a results folder:
 //   OUT/manifest.json                 the manifest as read (merge and report check it)
-//   OUT/cases/<id>/trace.csv          the optimizer trace (trace_csv.h)
+//   OUT/cases/<id>/trace.csv          the optimizer trace (trace_csv.h; trace.csv.partial
+//                                     grows row by row while the case runs)
 //   OUT/cases/<id>/summary.json       iterations and seconds to the stopping rule,
 //                                     final energy, gradient norm, flips, status,
 //                                     machine, threads, versions
