@@ -61,6 +61,21 @@ void check_density_derivatives(const DistortionDensity<Dim>& density, double sma
   }
 }
 
+// The density's projected and absolute Hessians at J (closed form where the
+// density has one) against the eigen-decomposition of its Hessian with the
+// eigenvalues clamped at 0 and mirrored, to 1e-10 relative. Returns whether
+// the Hessian was indefinite (so the filters had something to do).
+template <int Dim>
+bool check_filtered_hessians(const DistortionDensity<Dim>& density, const Eigen::Matrix<double, Dim, Dim>& J) {
+  using H = typename DistortionDensity<Dim>::Hessian;
+  const Eigen::SelfAdjointEigenSolver<H> eig(density.hessian(J));
+  const H clamped = eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
+  CHECK((density.projected_hessian(J) - clamped).norm() <= 1e-10 * (1 + clamped.norm()));
+  const H mirrored = eig.eigenvectors() * eig.eigenvalues().cwiseAbs().asDiagonal() * eig.eigenvectors().transpose();
+  CHECK((density.absolute_hessian(J) - mirrored).norm() <= 1e-10 * (1 + mirrored.norm()));
+  return eig.eigenvalues().minCoeff() < 0;
+}
+
 // dD/dsigma_i of a density with a singular-value derivative against central
 // differences of D at diag(sigma).
 template <int Dim>

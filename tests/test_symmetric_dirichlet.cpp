@@ -137,14 +137,7 @@ TEST_CASE("the closed-form filtered Hessians of every 2D energy are the eigenval
                                 Eigen::Vector2d(s1, s2).asDiagonal() *
                                 Eigen::Rotation2Dd(angle(rng)).toRotationMatrix();
       if (density == &exp_sd && J.squaredNorm() > 8) continue;  // exp(k (s + s/g^2)) overflows the tolerance
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eig(density->hessian(J));
-      indefinite += eig.eigenvalues().minCoeff() < 0;
-      const Eigen::Matrix4d clamped =
-          eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
-      CHECK((density->projected_hessian(J) - clamped).norm() <= 1e-10 * (1 + clamped.norm()));
-      const Eigen::Matrix4d mirrored =
-          eig.eigenvectors() * eig.eigenvalues().cwiseAbs().asDiagonal() * eig.eigenvectors().transpose();
-      CHECK((density->absolute_hessian(J) - mirrored).norm() <= 1e-10 * (1 + mirrored.norm()));
+      indefinite += akvf::test::check_filtered_hessians<2>(*density, J);
     }
   }
   CHECK(indefinite > 100);  // the clamping and the mirroring were exercised
@@ -174,14 +167,7 @@ TEST_CASE("the closed-form filtered Hessians of every 3D energy are the eigenval
       const Eigen::Matrix3d J = rotation() * sigma.asDiagonal() * rotation();
       CAPTURE(sigma.transpose());
       if (density == &exp_sd && J.squaredNorm() > 6) continue;  // exp(k (s + c/g^2)) overflows the tolerance
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 9, 9>> eig(density->hessian(J));
-      indefinite += eig.eigenvalues().minCoeff() < 0;
-      const Eigen::Matrix<double, 9, 9> clamped =
-          eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
-      CHECK((density->projected_hessian(J) - clamped).norm() <= 1e-10 * (1 + clamped.norm()));
-      const Eigen::Matrix<double, 9, 9> mirrored =
-          eig.eigenvectors() * eig.eigenvalues().cwiseAbs().asDiagonal() * eig.eigenvectors().transpose();
-      CHECK((density->absolute_hessian(J) - mirrored).norm() <= 1e-10 * (1 + mirrored.norm()));
+      indefinite += akvf::test::check_filtered_hessians<3>(*density, J);
     }
   }
   CHECK(indefinite > 100);  // the clamping and the mirroring were exercised
