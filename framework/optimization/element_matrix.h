@@ -9,8 +9,8 @@
 // The sparsity pattern (the upper triangle of D x D blocks for each vertex
 // and edge) is built once from the elements and may be shared by another
 // matrix on the same elements (with_pattern_of: akvf-newton's Newton phase
-// takes AKVF's at the switch instead of building it again). Each local matrix's upper
-// triangle, D N (D N + 1) / 2 numbers, goes to the global upper triangle;
+// takes AKVF's at the switch instead of building it again). Each local
+// matrix's upper triangle, D N (D N + 1) / 2 numbers, goes to the global upper triangle;
 // assemble() computes the local matrices in parallel and gathers every
 // nonzero from its contributions in a fixed order, so the result is bitwise
 // identical for any thread count.
