@@ -105,6 +105,11 @@ TEST_CASE("a tiny manifest runs end to end; shards merged give the same results 
   CHECK(read_text(dir / "all" / "table.csv").find("mesh,method,status,reached,iterations,seconds") == 0);
   CHECK(fs::exists(dir / "all" / "plots" / "bumpy-iterations.svg"));
   CHECK(fs::exists(dir / "all" / "plots" / "bumpy-small-seconds.svg"));
+  // Two mesh sizes (bumpy and bumpy small subdivided): the scaling plot, one line per method.
+  const std::string scaling = read_text(dir / "all" / "plots" / "seconds-per-iteration.svg");
+  CHECK(scaling.find("seconds per iteration") != std::string::npos);
+  CHECK(scaling.find(">AKVF<") != std::string::npos);
+  CHECK(scaling.find(">SLIM<") != std::string::npos);
   CHECK(fs::exists(dir / "all" / "cases" / "bumpy--akvf" / "iter-2.svg"));
   // index.html: the table, the plots and per case its links (no views without --views).
   const std::string index = read_text(dir / "all" / "index.html");

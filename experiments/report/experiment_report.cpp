@@ -6,7 +6,9 @@
 #include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
+#include <utility>
 
 #include "experiments/report/html_view.h"
 #include "experiments/report/line_plot.h"
@@ -102,6 +104,45 @@ void write_index_html(const std::string& out_dir, const Manifest& manifest, cons
           << case_links(out_dir, c, summaries[c.index]) << "</li>\n";
     out << "</ul>\n</body>\n</html>\n";
   });
+}
+
+// OUT/plots/seconds-per-iteration.svg: each method's seconds per iteration
+// against the mesh's element count, log-log (how the cost of an iteration
+// grows with the mesh: the question of the paper's Figure 6), when the
+// finished cases cover at least two sizes. A slope of 1 is linear cost.
+void write_scaling_plot(const std::string& out_dir, const Manifest& manifest, const std::vector<Json>& summaries) {
+  const std::size_t per_mesh = manifest.methods.size();
+  std::vector<PlotSeries> series;
+  std::set<long> sizes;
+  for (std::size_t j = 0; j < per_mesh; ++j) {
+    std::vector<std::pair<double, double>> points;  // (elements, seconds per iteration)
+    for (std::size_t i = 0; i < manifest.meshes.size(); ++i) {
+      const Json& s = summaries[i * per_mesh + j];
+      if (s.is_null() || !s.contains("elements") || !s.contains("seconds") || !s.contains("iterations")) continue;
+      const int iterations = s["iterations"].get<int>();
+      if (iterations < 1) continue;
+      points.emplace_back(s["elements"].get<double>(), s["seconds"].get<double>() / iterations);
+      sizes.insert(s["elements"].get<long>());
+    }
+    if (points.empty()) continue;
+    std::sort(points.begin(), points.end());
+    PlotSeries line;
+    line.label = manifest.methods[j];
+    for (const auto& [elements, seconds] : points) {
+      line.x.push_back(elements);
+      line.y.push_back(seconds);
+    }
+    series.push_back(std::move(line));
+  }
+  if (sizes.size() < 2) return;
+  PlotSpec spec;
+  spec.title = "seconds per iteration against the mesh's size";
+  spec.x_label = "elements (faces or tets)";
+  spec.y_label = "seconds per iteration";
+  spec.log_x = spec.log_y = true;
+  const std::string svg = line_plot_svg(spec, series);
+  write_file_atomically(join_path(join_path(out_dir, "plots"), "seconds-per-iteration.svg"),
+                        [&](std::ostream& out) { out << svg; });
 }
 
 }  // namespace
@@ -213,6 +254,7 @@ std::string write_experiment_report(const std::string& out_dir) {
                             [&](std::ostream& out) { out << svg; });
     }
   }
+  write_scaling_plot(out_dir, manifest, summaries);
   // Every plot in the folder (also those of a run whose traces are gone).
   std::vector<std::string> plots;
   for (const auto& entry : fs::directory_iterator(join_path(out_dir, "plots")))

@@ -7,6 +7,9 @@
 //   OUT/table.csv   one row per case: every summary field other tools need
 //   OUT/plots/<mesh>-iterations.svg, <mesh>-seconds.svg
 //                   energy minus the lower bound (log) per method
+//   OUT/plots/seconds-per-iteration.svg
+//                   per method, seconds per iteration against the element
+//                   count (log-log), when the cases cover two sizes or more
 #include <ostream>
 #include <string>
 

@@ -2,6 +2,7 @@
 
 #include <tbb/global_control.h>
 
+#include <malloc.h>
 #include <algorithm>
 #include <fstream>
 #include <thread>
@@ -27,7 +28,13 @@ std::string cpu_model() {
 
 }  // namespace
 
-void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }  // 5 clears VmHWM
+// VmHWM restarts from the current resident size, so the memory an earlier
+// case freed must leave the process first: glibc keeps freed heap pages
+// (and CHOLMOD's, hypre's) resident until malloc_trim returns them.
+void reset_peak_memory() {
+  malloc_trim(0);
+  std::ofstream("/proc/self/clear_refs") << "5";  // 5 clears VmHWM
+}
 
 double peak_memory_mb() {
   std::ifstream in("/proc/self/status");
