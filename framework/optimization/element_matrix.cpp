@@ -45,16 +45,55 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
     const int begin = upper_.outerIndexPtr()[pattern[s].col()], end = upper_.outerIndexPtr()[pattern[s].col() + 1];
     slot_entry[s] = static_cast<int>(std::lower_bound(rows + begin, rows + end, pattern[s].row()) - rows);
   }
-  // Invert it: for each nonzero, its contributing slots in increasing order,
-  // so the gather sums in a fixed order whatever the thread count.
+  std::vector<Eigen::Triplet<double>>().swap(pattern);
+  // Invert it: for each nonzero, its contributing slots in increasing order
+  // (so each sum has a fixed order whatever the thread count) ...
   const int nnz = static_cast<int>(upper_.nonZeros());
-  std::vector<int>& offsets = built->gather_offsets;
-  offsets.assign(nnz + 1, 0);
+  std::vector<int> offsets(nnz + 1, 0);
   for (int e : slot_entry) ++offsets[e + 1];
   for (int i = 0; i < nnz; ++i) offsets[i + 1] += offsets[i];
-  built->gather_sources.resize(slot_entry.size());
-  std::vector<int> fill(offsets.begin(), offsets.end() - 1);
-  for (int s = 0; s < static_cast<int>(slot_entry.size()); ++s) built->gather_sources[fill[slot_entry[s]]++] = s;
+  std::vector<int> by_entry(slot_entry.size());
+  {
+    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+    for (int s = 0; s < static_cast<int>(slot_entry.size()); ++s) by_entry[fill[slot_entry[s]]++] = s;
+  }
+  std::vector<int>().swap(slot_entry);
+  // ... then regroup each nonzero's run of slots in one chunk by chunk,
+  // keeping the nonzeros and the slots in increasing order within a chunk.
+  const long chunk_slots = static_cast<long>(kChunkElements) * kSlots;
+  const int chunks = (ne + kChunkElements - 1) / kChunkElements;
+  const auto for_each_run = [&](auto&& visit) {  // visit(nonzero, chunk, first, last) over by_entry
+    for (int i = 0; i < nnz; ++i)
+      for (int k = offsets[i]; k < offsets[i + 1];) {
+        const int chunk = static_cast<int>(by_entry[k] / chunk_slots);
+        int end = k;
+        while (end < offsets[i + 1] && by_entry[end] / chunk_slots == chunk) ++end;
+        visit(i, chunk, k, end);
+        k = end;
+      }
+  };
+  std::vector<int> runs(chunks + 1, 0), slots_before(chunks + 1, 0);
+  for_each_run([&](int, int chunk, int first, int last) {
+    ++runs[chunk + 1];
+    slots_before[chunk + 1] += last - first;
+  });
+  for (int c = 0; c < chunks; ++c) {
+    runs[c + 1] += runs[c];
+    slots_before[c + 1] += slots_before[c];
+  }
+  built->chunk_touched = runs;
+  built->touched.resize(runs[chunks]);
+  built->source_offsets.resize(runs[chunks] + 1);
+  built->sources.resize(by_entry.size());
+  std::vector<int> next_run(runs.begin(), runs.end() - 1), next_slot(slots_before.begin(), slots_before.end() - 1);
+  for_each_run([&](int nonzero, int chunk, int first, int last) {
+    const int t = next_run[chunk]++;
+    built->touched[t] = nonzero;
+    built->source_offsets[t] = next_slot[chunk];
+    for (int k = first; k < last; ++k)
+      built->sources[next_slot[chunk]++] = static_cast<int>(by_entry[k] - chunk * chunk_slots);
+  });
+  built->source_offsets[runs[chunks]] = static_cast<int>(by_entry.size());
 
   built->diagonal_entries.resize(n);
   // Rows are sorted within a column, so the diagonal is the last upper entry.
@@ -76,21 +115,28 @@ ElementMatrix<D, N> ElementMatrix<D, N>::with_pattern_of(const ElementMatrix& ot
 template <int D, int N>
 void ElementMatrix<D, N>::assemble(const LocalFunction& local) {
   const Pattern& pattern = *pattern_;
-  element_buffer_.resize(static_cast<std::size_t>(kSlots) * pattern.num_elements);
-  parallel_for_index(pattern.num_elements, 512, [&](int e) {
-    Local M;
-    local(e, &M);
-    double* out = element_buffer_.data() + static_cast<std::size_t>(kSlots) * e;
-    for (int j = 0; j < kLocalSize; ++j)
-      for (int i = 0; i <= j; ++i) *out++ = M(i, j);
-  });
+  const int chunks = static_cast<int>(pattern.chunk_touched.size()) - 1;
+  element_buffer_.resize(static_cast<std::size_t>(kSlots) * std::min(pattern.num_elements, kChunkElements));
   double* values = upper_.valuePtr();
-  parallel_for_index(static_cast<int>(upper_.nonZeros()), 4096, [&](int e) {
-    double sum = 0;
-    for (int i = pattern.gather_offsets[e]; i < pattern.gather_offsets[e + 1]; ++i)
-      sum += element_buffer_[pattern.gather_sources[i]];
-    values[e] = sum;
-  });
+  std::fill(values, values + upper_.nonZeros(), 0.0);
+  for (int c = 0; c < chunks; ++c) {
+    const int first = c * kChunkElements, count = std::min(kChunkElements, pattern.num_elements - first);
+    parallel_for_index(count, 512, [&](int k) {
+      Local M;
+      local(first + k, &M);
+      double* out = element_buffer_.data() + static_cast<std::size_t>(kSlots) * k;
+      for (int j = 0; j < kLocalSize; ++j)
+        for (int i = 0; i <= j; ++i) *out++ = M(i, j);
+    });
+    const int begin = pattern.chunk_touched[c];
+    parallel_for_index(pattern.chunk_touched[c + 1] - begin, 4096, [&](int k) {
+      const int t = begin + k;
+      double sum = values[pattern.touched[t]];
+      for (int i = pattern.source_offsets[t]; i < pattern.source_offsets[t + 1]; ++i)
+        sum += element_buffer_[pattern.sources[i]];
+      values[pattern.touched[t]] = sum;
+    });
+  }
   double trace = 0;
   for (int e : pattern.diagonal_entries) trace += values[e];
   mean_diagonal_ = trace / static_cast<double>(pattern.diagonal_entries.size());
