@@ -18,6 +18,9 @@ void SwitchingPreconditioner::update(const OptimizationState& state) {
     if (curvature_limited_steps_ >= rule_.patience) {
       second_ = make_second_();
       switch_iteration_ = state.iteration;
+      first_report_ = first_->name() + ": " + first_->report();
+      first_statistics_ = first_->statistics();
+      first_.reset();
     }
   }
   (second_ ? *second_ : *first_).update(state);
@@ -28,14 +31,13 @@ void SwitchingPreconditioner::apply(const Eigen::VectorXd& gradient, Eigen::Vect
 }
 
 std::string SwitchingPreconditioner::report() const {
-  const std::string first = first_->name() + ": " + first_->report();
-  if (!second_) return first + "; no switch";
-  return first + "; from iteration " + std::to_string(switch_iteration_) + " " + second_->name() + ": " +
+  if (!second_) return first_->name() + ": " + first_->report() + "; no switch";
+  return first_report_ + "; from iteration " + std::to_string(switch_iteration_) + " " + second_->name() + ": " +
          second_->report();
 }
 
 PreconditionerStatistics SwitchingPreconditioner::statistics() const {
-  PreconditionerStatistics sum = first_->statistics();
+  PreconditionerStatistics sum = second_ ? first_statistics_ : first_->statistics();
   if (second_) {
     const PreconditionerStatistics more = second_->statistics();
     sum.factorizations += more.factorizations;

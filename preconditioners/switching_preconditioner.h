@@ -33,7 +33,9 @@
 // On a nearly isometric map (hilbert_b, a developable strip) AKVF's steps
 // are 1/c and it keeps AKVF, whose K models the flat bending modes better
 // than the per-element projected Hessian (docs/design.md, "The default
-// method"). The switch is made once and never undone.
+// method"). The switch is made once and never undone, so the first
+// preconditioner is released then (its report and statistics kept): its
+// factor would otherwise stay in memory beside the second's.
 #include <functional>
 #include <limits>
 #include <memory>
@@ -70,6 +72,8 @@ class SwitchingPreconditioner final : public Preconditioner {
  private:
   std::string name_;
   std::unique_ptr<Preconditioner> first_, second_;
+  std::string first_report_;  // "name: report" of the first, kept when it is released
+  PreconditionerStatistics first_statistics_;
   Factory make_second_;
   SwitchRule rule_;
   int curvature_limited_steps_ = 0;
