@@ -100,8 +100,8 @@ akvf::ElementMatrix2D shifted_killing_operator(const Fixture& f) {
   return K;
 }
 
-void BM_NumericFactorization(benchmark::State& state, const std::string& mesh) {
-  REQUIRE_FIXTURE(state, mesh);
+void BM_NumericFactorization(benchmark::State& state, const std::string& mesh, int subdivide) {
+  REQUIRE_FIXTURE(state, mesh, subdivide);
   const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
   akvf::SparseCholesky cholesky;
   cholesky.analyze(K.upper(), 2);
@@ -119,8 +119,8 @@ void BM_SymbolicAnalysis(benchmark::State& state, const std::string& mesh) {
   }
 }
 
-void BM_Solve(benchmark::State& state, const std::string& mesh) {
-  REQUIRE_FIXTURE(state, mesh);
+void BM_Solve(benchmark::State& state, const std::string& mesh, int subdivide) {
+  REQUIRE_FIXTURE(state, mesh, subdivide);
   const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
   akvf::SparseCholesky cholesky;
   cholesky.analyze(K.upper(), 2);  // as the AKVF preconditioner does
@@ -278,11 +278,11 @@ void register_all() {
     benchmark::RegisterBenchmark(("EnergyGradient/" + mesh).c_str(), BM_EnergyGradient, mesh)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Energy/" + mesh).c_str(), BM_Energy, mesh)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh)
+    benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh, 0)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("SymbolicAnalysis/" + mesh).c_str(), BM_SymbolicAnalysis, mesh)
         ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh, 0)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("SymmetricProduct/" + mesh).c_str(), BM_SymmetricProduct, mesh)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("WholeIteration/" + mesh).c_str(), BM_WholeIteration, mesh)
@@ -291,6 +291,16 @@ void register_all() {
                                  false)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("DensityDerivatives/autodiff/" + mesh).c_str(), BM_DensityDerivatives, mesh, true)
+        ->Unit(benchmark::kMillisecond);
+  }
+  // The direct path at the multigrid cases' sizes: its cost grows faster
+  // than the mesh (fill), which is what the multigrid path is for.
+  for (const int subdivide : {2, 3}) {
+    const std::string name = "horse_b.obj/x" + std::to_string(1 << (2 * subdivide));
+    benchmark::RegisterBenchmark(("NumericFactorization/" + name).c_str(), BM_NumericFactorization, "horse_b.obj",
+                                 subdivide)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Solve/" + name).c_str(), BM_Solve, "horse_b.obj", subdivide)
         ->Unit(benchmark::kMillisecond);
   }
   if (!akvf::AlgebraicMultigrid::available()) return;
