@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "framework/process/error.h"
@@ -32,70 +33,213 @@ struct PermutedPattern {
   std::vector<int> value_map;  // nonzero k of the upper input -> its slot in the lower triangle
 };
 
-struct SparseCholesky::Impl {
-  cholmod_common common;
-  cholmod_factor* factor = nullptr;
-  cholmod_dense* rhs = nullptr;
-  cholmod_dense* solution = nullptr;
-  cholmod_dense* workspace_y = nullptr;
-  cholmod_dense* workspace_e = nullptr;
+namespace {
 
-  std::shared_ptr<const PermutedPattern> pattern;
-  std::vector<double> lower_value;  // empty until the first factorization
-  std::vector<double> permuted_rhs;
-  std::unique_ptr<SupernodalSolve> supernodal_solver;  // reset with each analysis
+using Long = SuiteSparse_long;
 
-  Impl() {
-    cholmod_start(&common);
-    common.print = 0;  // errors are reported through exceptions, not stderr
+// CHOLMOD's entry points for one integer width: cholmod_* (int) and
+// cholmod_l_* (SuiteSparse_long).
+template <class Index>
+struct Cholmod;
+#define AKVF_CHOLMOD_API(INDEX, PREFIX, ITYPE)                                   \
+  template <>                                                                    \
+  struct Cholmod<INDEX> {                                                        \
+    static constexpr int itype = ITYPE;                                          \
+    static constexpr auto start = &PREFIX##start;                                \
+    static constexpr auto finish = &PREFIX##finish;                              \
+    static constexpr auto analyze = &PREFIX##analyze;                            \
+    static constexpr auto factorize = &PREFIX##factorize;                        \
+    static constexpr auto copy_factor = &PREFIX##copy_factor;                    \
+    static constexpr auto free_factor = &PREFIX##free_factor;                    \
+    static constexpr auto allocate_dense = &PREFIX##allocate_dense;              \
+    static constexpr auto free_dense = &PREFIX##free_dense;                      \
+    static constexpr auto solve2 = &PREFIX##solve2;                              \
+  };
+AKVF_CHOLMOD_API(int, cholmod_, CHOLMOD_INT)
+AKVF_CHOLMOD_API(Long, cholmod_l_, CHOLMOD_LONG)
+#undef AKVF_CHOLMOD_API
+
+void check_status(const cholmod_common& common, const char* what) {
+  if (common.status < CHOLMOD_OK)
+    throw NumericalError(std::string("CHOLMOD ") + what + " failed (status " + std::to_string(common.status) + ")");
+}
+
+template <class Index>
+cholmod_sparse sparse_view(Index n, Index* column_start, Index* row, double* value, int stype) {
+  cholmod_sparse A{};
+  A.nrow = A.ncol = static_cast<size_t>(n);
+  A.nzmax = static_cast<size_t>(column_start[n]);
+  A.p = column_start;
+  A.i = row;
+  A.x = value;
+  A.stype = stype;
+  A.itype = Cholmod<Index>::itype;
+  A.xtype = value ? CHOLMOD_REAL : CHOLMOD_PATTERN;
+  A.dtype = CHOLMOD_DOUBLE;
+  A.sorted = 1;
+  A.packed = 1;
+  return A;
+}
+
+}  // namespace
+
+// The numeric side, for one integer width: CHOLMOD's analysis of the
+// permuted lower triangle in its natural order, its factor, and the solves.
+class PermutedFactor {
+ public:
+  virtual ~PermutedFactor() = default;
+  // Symbolic analysis; false if the factor is too large for this integer
+  // width (CHOLMOD_TOO_LARGE), any other failure throws.
+  virtual bool analyze(const std::shared_ptr<const PermutedPattern>& pattern) = 0;
+  // A new object holding a copy of this (analyzed, unfactored) analysis.
+  virtual std::unique_ptr<PermutedFactor> copy_analysis() const = 0;
+  // values: the lower triangle's, in the pattern's order.
+  virtual void factorize(double* values) = 0;
+  // z = (L L^T)^-1 z in the permuted numbering.
+  virtual void solve(double* z) = 0;
+  virtual bool supernodal() const = 0;
+  virtual bool factored() const = 0;
+  virtual double serial_solve_share() = 0;
+  virtual int index_bits() const = 0;
+  double nonzeros = 0, flops = 0;  // of the factor, from the analysis
+};
+
+namespace {
+
+template <class Index>
+class CholmodFactor final : public PermutedFactor {
+  using Api = Cholmod<Index>;
+
+ public:
+  CholmodFactor() {
+    Api::start(&common_);
+    common_.print = 0;  // errors are reported through exceptions, not stderr
+    // The matrix comes permuted and postordered (SparseCholesky::analyze).
+    common_.nmethods = 1;
+    common_.method[0].ordering = CHOLMOD_NATURAL;
+    common_.postorder = 0;
   }
-  ~Impl() {
-    cholmod_free_factor(&factor, &common);
-    cholmod_free_dense(&rhs, &common);
-    cholmod_free_dense(&solution, &common);
-    cholmod_free_dense(&workspace_y, &common);
-    cholmod_free_dense(&workspace_e, &common);
-    cholmod_finish(&common);
+  ~CholmodFactor() override {
+    Api::free_factor(&factor_, &common_);
+    Api::free_dense(&rhs_, &common_);
+    Api::free_dense(&solution_, &common_);
+    Api::free_dense(&workspace_y_, &common_);
+    Api::free_dense(&workspace_e_, &common_);
+    Api::finish(&common_);
   }
 
-  static cholmod_sparse view(int n, int* column_start, int* row, double* value, int stype) {
-    cholmod_sparse A{};
-    A.nrow = A.ncol = static_cast<size_t>(n);
-    A.nzmax = static_cast<size_t>(column_start[n]);
-    A.p = column_start;
-    A.i = row;
-    A.x = value;
-    A.stype = stype;
-    A.itype = CHOLMOD_INT;
-    A.xtype = CHOLMOD_REAL;
-    A.dtype = CHOLMOD_DOUBLE;
-    A.sorted = 1;
-    A.packed = 1;
-    return A;
+  bool analyze(const std::shared_ptr<const PermutedPattern>& pattern) override {
+    set_pattern(pattern);
+    cholmod_sparse B = lower(nullptr);
+    factor_ = Api::analyze(&B, &common_);
+    if (common_.status == CHOLMOD_TOO_LARGE) return false;
+    check_status(common_, "symbolic analysis of the permuted matrix");
+    nonzeros = common_.lnz;
+    flops = common_.fl;
+    return true;
+  }
+
+  std::unique_ptr<PermutedFactor> copy_analysis() const override {
+    auto copy = std::make_unique<CholmodFactor<Index>>();
+    copy->pattern_ = pattern_;
+    copy->column_start_ = column_start_;
+    copy->row_ = row_;
+    copy->factor_ = Api::copy_factor(factor_, &copy->common_);
+    check_status(copy->common_, "copy of a symbolic analysis");
+    copy->nonzeros = nonzeros;
+    copy->flops = flops;
+    return copy;
+  }
+
+  void factorize(double* values) override {
+    cholmod_sparse B = lower(values);
+    Api::factorize(&B, factor_, &common_);
+    if (common_.status == CHOLMOD_NOT_POSDEF)
+      throw NumericalError("matrix is not positive definite (CHOLMOD stopped at column " +
+                           std::to_string(factor_->minor) + ")");
+    check_status(common_, "numeric factorization");
+  }
+
+  void solve(double* z) override {
+    if (factor_->is_super) {
+      supernodal_solve().solve(static_cast<const double*>(factor_->x), z);
+      return;
+    }
+    const size_t n = factor_->n;
+    if (!rhs_) rhs_ = Api::allocate_dense(n, 1, n, CHOLMOD_REAL, &common_);
+    std::copy(z, z + n, static_cast<double*>(rhs_->x));
+    if (!Api::solve2(CHOLMOD_A, factor_, rhs_, nullptr, &solution_, nullptr, &workspace_y_, &workspace_e_, &common_))
+      check_status(common_, "solve");
+    const double* x = static_cast<const double*>(solution_->x);
+    std::copy(x, x + n, z);
+  }
+
+  bool supernodal() const override { return factor_->is_super; }
+  bool factored() const override { return factor_->xtype != CHOLMOD_PATTERN; }
+  double serial_solve_share() override { return factor_->is_super ? supernodal_solve().top_share() : 1.0; }
+  int index_bits() const override { return 8 * static_cast<int>(sizeof(Index)); }
+
+ private:
+  // The pattern's indices as CHOLMOD's integers: the int arrays themselves,
+  // or 64-bit copies (shared by copies of the analysis).
+  void set_pattern(const std::shared_ptr<const PermutedPattern>& pattern) {
+    pattern_ = pattern;
+    if constexpr (!std::is_same_v<Index, int>) {
+      column_start_ = std::make_shared<std::vector<Index>>(pattern->lower_column_start.begin(),
+                                                           pattern->lower_column_start.end());
+      row_ = std::make_shared<std::vector<Index>>(pattern->lower_row.begin(), pattern->lower_row.end());
+    }
   }
 
   // CHOLMOD reads the indices only (const_cast: its structs are not const).
-  cholmod_sparse lower_view() {
-    const int n = static_cast<int>(pattern->permutation.size());
-    cholmod_sparse A = view(n, const_cast<int*>(pattern->lower_column_start.data()),
-                            const_cast<int*>(pattern->lower_row.data()), lower_value.data(), -1);
-    if (lower_value.empty()) A.xtype = CHOLMOD_PATTERN;
-    return A;
-  }
-
-  void check(const char* what) {
-    if (common.status < CHOLMOD_OK)
-      throw NumericalError(std::string("CHOLMOD ") + what + " failed (status " + std::to_string(common.status) + ")");
+  cholmod_sparse lower(double* values) const {
+    const Index n = static_cast<Index>(pattern_->permutation.size());
+    if constexpr (std::is_same_v<Index, int>)
+      return sparse_view<Index>(n, const_cast<int*>(pattern_->lower_column_start.data()),
+                                const_cast<int*>(pattern_->lower_row.data()), values, -1);
+    else
+      return sparse_view<Index>(n, column_start_->data(), row_->data(), values, -1);
   }
 
   // Our supernodal triangular solves (solvers/supernodal_solve.h), set up
-  // for the factor's structure at the first solve after an analysis.
-  SupernodalSolve& supernodal_solve() {
-    if (!supernodal_solver)
-      supernodal_solver = std::make_unique<SupernodalSolve>(SupernodalStructure{
-          static_cast<int>(factor->nsuper), static_cast<const int*>(factor->super), static_cast<const int*>(factor->pi),
-          static_cast<const int*>(factor->px), static_cast<const int*>(factor->s)});
-    return *supernodal_solver;
+  // for the factor's structure at the first solve.
+  SupernodalSolve<Index>& supernodal_solve() {
+    if (!supernodal_solver_)
+      supernodal_solver_ = std::make_unique<SupernodalSolve<Index>>(SupernodalStructure<Index>{
+          static_cast<Index>(factor_->nsuper), static_cast<const Index*>(factor_->super),
+          static_cast<const Index*>(factor_->pi), static_cast<const Index*>(factor_->px),
+          static_cast<const Index*>(factor_->s)});
+    return *supernodal_solver_;
+  }
+
+  cholmod_common common_;
+  cholmod_factor* factor_ = nullptr;
+  std::shared_ptr<const PermutedPattern> pattern_;
+  std::shared_ptr<std::vector<Index>> column_start_, row_;  // 64-bit copies (long only)
+  cholmod_dense* rhs_ = nullptr;
+  cholmod_dense* solution_ = nullptr;
+  cholmod_dense* workspace_y_ = nullptr;
+  cholmod_dense* workspace_e_ = nullptr;
+  std::unique_ptr<SupernodalSolve<Index>> supernodal_solver_;
+};
+
+}  // namespace
+
+struct SparseCholesky::Impl {
+  cholmod_common common;  // the ordering's (int: the graph of the blocks is small)
+  std::shared_ptr<const PermutedPattern> pattern;
+  std::unique_ptr<PermutedFactor> factor;
+  std::vector<double> lower_value;  // empty until the first factorization
+  std::vector<double> permuted_rhs;
+  bool wide_indices = false;        // tests: 64-bit indices from the start
+
+  Impl() {
+    cholmod_start(&common);
+    common.print = 0;
+  }
+  ~Impl() {
+    factor.reset();
+    cholmod_finish(&common);
   }
 
   // The upper-triangular pattern of the graph whose nodes are the blocks of
@@ -181,13 +325,17 @@ SparseCholesky::~SparseCholesky() = default;
 
 bool SparseCholesky::analyzed() const { return impl_->factor != nullptr; }
 
-bool SparseCholesky::supernodal() const { return analyzed() && impl_->factor->is_super; }
+bool SparseCholesky::supernodal() const { return analyzed() && impl_->factor->supernodal(); }
 
-double SparseCholesky::factor_nonzeros() const { return impl_->common.lnz; }
+double SparseCholesky::factor_nonzeros() const { return analyzed() ? impl_->factor->nonzeros : 0; }
 
-double SparseCholesky::factor_flops() const { return impl_->common.fl; }
+double SparseCholesky::factor_flops() const { return analyzed() ? impl_->factor->flops : 0; }
 
-double SparseCholesky::serial_solve_share() { return supernodal() ? impl_->supernodal_solve().top_share() : 1.0; }
+double SparseCholesky::serial_solve_share() { return analyzed() ? impl_->factor->serial_solve_share() : 1.0; }
+
+int SparseCholesky::index_bits() const { return analyzed() ? impl_->factor->index_bits() : 0; }
+
+void SparseCholesky::use_64_bit_indices(bool on) { impl_->wide_indices = on; }
 
 void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block_size) {
   if (!upper.isCompressed() || upper.rows() != upper.cols())
@@ -195,8 +343,7 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
   if (block_size < 1 || upper.rows() % block_size != 0)
     throw NumericalError("SparseCholesky: block size must divide the matrix size");
   Impl& m = *impl_;
-  cholmod_free_factor(&m.factor, &m.common);
-  m.supernodal_solver.reset();
+  m.factor.reset();
   const int n = static_cast<int>(upper.rows());
 
   // 1. CHOLMOD's own choice of fill-reducing ordering (AMD, or METIS when
@@ -208,10 +355,9 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
   std::vector<int> block_start, block_row;
   m.block_pattern(upper, block_size, &block_start, &block_row);
   const int blocks = n / block_size;
-  cholmod_sparse A = Impl::view(blocks, block_start.data(), block_row.data(), nullptr, 1);
-  A.xtype = CHOLMOD_PATTERN;
+  cholmod_sparse A = sparse_view<int>(blocks, block_start.data(), block_row.data(), nullptr, 1);
   cholmod_factor* ordering = cholmod_analyze(&A, &m.common);
-  m.check("symbolic analysis");
+  check_status(m.common, "symbolic analysis");
   const int* perm = static_cast<const int*>(ordering->Perm);
   std::vector<int> permutation(n);
   for (int a = 0; a < blocks; ++a)
@@ -219,32 +365,26 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
   cholmod_free_factor(&ordering, &m.common);
 
   // 2. The permuted matrix, analyzed again in its natural order (the
-  //    postorder is already part of the permutation).
+  //    postorder is already part of the permutation), with CHOLMOD's int
+  //    indices while the factor's entries fit them and its 64-bit ones
+  //    (cholmod_l_*) from 2^31 entries on (the same arithmetic: same bits).
   m.pattern = Impl::permuted_lower(upper, std::move(permutation));
   m.lower_value.clear();
-  m.common.nmethods = 1;
-  m.common.method[0].ordering = CHOLMOD_NATURAL;
-  m.common.postorder = 0;
-  cholmod_sparse B = m.lower_view();
-  m.factor = cholmod_analyze(&B, &m.common);
-  m.check("symbolic analysis of the permuted matrix");
+  if (!m.wide_indices) {
+    m.factor = std::make_unique<CholmodFactor<int>>();
+    if (m.factor->analyze(m.pattern)) return;
+  }
+  m.factor = std::make_unique<CholmodFactor<Long>>();
+  if (!m.factor->analyze(m.pattern))
+    throw NumericalError("CHOLMOD symbolic analysis failed: the factor is too large even for 64-bit indices");
 }
 
 void SparseCholesky::copy_analysis(const SparseCholesky& other) {
   const Impl& from = *other.impl_;
-  if (!other.analyzed() || from.factor->xtype != CHOLMOD_PATTERN)
+  if (!other.analyzed() || from.factor->factored())
     throw NumericalError("SparseCholesky::copy_analysis: the source must be analyzed and not factored");
   Impl& m = *impl_;
-  cholmod_free_factor(&m.factor, &m.common);
-  m.supernodal_solver.reset();
-  // The settings analyze() leaves, so that factorize() runs as after it.
-  m.common.nmethods = 1;
-  m.common.method[0].ordering = CHOLMOD_NATURAL;
-  m.common.postorder = 0;
-  m.common.lnz = from.common.lnz;
-  m.common.fl = from.common.fl;
-  m.factor = cholmod_copy_factor(from.factor, &m.common);
-  m.check("copy of a symbolic analysis");
+  m.factor = from.factor->copy_analysis();
   m.pattern = from.pattern;
   m.lower_value.clear();
 }
@@ -258,33 +398,19 @@ void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& upper) {
   m.lower_value.resize(value_map.size());
   const double* values = upper.valuePtr();
   for (std::size_t k = 0; k < value_map.size(); ++k) m.lower_value[value_map[k]] = values[k];
-  cholmod_sparse B = m.lower_view();
-  cholmod_factorize(&B, m.factor, &m.common);
-  if (m.common.status == CHOLMOD_NOT_POSDEF)
-    throw NumericalError("matrix is not positive definite (CHOLMOD stopped at column " +
-                         std::to_string(m.factor->minor) + ")");
-  m.check("numeric factorization");
+  m.factor->factorize(m.lower_value.data());
 }
 
 void SparseCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd* x) {
-  if (!analyzed()) throw NumericalError("SparseCholesky::solve called before factorize");
+  if (!analyzed() || !impl_->factor->factored())
+    throw NumericalError("SparseCholesky::solve called before factorize");
   Impl& m = *impl_;
   const auto n = static_cast<size_t>(b.size());
   const std::vector<int>& permutation = m.pattern->permutation;
   if (n != permutation.size()) throw NumericalError("SparseCholesky::solve: right-hand side has the wrong size");
   m.permuted_rhs.resize(n);
   for (size_t a = 0; a < n; ++a) m.permuted_rhs[a] = b[permutation[a]];  // c = P b
-  if (m.factor->is_super) {
-    m.supernodal_solve().solve(static_cast<const double*>(m.factor->x), m.permuted_rhs.data());
-  } else {
-    if (!m.rhs) m.rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &m.common);
-    std::copy(m.permuted_rhs.begin(), m.permuted_rhs.end(), static_cast<double*>(m.rhs->x));
-    if (!cholmod_solve2(CHOLMOD_A, m.factor, m.rhs, nullptr, &m.solution, nullptr, &m.workspace_y, &m.workspace_e,
-                        &m.common))
-      m.check("solve");
-    const double* z = static_cast<const double*>(m.solution->x);
-    std::copy(z, z + n, m.permuted_rhs.begin());
-  }
+  m.factor->solve(m.permuted_rhs.data());
   x->resize(b.size());
   for (size_t a = 0; a < n; ++a) (*x)[permutation[a]] = m.permuted_rhs[a];  // x = P^T z
 }

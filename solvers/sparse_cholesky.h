@@ -2,7 +2,10 @@
 // Sparse Cholesky factorization of a symmetric positive definite matrix with
 // CHOLMOD (supernodal where it pays), hidden behind a small class. The
 // symbolic analysis (fill-reducing ordering, elimination tree) is done once
-// for a sparsity pattern; each factorize() is numeric only (§5.2).
+// for a sparsity pattern; each factorize() is numeric only (§5.2). CHOLMOD's
+// 32-bit integers serve while the factor has fewer than 2^31 entries; past
+// that (CHOLMOD reports its analysis too large for them) the analysis is
+// redone with its 64-bit interface (cholmod_l_*): the same arithmetic.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
@@ -41,6 +44,10 @@ class SparseCholesky {
   double factor_nonzeros() const;
   // Floating-point operations of one numeric factorization.
   double factor_flops() const;
+  // 32 or 64: CHOLMOD's integer width chosen by the last analysis (0 before).
+  int index_bits() const;
+  // Tests: analyze with the 64-bit interface whatever the factor's size.
+  void use_64_bit_indices(bool on);
   // Share of the supernodal factor's entries whose triangular solves run on
   // one core (the top of the elimination tree; the rest is split between two
   // cores, see solvers/supernodal_solve.h). 1 for a simplicial factor.

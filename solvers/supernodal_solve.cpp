@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cholmod.h>  // SuiteSparse_long
 #include <numeric>
 
 namespace akvf {
@@ -16,9 +17,12 @@ struct BlockShape {
   int first_column, columns, rows;
 };
 
-BlockShape shape(const SupernodalStructure& s, int node) {
-  return {s.first_column[node], s.first_column[node + 1] - s.first_column[node],
-          s.pattern_start[node + 1] - s.pattern_start[node]};
+// Supernode sizes fit an int whatever the index width (a supernode's block
+// has rows x columns entries, far fewer than 2^31).
+template <class Index>
+BlockShape shape(const SupernodalStructure<Index>& s, int node) {
+  return {static_cast<int>(s.first_column[node]), static_cast<int>(s.first_column[node + 1] - s.first_column[node]),
+          static_cast<int>(s.pattern_start[node + 1] - s.pattern_start[node])};
 }
 
 // Splits `roots` (subtree work w) into two groups, longest first into the
@@ -39,12 +43,13 @@ double balance(const std::vector<int>& roots, const std::vector<double>& w, std:
 
 }  // namespace
 
-SupernodalSolve::SupernodalSolve(const SupernodalStructure& structure) : s_(structure) {
-  const int n_super = s_.supernodes;
-  const int n = n_super > 0 ? s_.first_column[n_super] : 0;
+template <class Index>
+SupernodalSolve<Index>::SupernodalSolve(const SupernodalStructure<Index>& structure) : s_(structure) {
+  const int n_super = static_cast<int>(s_.supernodes);
+  const int n = n_super > 0 ? static_cast<int>(s_.first_column[n_super]) : 0;
   std::vector<int> column_node(n);
   for (int node = 0; node < n_super; ++node)
-    for (int j = s_.first_column[node]; j < s_.first_column[node + 1]; ++j) column_node[j] = node;
+    for (Index j = s_.first_column[node]; j < s_.first_column[node + 1]; ++j) column_node[j] = node;
 
   // The supernodal elimination tree (parents have larger indices), the work
   // of each supernode (entries of its block) and of each subtree.
@@ -57,7 +62,7 @@ SupernodalSolve::SupernodalSolve(const SupernodalStructure& structure) : s_(stru
     work[node] = 0.5 * b.columns * (b.columns + 1) + double(b.rows - b.columns) * b.columns;
     subtree[node] += work[node];
     if (b.rows > b.columns) {
-      parent[node] = column_node[s_.pattern[s_.pattern_start[node] + b.columns]];
+      parent[node] = column_node[static_cast<std::size_t>(s_.pattern[s_.pattern_start[node] + b.columns])];
       subtree[parent[node]] += subtree[node];
       children[parent[node]].push_back(node);
     } else {
@@ -107,7 +112,8 @@ SupernodalSolve::SupernodalSolve(const SupernodalStructure& structure) : s_(stru
 }
 
 // L y = z over one group's supernodes (group 2 = the top).
-void SupernodalSolve::forward(const double* values, int group, double* z) {
+template <class Index>
+void SupernodalSolve<Index>::forward(const double* values, int group, double* z) {
   const std::vector<int>& order = group == kTop ? top_ : group_[group];
   std::vector<double>& scratch = scratch_[group == kGroup1 ? 1 : 0];
   for (int node : order) {
@@ -116,11 +122,11 @@ void SupernodalSolve::forward(const double* values, int group, double* z) {
     Eigen::Map<Eigen::VectorXd> y(z + b.first_column, b.columns);
     L.topRows(b.columns).triangularView<Eigen::Lower>().solveInPlace(y);
     const int below_count = b.rows - b.columns;
-    const int* below = s_.pattern + s_.pattern_start[node] + b.columns;
+    const Index* below = s_.pattern + s_.pattern_start[node] + b.columns;
     Eigen::Map<Eigen::VectorXd> update(scratch.data(), below_count);
     update.noalias() = L.bottomRows(below_count) * y;
     for (int i = 0; i < below_count; ++i) {
-      const int row = below[i];
+      const Index row = below[i];
       if (group == kGroup1 && column_owner_[row] == kTop)
         top_updates_[row] += update[i];  // group 0 may be writing z[row] now
       else
@@ -130,7 +136,8 @@ void SupernodalSolve::forward(const double* values, int group, double* z) {
 }
 
 // L^T x = y over supernodes `order`, last first.
-void SupernodalSolve::backward(const double* values, const std::vector<int>& order, double* z,
+template <class Index>
+void SupernodalSolve<Index>::backward(const double* values, const std::vector<int>& order, double* z,
                                std::vector<double>* scratch) const {
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     const int node = *it;
@@ -138,7 +145,7 @@ void SupernodalSolve::backward(const double* values, const std::vector<int>& ord
     const Block L(values + s_.value_start[node], b.rows, b.columns, Eigen::OuterStride<>(b.rows));
     Eigen::Map<Eigen::VectorXd> x(z + b.first_column, b.columns);
     const int below_count = b.rows - b.columns;
-    const int* below = s_.pattern + s_.pattern_start[node] + b.columns;
+    const Index* below = s_.pattern + s_.pattern_start[node] + b.columns;
     Eigen::Map<Eigen::VectorXd> known(scratch->data(), below_count);
     for (int i = 0; i < below_count; ++i) known[i] = z[below[i]];
     x.noalias() -= L.bottomRows(below_count).transpose() * known;
@@ -146,10 +153,11 @@ void SupernodalSolve::backward(const double* values, const std::vector<int>& ord
   }
 }
 
-void SupernodalSolve::solve(const double* values, double* z) {
+template <class Index>
+void SupernodalSolve<Index>::solve(const double* values, double* z) {
   tbb::parallel_invoke([&] { forward(values, kGroup0, z); }, [&] { forward(values, kGroup1, z); });
   for (int node : top_)
-    for (int j = s_.first_column[node]; j < s_.first_column[node + 1]; ++j) {
+    for (Index j = s_.first_column[node]; j < s_.first_column[node + 1]; ++j) {
       z[j] -= top_updates_[j];
       top_updates_[j] = 0;
     }
@@ -158,5 +166,8 @@ void SupernodalSolve::solve(const double* values, double* z) {
   tbb::parallel_invoke([&] { backward(values, group_[0], z, &scratch_[0]); },
                        [&] { backward(values, group_[1], z, &scratch_[1]); });
 }
+
+template class SupernodalSolve<int>;
+template class SupernodalSolve<SuiteSparse_long>;
 
 }  // namespace akvf

@@ -16,21 +16,24 @@
 namespace akvf {
 
 // The supernodal structure of a factor, as CHOLMOD stores it (super, pi, px,
-// s); the values are passed to solve(), as they change with each numeric
-// factorization.
+// s), with CHOLMOD's integers (int, or SuiteSparse_long for factors whose
+// entries pass 2^31); the values are passed to solve(), as they change with
+// each numeric factorization.
+template <class Index>
 struct SupernodalStructure {
-  int supernodes = 0;
-  const int* first_column = nullptr;   // super: supernode s has columns [first_column[s], first_column[s + 1])
-  const int* pattern_start = nullptr;  // pi: its row indices are pattern[pattern_start[s] .. pattern_start[s + 1])
-  const int* value_start = nullptr;    // px: its column-major block starts at values[value_start[s]]
-  const int* pattern = nullptr;        // s
+  Index supernodes = 0;
+  const Index* first_column = nullptr;   // super: supernode s has columns [first_column[s], first_column[s + 1])
+  const Index* pattern_start = nullptr;  // pi: its row indices are pattern[pattern_start[s] .. pattern_start[s + 1])
+  const Index* value_start = nullptr;    // px: its column-major block starts at values[value_start[s]]
+  const Index* pattern = nullptr;        // s
 };
 
+template <class Index>
 class SupernodalSolve {
  public:
   SupernodalSolve() = default;
   // Splits the elimination tree (the structure must outlive this object).
-  explicit SupernodalSolve(const SupernodalStructure& structure);
+  explicit SupernodalSolve(const SupernodalStructure<Index>& structure);
 
   // z = (L L^T)^-1 z, with L's values in CHOLMOD's supernodal layout.
   void solve(const double* values, double* z);
@@ -43,7 +46,7 @@ class SupernodalSolve {
   void forward(const double* values, int group, double* z);
   void backward(const double* values, const std::vector<int>& order, double* z, std::vector<double>* scratch) const;
 
-  SupernodalStructure s_;
+  SupernodalStructure<Index> s_;
   std::vector<int> group_[2], top_;  // supernodes, in increasing order
   std::vector<char> column_owner_;   // Owner of each column
   std::vector<double> scratch_[2];   // rows below a diagonal block, per group

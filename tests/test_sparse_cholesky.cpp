@@ -78,3 +78,50 @@ TEST_CASE("the supernodal solve splits the elimination tree across two cores and
   const Eigen::SparseMatrix<double> A = K.upper().selfadjointView<Eigen::Upper>();
   CHECK((A * solutions.front() - b).norm() <= 1e-10 * b.norm());
 }
+
+TEST_CASE("CHOLMOD's 64-bit interface gives the 32-bit interface's bits, analyzed or copied") {
+  for (const int nx : {6, 70}) {  // simplicial and supernodal factors
+    CAPTURE(nx);
+    const akvf::ElementMatrix2D K = shifted_killing(nx);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), -1.0, 2.0).array().sin();
+    akvf::SparseCholesky narrow, wide, copied;
+    wide.use_64_bit_indices(true);
+    narrow.analyze(K.upper(), 2);
+    wide.analyze(K.upper(), 2);
+    copied.copy_analysis(wide);
+    CHECK(narrow.index_bits() == 32);  // a small factor keeps 32-bit indices
+    CHECK(wide.index_bits() == 64);
+    CHECK(copied.index_bits() == 64);
+    CHECK(wide.supernodal() == narrow.supernodal());
+    CHECK(wide.factor_nonzeros() == narrow.factor_nonzeros());
+    Eigen::VectorXd x_narrow, x_wide, x_copied;
+    for (akvf::SparseCholesky* cholesky : {&narrow, &wide, &copied}) cholesky->factorize(K.upper());
+    narrow.solve(b, &x_narrow);
+    wide.solve(b, &x_wide);
+    copied.solve(b, &x_copied);
+    CHECK(x_wide == x_narrow);
+    CHECK(x_copied == x_narrow);
+    const Eigen::SparseMatrix<double> A = K.upper().selfadjointView<Eigen::Upper>();
+    CHECK((A * x_wide - b).norm() <= 1e-10 * b.norm());
+  }
+}
+
+TEST_CASE("a kept analysis is shared, and solving before a factorization is refused") {
+  const akvf::ElementMatrix2D K = shifted_killing(20);
+  akvf::SparseCholesky analyzed, copy;
+  analyzed.analyze(K.upper(), 2);
+  copy.copy_analysis(analyzed);
+  Eigen::VectorXd x;
+  CHECK(akvf::test::error_message([&] { copy.solve(Eigen::VectorXd::Ones(K.upper().rows()), &x); })
+            .find("before factorize") != std::string::npos);
+  copy.factorize(K.upper());
+  // The source stays an unfactored analysis that can be copied again.
+  akvf::SparseCholesky again;
+  again.copy_analysis(analyzed);
+  again.factorize(K.upper());
+  Eigen::VectorXd x_copy, x_again;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), 0.0, 1.0);
+  copy.solve(b, &x_copy);
+  again.solve(b, &x_again);
+  CHECK(x_copy == x_again);
+}
