@@ -5,6 +5,7 @@
 #ifdef AKVF_WITH_HYPRE
 #include <HYPRE.h>
 #include <HYPRE_parcsr_ls.h>
+#include <malloc.h>
 #include <mpi.h>
 
 #include <cstdlib>
@@ -19,6 +20,25 @@ namespace akvf {
 #ifdef AKVF_WITH_HYPRE
 
 namespace {
+
+// Debian's libsuperlu_dist, which hypre brings into the process, switches
+// glibc's allocator to never map large blocks and never trim the heap in a
+// load-time constructor (mallopt(M_MMAP_MAX, 0), mallopt(M_TRIM_THRESHOLD,
+// -1): seen by interposing mallopt). Memory freed by one phase then stays
+// resident for good: at 10.2 M faces the Tutte solve's freed 8 GB sat under
+// the first factorization's 11 GB. Shared libraries' constructors run
+// before the initializers of what links them, so this one runs after it and
+// restores mapping for large blocks: allocations of 32 MB and more (glibc's
+// largest dynamic threshold; the matrices, factors and vectors of large
+// meshes) are mapped and returned to the system when freed, and the heap is
+// trimmed beyond twice that, as glibc's dynamic rule does.
+const bool large_blocks_mapped = [] {
+  constexpr int kThreshold = 32 << 20;
+  mallopt(M_MMAP_MAX, 65536);  // glibc's default
+  mallopt(M_MMAP_THRESHOLD, kThreshold);
+  mallopt(M_TRIM_THRESHOLD, 2 * kThreshold);
+  return true;
+}();
 
 bool mpi_finalized() {
   int finalized = 0;
