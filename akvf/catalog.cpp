@@ -195,10 +195,10 @@ void require_linear_solver(const std::string& name) {
     throw OptionsError("unknown linear solver '" + name + "' (valid: auto, cholmod, amg)");
 }
 
-LinearSolver linear_solver_for(const std::string& name, long unknowns) {
+LinearSolver linear_solver_for(const std::string& name) {
   require_linear_solver(name);
   if (name == "amg") return LinearSolver::kAmg;
-  if (name == "auto" && AlgebraicMultigrid::available() && unknowns >= kAmgMinimumUnknowns) return LinearSolver::kAmg;
+  if (name == "auto" && AlgebraicMultigrid::available()) return LinearSolver::kAuto;
   return LinearSolver::kCholmod;
 }
 

@@ -68,15 +68,13 @@ void require_solver(const std::string& name);
 void require_method(const std::string& name);
 
 // --linear-solver: "cholmod" (sparse Cholesky), "amg" (CG with algebraic
-// multigrid, solvers/algebraic_multigrid.h) or "auto": amg from
-// kAmgMinimumUnknowns unknowns on, when this build has it. OptionsError for
-// any other name. CHOLMOD was still the faster at the largest mesh measured
-// (horse_b x64, 2.55 M unknowns: docs/performance.md, "Linear solvers"), so
-// the switch sits above it, where CHOLMOD's fill (5.2 GB peak at 2.5 M faces,
-// growing faster than linearly) nears this machine's memory.
-inline constexpr long kAmgMinimumUnknowns = 4194304;  // 2^22
+// multigrid, solvers/algebraic_multigrid.h) or "auto": CHOLMOD unless its
+// factor, known from the symbolic analysis, would take more than half the
+// physical memory, then multigrid (LinearSolver::kAuto,
+// preconditioners/factored_preconditioner.h; CHOLMOD when this build has no
+// multigrid). OptionsError for any other name.
 void require_linear_solver(const std::string& name);
-LinearSolver linear_solver_for(const std::string& name, long unknowns);
+LinearSolver linear_solver_for(const std::string& name);
 
 // The registry tag of preconditioners that AQP's momentum accompanies by
 // default (the Laplacian, as AQP pairs them).

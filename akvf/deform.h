@@ -34,7 +34,7 @@ struct DeformOptions {
   double grad_tol = 1e-3;
   int max_iters = 100;  // Figure 8 runs 100 iterations
   double time_limit = std::numeric_limits<double>::infinity();
-  std::string linear_solver = "auto";  // cholmod, amg (algebraic multigrid) or auto (amg on large meshes)
+  std::string linear_solver = "auto";  // cholmod, amg (algebraic multigrid) or auto (amg if the factor would not fit)
   std::string eigen_filter = "clamp";  // projected Newton's element Hessians: clamp, abs or adaptive
   int threads = 0;                     // 0 = all cores
   // As ParameterizeOptions::callbacks; x is interleaved x0 y0 z0 x1 ... at

@@ -16,9 +16,9 @@ namespace {
 // §6.2 states it (K + c I, no constraint Hessian, no energy scale) when asked
 // and the constraints are soft. The constraints reach every preconditioner
 // through the objective (DistortionObjective::added_hessian_diagonal).
-PreconditionerSettings3D preconditioner_settings(const DeformConfig& config, long unknowns) {
+PreconditionerSettings3D preconditioner_settings(const DeformConfig& config) {
   PreconditionerSettings3D settings = config.preconditioner_settings;
-  settings.set_linear_solver(linear_solver_for(config.linear_solver, unknowns));
+  settings.set_linear_solver(linear_solver_for(config.linear_solver));
   settings.akvf_newton_switch.backtracking_factor = config.line_search_settings.rho;
   if (config.akvf_as_written && !config.hard_constraints) {
     settings.akvf.include_problem_hessian = false;
@@ -128,7 +128,7 @@ DeformRun run_deformation(const DeformSetup& setup, const PositionConstraints& i
     // (fixed_vertices_preconditioner.h).
     energy.set_added_hessian_diagonal(1e10 * (Eigen::VectorXd::Ones(rest.size()) - objective.free_mask()));
     FixedVerticesPreconditioner preconditioner(
-        preconditioners_3d().create(config.preconditioner, energy, preconditioner_settings(config, rest.size())),
+        preconditioners_3d().create(config.preconditioner, energy, preconditioner_settings(config)),
         objective.free_mask());
     run.result = minimize(objective, preconditioner, *line_search, start, optimizer, callbacks);
     run.preconditioner_report = preconditioner.report();
@@ -139,7 +139,7 @@ DeformRun run_deformation(const DeformSetup& setup, const PositionConstraints& i
   const SoftConstrainedObjective objective(energy, 3, constraints, config.weight);
   energy.set_added_hessian_diagonal(objective.hessian_diagonal());  // the penalty's: 2 w on constrained coordinates
   auto preconditioner =
-      preconditioners_3d().create(config.preconditioner, energy, preconditioner_settings(config, rest.size()));
+      preconditioners_3d().create(config.preconditioner, energy, preconditioner_settings(config));
   run.result = minimize(objective, *preconditioner, *line_search, rest, optimizer, callbacks);
   run.preconditioner_report = preconditioner->report();
   run.preconditioner_statistics = preconditioner->statistics();

@@ -32,7 +32,7 @@ struct DeformConfig {
   // AKVF exactly as §6.2 states it: K + c I, without the constraints'
   // Hessian and without the energy scale (docs/design.md measures both).
   bool akvf_as_written = false;
-  std::string linear_solver = "auto";  // resolved per mesh by linear_solver_for (catalog.h)
+  std::string linear_solver = "auto";  // auto: chosen from the factor's size (catalog.h, linear_solver_for)
   int threads = 0;                     // worker threads during the run; 0 = all cores
   OptimizerOptions optimizer = [] {
     OptimizerOptions o;

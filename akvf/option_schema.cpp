@@ -128,8 +128,8 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
                                     &O::time_limit, "> 0 seconds", [](double t) { return t > 0; }));
   fields->push_back(text_field<O>("linear_solver", "linear-solver", "auto|cholmod|amg",
                                   "linear systems: cholmod (sparse Cholesky), amg (CG with hypre's algebraic "
-                                  "multigrid, for millions of faces), auto (amg from " +
-                                      std::to_string(kAmgMinimumUnknowns) + " unknowns)",
+                                  "multigrid), auto (cholmod unless its factor would take more than half the "
+                                  "memory, then amg)",
                                   &O::linear_solver, [](const O& o) { require_linear_solver(o.linear_solver); }));
   fields->push_back(text_field<O>("eigen_filter", "eigen-filter", "clamp|abs|adaptive",
                                   "projected Newton (newton, akvf-newton): the element Hessians' negative "

@@ -109,7 +109,7 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
     return run;
   }
   PreconditionerSettings2D settings = config.preconditioner_settings;
-  settings.set_linear_solver(linear_solver_for(config.linear_solver, setup.x0.size()));
+  settings.set_linear_solver(linear_solver_for(config.linear_solver));
   settings.akvf_newton_switch.backtracking_factor = config.line_search_settings.rho;
   auto preconditioner = preconditioners_2d().create(config.preconditioner, *setup.objective, settings);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);

@@ -42,7 +42,7 @@ struct ParamConfig {
   // initial map (symmetric Dirichlet with AKVF to gradient 1e-3 first).
   int warm_start_max_iterations = 1000;
   // Worker threads (TBB and OpenBLAS) during the run; 0 = all cores.
-  std::string linear_solver = "auto";  // resolved per mesh by linear_solver_for (catalog.h)
+  std::string linear_solver = "auto";  // auto: chosen from the factor's size (catalog.h, linear_solver_for)
   int threads = 0;
 };
 

@@ -45,7 +45,7 @@ struct ParameterizeOptions {
   int max_iters = 1000;                        // >= 0
   double time_limit = std::numeric_limits<double>::infinity();  // optimizer seconds, > 0
   int warm_start_iters = 1000;         // limit of the symmetric Dirichlet warm start of overflowing energies
-  std::string linear_solver = "auto";  // cholmod, amg (algebraic multigrid) or auto (amg on large meshes)
+  std::string linear_solver = "auto";  // cholmod, amg (algebraic multigrid) or auto (amg if the factor would not fit)
   std::string eigen_filter = "clamp";  // projected Newton's element Hessians: clamp, abs or adaptive
   int threads = 0;                     // worker threads for this call; 0 = all cores
   // Called after every iteration (row 0 = the initial map) with the summary

@@ -1,5 +1,7 @@
 #include "preconditioners/factored_preconditioner.h"
 
+#include <unistd.h>
+
 #include <Eigen/IterativeLinearSolvers>
 #include <cmath>
 
@@ -13,6 +15,10 @@ namespace {
 FactorOptions with_added_diagonal(FactorOptions options, const Eigen::VectorXd& added) {
   if (options.extra_diagonal.size() == 0) options.extra_diagonal = added;
   return options;
+}
+
+double physical_memory_bytes() {
+  return static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
 }
 
 }  // namespace
@@ -46,7 +52,12 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
   if (!(options_.cg_tolerance >= 0 && options_.cg_tolerance < 1)) throw OptionsError("CG tolerance must be in [0, 1)");
   if (options_.cg_max_iterations < 1) throw OptionsError("CG needs at least one iteration");
   if (options_.reuse_max_cg < 1) throw OptionsError("factorization reuse needs at least one CG iteration");
-  if (options_.linear_solver == LinearSolver::kAmg) {
+  if (!(options_.auto_factor_bytes >= 0)) throw OptionsError("the automatic solver choice's factor limit must be >= 0");
+  // Nothing to choose without multigrid, or with the Jacobi CG solve.
+  if (options_.linear_solver == LinearSolver::kAuto &&
+      (!AlgebraicMultigrid::available() || options_.cg_tolerance > 0))
+    options_.linear_solver = LinearSolver::kCholmod;
+  if (options_.linear_solver == LinearSolver::kAmg || options_.linear_solver == LinearSolver::kAuto) {
     AlgebraicMultigrid::require_available();
     if (!(options_.amg_tolerance > 0 && options_.amg_tolerance < 1))
       throw OptionsError("the multigrid solve's tolerance must be in (0, 1)");
@@ -83,7 +94,21 @@ std::string FactoredPreconditioner<D>::report() const {
 }
 
 template <int D>
+void FactoredPreconditioner<D>::choose_linear_solver() {
+  analyze();
+  const double limit = options_.auto_factor_bytes > 0 ? options_.auto_factor_bytes : 0.5 * physical_memory_bytes();
+  if (cholesky_.factor_bytes() <= limit) {
+    options_.linear_solver = LinearSolver::kCholmod;
+    return;
+  }
+  options_.linear_solver = LinearSolver::kAmg;
+  if (options_.analysis_cache) options_.analysis_cache->forget(matrix_.upper(), D);
+  cholesky_.clear();
+}
+
+template <int D>
 void FactoredPreconditioner<D>::update(const OptimizationState& state) {
+  if (options_.linear_solver == LinearSolver::kAuto) choose_linear_solver();
   null_basis_ = component_vertices_ ? ComponentMotions(D, component_vertices_, state.x,
                                                        [this](const Eigen::VectorXd& part) { return null_space(part); })
                                     : ComponentMotions(null_space(state.x));
@@ -99,7 +124,7 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
     return;
   }
   if (is_constant()) {
-    if (!cholesky_.analyzed()) {
+    if (!factored_) {
       assemble_shifted();
       factorize_current();
     }
@@ -111,7 +136,7 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   if (options_.cg_tolerance > 0) return;  // apply() runs CG on the assembled matrix
   // Without reuse, or before the first factorization, factor now (§5.2);
   // otherwise apply() decides whether the previous factor still serves.
-  if (options_.reuse_tolerance <= 0 || !cholesky_.analyzed()) {
+  if (options_.reuse_tolerance <= 0 || !factored_) {
     factorize_current();
   } else if (skip_reuse_ > 0) {
     --skip_reuse_;
@@ -120,15 +145,20 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
 }
 
 template <int D>
+void FactoredPreconditioner<D>::analyze() {
+  if (cholesky_.analyzed()) return;
+  const bool computed = options_.analysis_cache ? options_.analysis_cache->analyze(matrix_.upper(), D, &cholesky_)
+                                                : (cholesky_.analyze(matrix_.upper(), D), true);
+  if (computed) ++statistics_.symbolic_analyses;
+}
+
+template <int D>
 void FactoredPreconditioner<D>::factorize_current() {
-  if (!cholesky_.analyzed()) {
-    const bool computed = options_.analysis_cache ? options_.analysis_cache->analyze(matrix_.upper(), D, &cholesky_)
-                                                  : (cholesky_.analyze(matrix_.upper(), D), true);
-    if (computed) ++statistics_.symbolic_analyses;
-  }
+  analyze();
   cholesky_.factorize(matrix_.upper());
   factored_null_basis_ = null_basis_;
   factor_is_current_ = true;
+  factored_ = true;
   ++statistics_.factorizations;
 }
 

@@ -34,6 +34,15 @@
 // in docs/performance.md), else a new hierarchy is built. A solve that does
 // not reach the tolerance within amg_max_cg iterations still gives a descent
 // direction (its last CG iterate).
+//
+// Automatic choice (linear_solver = kAuto). CHOLMOD was the faster solver at
+// every size measured on the 2-core machine (docs/performance.md, up to
+// 10.2 M faces), so the only reason to leave it is memory: before the first
+// factorization the symbolic analysis tells the factor's size, and if it
+// exceeds auto_factor_bytes (default half the physical memory: the rest of a
+// run took at most half as much again as its factor, measured up to 10.2 M
+// faces, so the whole run then stays within about three quarters of the
+// memory) the multigrid path is taken instead, when this build has it.
 #include <functional>
 #include <memory>
 #include <string>
@@ -51,10 +60,13 @@ namespace akvf {
 // How P's systems are solved: CHOLMOD's sparse Cholesky, or conjugate
 // gradients preconditioned by algebraic multigrid (scales to millions of
 // unknowns: no fill).
-enum class LinearSolver { kCholmod, kAmg };
+enum class LinearSolver { kCholmod, kAmg, kAuto };
 
 struct FactorOptions {
   LinearSolver linear_solver = LinearSolver::kCholmod;
+  // kAuto: the largest factor (bytes) CHOLMOD may build; 0 = half the
+  // physical memory (module comment).
+  double auto_factor_bytes = 0;
   double amg_tolerance = 1e-2;  // relative residual of the multigrid-preconditioned CG
   int amg_max_cg = 200;
   // A hierarchy's setup in CG iterations, the reuse budget's slack: a setup
@@ -123,7 +135,10 @@ class FactoredPreconditioner : public Preconditioner {
  private:
   FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices, FactorOptions options,
                          const Matrix* same_elements);
+  void analyze();
   void factorize_current();
+  // kAuto: CHOLMOD or multigrid, from the analysis (module comment).
+  void choose_linear_solver();
   void solve_by_conjugate_gradients(const Eigen::VectorXd& g, Eigen::VectorXd* d);
   bool solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d);
   void solve_by_multigrid(const Eigen::VectorXd& g, Eigen::VectorXd* d);
@@ -151,6 +166,7 @@ class FactoredPreconditioner : public Preconditioner {
   std::shared_ptr<const std::vector<std::vector<int>>> component_vertices_;
   ComponentMotions null_basis_;           // at the current x
   ComponentMotions factored_null_basis_;  // at the last factorization
+  bool factored_ = false;  // a factor exists (from any earlier update)
   bool factor_is_current_ = false;
   int skip_reuse_ = 0;
   int failure_backoff_ = 1;

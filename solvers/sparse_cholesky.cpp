@@ -101,6 +101,7 @@ class PermutedFactor {
   virtual bool factored() const = 0;
   virtual double serial_solve_share() = 0;
   virtual int index_bits() const = 0;
+  virtual double bytes() const = 0;
   double nonzeros = 0, flops = 0;  // of the factor, from the analysis
 };
 
@@ -178,6 +179,14 @@ class CholmodFactor final : public PermutedFactor {
   bool factored() const override { return factor_->xtype != CHOLMOD_PATTERN; }
   double serial_solve_share() override { return factor_->is_super ? supernodal_solve().top_share() : 1.0; }
   int index_bits() const override { return 8 * static_cast<int>(sizeof(Index)); }
+  // A supernodal factor stores its supernodes' dense blocks (xsize values,
+  // zeros of the relaxed amalgamation included) and ssize row indices; a
+  // simplicial one a value and a row index per entry.
+  double bytes() const override {
+    if (factor_->is_super)
+      return 8.0 * static_cast<double>(factor_->xsize) + sizeof(Index) * static_cast<double>(factor_->ssize);
+    return (8.0 + sizeof(Index)) * nonzeros;
+  }
 
  private:
   // The pattern's indices as CHOLMOD's integers: the int arrays themselves,
@@ -332,6 +341,14 @@ double SparseCholesky::factor_nonzeros() const { return analyzed() ? impl_->fact
 double SparseCholesky::factor_flops() const { return analyzed() ? impl_->factor->flops : 0; }
 
 double SparseCholesky::serial_solve_share() { return analyzed() ? impl_->factor->serial_solve_share() : 1.0; }
+
+double SparseCholesky::factor_bytes() const { return analyzed() ? impl_->factor->bytes() : 0; }
+
+void SparseCholesky::clear() {
+  impl_->factor.reset();
+  impl_->pattern.reset();
+  std::vector<double>().swap(impl_->lower_value);
+}
 
 int SparseCholesky::index_bits() const { return analyzed() ? impl_->factor->index_bits() : 0; }
 

@@ -44,6 +44,11 @@ class SparseCholesky {
   double factor_nonzeros() const;
   // Floating-point operations of one numeric factorization.
   double factor_flops() const;
+  // Bytes the factor will take (values and row indices), known from the
+  // analysis before any numeric work.
+  double factor_bytes() const;
+  // Frees the analysis and the factor (analyzed() is false again).
+  void clear();
   // 32 or 64: CHOLMOD's integer width chosen by the last analysis (0 before).
   int index_bits() const;
   // Tests: analyze with the 64-bit interface whatever the factor's size.

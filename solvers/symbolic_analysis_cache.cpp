@@ -4,6 +4,19 @@
 
 namespace akvf {
 
+bool SymbolicAnalysisCache::Entry::matches(const Eigen::SparseMatrix<double>& upper, int size) const {
+  const Eigen::Index n = upper.outerSize();
+  return block_size == size && static_cast<Eigen::Index>(column_start.size()) == n + 1 &&
+         static_cast<Eigen::Index>(row.size()) == upper.nonZeros() &&
+         std::equal(column_start.begin(), column_start.end(), upper.outerIndexPtr()) &&
+         std::equal(row.begin(), row.end(), upper.innerIndexPtr());
+}
+
+void SymbolicAnalysisCache::forget(const Eigen::SparseMatrix<double>& upper, int block_size) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  std::erase_if(entries_, [&](const Entry& entry) { return entry.matches(upper, block_size); });
+}
+
 bool SymbolicAnalysisCache::analyze(const Eigen::SparseMatrix<double>& upper, int block_size,
                                     SparseCholesky* cholesky) {
   const std::lock_guard<std::mutex> lock(mutex_);
@@ -11,11 +24,7 @@ bool SymbolicAnalysisCache::analyze(const Eigen::SparseMatrix<double>& upper, in
   const int* row = upper.innerIndexPtr();
   const Eigen::Index n = upper.outerSize();
   for (const Entry& entry : entries_) {
-    if (entry.block_size != block_size || static_cast<Eigen::Index>(entry.column_start.size()) != n + 1 ||
-        static_cast<Eigen::Index>(entry.row.size()) != upper.nonZeros())
-      continue;
-    if (std::equal(entry.column_start.begin(), entry.column_start.end(), start) &&
-        std::equal(entry.row.begin(), entry.row.end(), row)) {
+    if (entry.matches(upper, block_size)) {
       cholesky->copy_analysis(*entry.analysis);
       return false;
     }

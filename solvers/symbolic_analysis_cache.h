@@ -21,9 +21,12 @@ class SymbolicAnalysisCache {
   // block size: a copy of the cached one, or a new one (then cached).
   // Returns true if it was computed.
   bool analyze(const Eigen::SparseMatrix<double>& upper, int block_size, SparseCholesky* cholesky);
+  // Drops the analysis of that pattern, if kept (a factor that will not be built).
+  void forget(const Eigen::SparseMatrix<double>& upper, int block_size);
 
  private:
   struct Entry {
+    bool matches(const Eigen::SparseMatrix<double>& upper, int size) const;
     std::vector<int> column_start, row;
     int block_size = 1;
     std::unique_ptr<SparseCholesky> analysis;  // analyzed, never factored

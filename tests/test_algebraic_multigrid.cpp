@@ -13,6 +13,7 @@
 #include "preconditioners/akvf_preconditioner_2d.h"
 #include "preconditioners/motion_bases.h"
 #include "solvers/algebraic_multigrid.h"
+#include "solvers/symbolic_analysis_cache.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -172,17 +173,51 @@ TEST_CASE("3D deformation with --linear-solver amg: the Cholesky runs' energy, n
   }
 }
 
-TEST_CASE("--linear-solver: names checked; auto picks multigrid from kAmgMinimumUnknowns unknowns when built in") {
+TEST_CASE("--linear-solver: names checked; auto decides from the factor's size when multigrid is built in") {
   CHECK(akvf::test::error_message([] { akvf::require_linear_solver("umfpack"); }) ==
         "unknown linear solver 'umfpack' (valid: auto, cholmod, amg)");
-  CHECK(akvf::linear_solver_for("cholmod", 100000000) == akvf::LinearSolver::kCholmod);
-  CHECK(akvf::linear_solver_for("amg", 10) == akvf::LinearSolver::kAmg);
-  CHECK(akvf::linear_solver_for("auto", akvf::kAmgMinimumUnknowns - 1) == akvf::LinearSolver::kCholmod);
-  CHECK(akvf::linear_solver_for("auto", akvf::kAmgMinimumUnknowns) ==
-        (akvf::AlgebraicMultigrid::available() ? akvf::LinearSolver::kAmg : akvf::LinearSolver::kCholmod));
+  CHECK(akvf::linear_solver_for("cholmod") == akvf::LinearSolver::kCholmod);
+  CHECK(akvf::linear_solver_for("amg") == akvf::LinearSolver::kAmg);
+  CHECK(akvf::linear_solver_for("auto") ==
+        (akvf::AlgebraicMultigrid::available() ? akvf::LinearSolver::kAuto : akvf::LinearSolver::kCholmod));
   akvf::ParameterizeOptions options;
   options.linear_solver = "hypre";
   std::string error;
   CHECK_FALSE(options.is_valid(&error));
   CHECK(error.find("unknown linear solver 'hypre'") != std::string::npos);
+}
+
+TEST_CASE("auto: CHOLMOD while the factor fits the limit, multigrid (and no kept analysis) beyond it") {
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(25, 20);
+  const akvf::ParamConfig config;
+  const akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "bumpy", config);
+  Eigen::VectorXd g;
+  const double energy = setup.objective->value_and_gradient(setup.x0, &g);
+  const auto run = [&](double limit, const std::shared_ptr<akvf::SymbolicAnalysisCache>& cache) {
+    akvf::AkvfOptions2D options;
+    options.factor.linear_solver = akvf::LinearSolver::kAuto;
+    options.factor.auto_factor_bytes = limit;
+    options.factor.analysis_cache = cache;
+    akvf::AkvfPreconditioner2D preconditioner(*setup.objective, options);
+    Eigen::VectorXd d;
+    preconditioner.update({setup.x0, g, energy, 0});
+    preconditioner.apply(g, &d);
+    CHECK(g.dot(d) > 0);
+    return preconditioner.statistics();
+  };
+  // The default limit (half the memory) keeps this small mesh on CHOLMOD.
+  const akvf::PreconditionerStatistics small = run(0, nullptr);
+  CHECK(small.factorizations == 1);
+  CHECK(small.multigrid_setups == 0);
+  // A limit below the factor's size takes the multigrid path when there is one.
+  const auto cache = std::make_shared<akvf::SymbolicAnalysisCache>();
+  const akvf::PreconditionerStatistics large = run(1000, cache);
+  CHECK(large.factorizations == (akvf::AlgebraicMultigrid::available() ? 0 : 1));
+  CHECK(large.multigrid_setups == (akvf::AlgebraicMultigrid::available() ? 1 : 0));
+  if (akvf::AlgebraicMultigrid::available()) {
+    // The analysis made for the choice was not kept: analyzing again computes it.
+    akvf::SparseCholesky cholesky;
+    akvf::ElementMatrix2D K(setup.objective->elements(), setup.objective->num_vertices());
+    CHECK(cache->analyze(K.upper(), 2, &cholesky));
+  }
 }
