@@ -42,22 +42,23 @@ SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const Precondition
 }
 
 // AKVF, then projected Newton on the same matrix pattern: the Newton phase
-// shares AKVF's assembly pattern (element_matrix.h) and takes its symbolic
-// analysis from the same cache (the settings' own, or a new one), so the
-// switch costs no setup the pure methods do not pay before their start.
+// shares AKVF's assembly pattern (element_matrix.h) and takes over its
+// symbolic analysis and factor memory at the switch, where AKVF is released,
+// so the switch costs no setup the pure methods do not pay before their
+// start, and no second analysis or factor is kept.
 template <int D, class Akvf, class Settings>
 std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objective, const Settings& settings) {
-  Settings shared = settings;
-  if (!shared.akvf.factor.analysis_cache) shared.share_analyses(std::make_shared<SymbolicAnalysisCache>());
-  const FactorOptions newton = newton_phase_options(shared);
+  const FactorOptions newton = newton_phase_options(settings);
   const EigenvalueFilter filter = settings.newton_filter;
-  auto akvf = std::make_unique<Akvf>(objective, shared.akvf);
-  const Akvf* first = akvf.get();  // owned by the switching preconditioner, which calls the factory
+  auto akvf = std::make_unique<Akvf>(objective, settings.akvf);
+  Akvf* first = akvf.get();  // owned by the switching preconditioner, which calls the factory before releasing it
   return std::make_unique<SwitchingPreconditioner>(
       "akvf-newton", std::move(akvf),
       [&objective, first, newton, filter] {
-        return std::make_unique<NewtonPreconditioner<D>>(objective, first->matrix(), newton,
-                                                         default_newton_projection(D), filter);
+        auto second = std::make_unique<NewtonPreconditioner<D>>(objective, first->matrix(), newton,
+                                                                default_newton_projection(D), filter);
+        second->take_over_factorization(*first);
+        return second;
       },
       akvf_switch_rule(objective, settings));
 }

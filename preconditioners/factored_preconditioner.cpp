@@ -94,6 +94,15 @@ std::string FactoredPreconditioner<D>::report() const {
 }
 
 template <int D>
+void FactoredPreconditioner<D>::take_over_factorization(FactoredPreconditioner& previous) {
+  if (factored_ || previous.matrix_.upper().nonZeros() != matrix_.upper().nonZeros())
+    throw NumericalError("take_over_factorization: before the first update, from a matrix of the same pattern");
+  if (options_.linear_solver == LinearSolver::kAuto && previous.options_.linear_solver != LinearSolver::kAuto)
+    options_.linear_solver = previous.options_.linear_solver;
+  cholesky_.take_over(&previous.cholesky_);
+}
+
+template <int D>
 void FactoredPreconditioner<D>::choose_linear_solver() {
   analyze();
   const double limit = options_.auto_factor_bytes > 0 ? options_.auto_factor_bytes : 0.5 * physical_memory_bytes();

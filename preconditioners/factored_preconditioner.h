@@ -109,6 +109,12 @@ class FactoredPreconditioner : public Preconditioner {
 
   using Matrix = ElementMatrix<D, D + 1>;
   const Matrix& matrix() const { return matrix_; }
+  // Before this preconditioner's first update: takes `previous`'s symbolic
+  // analysis (and the memory of its factor, which the next factorization
+  // overwrites) and its choice of linear solver. P must be on previous's
+  // sparsity pattern (built with its matrix as `same_elements`). akvf-newton
+  // hands AKVF's over at the switch, where AKVF is released.
+  void take_over_factorization(FactoredPreconditioner& previous);
   PreconditionerStatistics statistics() const final { return statistics_; }
 
  protected:

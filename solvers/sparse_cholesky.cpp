@@ -350,6 +350,11 @@ void SparseCholesky::clear() {
   std::vector<double>().swap(impl_->lower_value);
 }
 
+void SparseCholesky::take_over(SparseCholesky* other) {
+  std::swap(impl_, other->impl_);
+  other->clear();
+}
+
 int SparseCholesky::index_bits() const { return analyzed() ? impl_->factor->index_bits() : 0; }
 
 void SparseCholesky::use_64_bit_indices(bool on) { impl_->wide_indices = on; }

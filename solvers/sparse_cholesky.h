@@ -49,6 +49,9 @@ class SparseCholesky {
   double factor_bytes() const;
   // Frees the analysis and the factor (analyzed() is false again).
   void clear();
+  // Takes `other`'s analysis and factor (for a matrix of the same pattern,
+  // whose next factorize() overwrites the factor); `other` is left cleared.
+  void take_over(SparseCholesky* other);
   // 32 or 64: CHOLMOD's integer width chosen by the last analysis (0 before).
   int index_bits() const;
   // Tests: analyze with the 64-bit interface whatever the factor's size.
