@@ -40,8 +40,8 @@
 // 10.2 M faces), so the only reason to leave it is memory: before the first
 // factorization the symbolic analysis tells the factor's size, and if it
 // exceeds auto_factor_bytes (default half the physical memory: the rest of a
-// run took at most half as much again as its factor, measured up to 10.2 M
-// faces, so the whole run then stays within about three quarters of the
+// run took 0.75 to 0.8 times as much again as its factor, measured at 2.5 M
+// and 10.2 M faces, so the whole run then stays within about 90 % of the
 // memory) the multigrid path is taken instead, when this build has it.
 #include <functional>
 #include <memory>
