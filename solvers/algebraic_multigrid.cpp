@@ -25,10 +25,10 @@ namespace {
 // glibc's allocator to never map large blocks and never trim the heap in a
 // load-time constructor (mallopt(M_MMAP_MAX, 0), mallopt(M_TRIM_THRESHOLD,
 // -1): seen by interposing mallopt). Memory freed by one phase then stays
-// resident for good: at 10.2 M faces the Tutte solve's freed 8 GB sat under
-// the first factorization's 11 GB. Shared libraries' constructors run
-// before the initializers of what links them, so this one runs after it and
-// restores mapping for large blocks: allocations of 32 MB and more (glibc's
+// resident for good: at 2.54 M faces the process held 2.3 GB after the
+// Tutte solve with 0.6 GB in use, and the factorization came on top.
+// Shared libraries' constructors run before the initializers of what links
+// them, so this one runs after it and restores mapping for large blocks: allocations of 32 MB and more (glibc's
 // largest dynamic threshold; the matrices, factors and vectors of large
 // meshes) are mapped and returned to the system when freed, and the heap is
 // trimmed beyond twice that, as glibc's dynamic rule does.
