@@ -23,7 +23,7 @@ namespace akvf {
 //
 // The pattern part (permutation, lower triangle's indices, index map) is
 // immutable after the analysis and shared by copies of it (copy_analysis:
-// akvf-newton's Newton phase and the cache of symbolic_analysis_cache.h), and
+// the cache of symbolic_analysis_cache.h, kept by the API's repeated solves), and
 // the values are allocated at the first factorization, so an analysis kept
 // for later costs no values (at 10 M triangles the lower triangle's values
 // are 0.6 GB and its indices 0.9 GB).
