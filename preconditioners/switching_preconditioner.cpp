@@ -18,7 +18,7 @@ void SwitchingPreconditioner::update(const OptimizationState& state) {
     if (curvature_limited_steps_ >= rule_.patience) {
       second_ = make_second_();
       switch_iteration_ = state.iteration;
-      first_report_ = first_->name() + ": " + first_->report();
+      first_report_ = first_report();
       first_statistics_ = first_->statistics();
       first_.reset();
     }
@@ -30,8 +30,10 @@ void SwitchingPreconditioner::apply(const Eigen::VectorXd& gradient, Eigen::Vect
   (second_ ? *second_ : *first_).apply(gradient, result);
 }
 
+std::string SwitchingPreconditioner::first_report() const { return first_->name() + ": " + first_->report(); }
+
 std::string SwitchingPreconditioner::report() const {
-  if (!second_) return first_->name() + ": " + first_->report() + "; no switch";
+  if (!second_) return first_report() + "; no switch";
   return first_report_ + "; from iteration " + std::to_string(switch_iteration_) + " " + second_->name() + ": " +
          second_->report();
 }

@@ -70,6 +70,8 @@ class SwitchingPreconditioner final : public Preconditioner {
   int switch_iteration() const { return switch_iteration_; }
 
  private:
+  std::string first_report() const;  // "name: report" of the first, while it exists
+
   std::string name_;
   std::unique_ptr<Preconditioner> first_, second_;
   std::string first_report_;  // "name: report" of the first, kept when it is released
