@@ -44,8 +44,11 @@ template <int D>
 FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices,
                                                   FactorOptions options, const Matrix* same_elements)
     : options_(options),
-      matrix_(same_elements ? Matrix::with_pattern_of(*same_elements) : Matrix(elements, num_vertices)) {
+      matrix_(same_elements ? Matrix::with_pattern_of(*same_elements) : Matrix(elements, num_vertices)),
+      relative_shift_(options_.tikhonov) {
   if (!(options_.tikhonov > 0)) throw OptionsError("Tikhonov shift must be > 0");
+  if (!(options_.max_tikhonov >= options_.tikhonov))
+    throw OptionsError("the largest Tikhonov shift must be >= the Tikhonov shift");
   if (!(options_.absolute_shift >= 0)) throw OptionsError("absolute Tikhonov shift must be >= 0");
   if (!(options_.reuse_tolerance >= 0 && options_.reuse_tolerance < 1))
     throw OptionsError("factorization reuse tolerance must be in [0, 1)");
@@ -89,8 +92,12 @@ std::string FactoredPreconditioner<D>::report() const {
   if (statistics_.cg_solves > 0)
     return std::to_string(statistics_.cg_solves) + " CG solves (" + std::to_string(statistics_.cg_iterations) +
            " iterations), no factorization";
-  return std::to_string(statistics_.factorizations) + " factorizations, " + std::to_string(statistics_.reused_solves) +
-         " solves with an earlier factor (" + std::to_string(statistics_.cg_iterations) + " CG iterations)";
+  std::string line = std::to_string(statistics_.factorizations) + " factorizations, " +
+                     std::to_string(statistics_.reused_solves) + " solves with an earlier factor (" +
+                     std::to_string(statistics_.cg_iterations) + " CG iterations)";
+  if (shift_increases_ > 0)
+    line += "; " + std::to_string(shift_increases_) + " retried with a 100x larger shift";
+  return line;
 }
 
 template <int D>
@@ -124,7 +131,7 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   // P(x) plus the Tikhonov shift: relative to mean(diag P), plus the absolute c.
   const auto assemble_shifted = [&] {
     assemble(state, &matrix_);
-    matrix_.add_to_diagonal(options_.tikhonov * matrix_.mean_diagonal() + options_.absolute_shift);
+    matrix_.add_to_diagonal(relative_shift_ * matrix_.mean_diagonal() + options_.absolute_shift);
     if (options_.extra_diagonal.size() != 0) matrix_.add_to_diagonal(options_.extra_diagonal);
   };
   if (options_.linear_solver == LinearSolver::kAmg) {
@@ -164,7 +171,21 @@ void FactoredPreconditioner<D>::analyze() {
 template <int D>
 void FactoredPreconditioner<D>::factorize_current() {
   analyze();
-  cholesky_.factorize(matrix_.upper());
+  for (;;) {
+    try {
+      cholesky_.factorize(matrix_.upper());
+      break;
+    } catch (const NotPositiveDefinite& error) {
+      if (relative_shift_ * 100 > options_.max_tikhonov)
+        throw NotPositiveDefinite(std::string(error.what()) + " with a Tikhonov shift of " +
+                                  std::to_string(relative_shift_) + " times its mean diagonal");
+      // P + eps I becomes P + 100 eps I (mean(diag P) taken with the shift:
+      // a relative 1e-12 of it).
+      matrix_.add_to_diagonal(99 * relative_shift_ * matrix_.mean_diagonal());
+      relative_shift_ *= 100;
+      ++shift_increases_;
+    }
+  }
   factored_null_basis_ = null_basis_;
   factor_is_current_ = true;
   factored_ = true;

@@ -10,9 +10,23 @@
 // Laplacian). We factor P + eps I with eps = tikhonov * mean(diag P) and
 // project those motions out of the solution (§5.1). For a gradient
 // orthogonal to them (the gradient of every rigid-invariant energy is) this
-// is P^+ g up to a relative eps / lambda_min; the shift keeps a plain
-// supernodal Cholesky (no pivoting, reusable analysis) well defined, and the
-// projection removes what the shifted solve lets through.
+// is P^+ g (the paper's pseudoinverse, §4.2) up to a relative eps / lambda
+// in each eigen-direction of P with eigenvalue lambda; the shift keeps a
+// plain supernodal Cholesky (no pivoting, reusable analysis) well defined,
+// and the projection removes what the shifted solve lets through.
+//
+// The shift's size. It only has to outweigh rounding along the null
+// directions: Cholesky's backward error there is about u * |P| times a
+// factor that grows with the factor's column counts (u = 1.1e-16), so
+// tikhonov = 1e-12 leaves a margin of 10^4 over u. A larger shift is not
+// harmless: it damps every direction whose eigenvalue is not far above it.
+// Long thin regions bend with eigenvalues of K below 1e-8 * mean(diag K):
+// with the former 1e-8 the bending of hilbert_b (a strip folded into a
+// Hilbert curve) converged linearly, 29 AKVF iterations to the gradient
+// tolerance instead of 15 (docs/performance.md). Should rounding still tip
+// a pivot below zero, the factorization is retried with a shift 100 times
+// larger, up to max_tikhonov (kept for the later factorizations); a matrix
+// that fails even then is not positive semidefinite, and the error stands.
 //
 // Reuse (tau > 0). Before factoring P(x), try CG on P(x) d = g preconditioned
 // by the last factor, projected so that neither the old factor's response to
@@ -73,7 +87,8 @@ struct FactorOptions {
   // measured 22-25 V-cycles on K of horse_b and horse_b x16, and a CG
   // iteration is a cycle plus a product with P.
   int amg_setup_cycles = 20;
-  double tikhonov = 1e-8;      // shift relative to mean(diag P)
+  double tikhonov = 1e-12;     // shift relative to mean(diag P) (module comment)
+  double max_tikhonov = 1e-4;  // largest relative shift the retries reach
   double absolute_shift = 0;   // added to the relative shift: c of K + c I (§6.2 uses 1e-4)
   double reuse_tolerance = 0;  // tau; 0 factors at every update
   int reuse_max_cg = 8;
@@ -142,6 +157,8 @@ class FactoredPreconditioner : public Preconditioner {
   FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices, FactorOptions options,
                          const Matrix* same_elements);
   void analyze();
+  // Factors the assembled matrix; when it is not positive definite, raises
+  // the shift (module comment) and retries.
   void factorize_current();
   // kAuto: CHOLMOD or multigrid, from the analysis (module comment).
   void choose_linear_solver();
@@ -176,6 +193,8 @@ class FactoredPreconditioner : public Preconditioner {
   bool factor_is_current_ = false;
   int skip_reuse_ = 0;
   int failure_backoff_ = 1;
+  double relative_shift_;   // eps / mean(diag P): tikhonov, raised by retries
+  int shift_increases_ = 0;  // factorizations retried with a larger shift
   FactorStatistics statistics_;
 };
 

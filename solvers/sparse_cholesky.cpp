@@ -156,8 +156,19 @@ class CholmodFactor final : public PermutedFactor {
     cholmod_sparse B = lower(values);
     Api::factorize(&B, factor_, &common_);
     if (common_.status == CHOLMOD_NOT_POSDEF)
-      throw NumericalError("matrix is not positive definite (CHOLMOD stopped at column " +
-                           std::to_string(factor_->minor) + ")");
+      throw NotPositiveDefinite("matrix is not positive definite (CHOLMOD stopped at column " +
+                                std::to_string(factor_->minor) + ")");
+    // CHOLMOD's simplicial factorization (small matrices) is L D L^T, which
+    // goes on through negative pivots and reports only zero ones: a matrix
+    // that is not positive definite must not pass there either.
+    if (!factor_->is_super && !factor_->is_ll) {
+      const Index* column_start = static_cast<const Index*>(factor_->p);
+      const double* value = static_cast<const double*>(factor_->x);
+      for (size_t j = 0; j < factor_->n; ++j)
+        if (!(value[column_start[j]] > 0))  // D(j, j) leads column j
+          throw NotPositiveDefinite("matrix is not positive definite (pivot " + std::to_string(j) + " of L D L^T is " +
+                                    std::to_string(value[column_start[j]]) + ")");
+    }
     check_status(common_, "numeric factorization");
   }
 

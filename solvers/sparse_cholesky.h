@@ -11,7 +11,16 @@
 #include <memory>
 #include <string>
 
+#include "framework/process/error.h"
+
 namespace akvf {
+
+// CHOLMOD met a non-positive pivot: A is not positive definite, or is only
+// semidefinite and rounding tipped a pivot below zero.
+class NotPositiveDefinite : public NumericalError {
+ public:
+  using NumericalError::NumericalError;
+};
 
 class SparseCholesky {
  public:
@@ -30,8 +39,8 @@ class SparseCholesky {
   // analyze() would compute for its pattern, without the ordering work
   // (solvers/symbolic_analysis_cache.h).
   void copy_analysis(const SparseCholesky& other);
-  // Numeric factorization A = L L^T. Throws NumericalError if A is not
-  // positive definite.
+  // Numeric factorization A = L L^T. Throws NotPositiveDefinite if A is
+  // not (numerically) positive definite, NumericalError on other failures.
   void factorize(const Eigen::SparseMatrix<double>& upper);
   // x = A^-1 b (x is resized).
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd* x);

@@ -27,6 +27,9 @@
 
 namespace {
 
+// The relative Tikhonov shift every factored P carries (factored_preconditioner.h).
+const double kShift = akvf::FactorOptions{}.tikhonov;
+
 akvf::DistortionObjective3D grid_objective(const akvf::TetMesh& mesh,
                                            std::shared_ptr<const akvf::DistortionDensity<3>> density) {
   return akvf::DistortionObjective3D(mesh.T, akvf::rest_tets(mesh), std::move(density), mesh.num_vertices());
@@ -69,9 +72,9 @@ TEST_CASE("3D Newton, Laplacian and SLIM: symmetric PSD, the expected null space
     p->apply(g, &d);
     CHECK(d.allFinite());
     CHECK(g.dot(d) > 0);
-    // The factored matrix is P + eps I with eps = 1e-8 mean(diag P): remove the shift to test P.
+    // The factored matrix is P + eps I with eps = tikhonov * mean(diag P): remove the shift to test P.
     Eigen::MatrixXd P(p->matrix().full());
-    P.diagonal().array() -= 1e-8 * P.diagonal().mean() / (1 + 1e-8);
+    P.diagonal().array() -= kShift * P.diagonal().mean() / (1 + kShift);
     CHECK((P - P.transpose()).norm() <= 1e-12 * P.norm());
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(P);
     CHECK(eig.eigenvalues().minCoeff() >= -1e-9 * eig.eigenvalues().maxCoeff());

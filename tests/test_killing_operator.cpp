@@ -21,6 +21,9 @@
 
 namespace {
 
+// The relative Tikhonov shift every factored P carries (factored_preconditioner.h).
+const double kShift = akvf::FactorOptions{}.tikhonov;
+
 Eigen::MatrixXd dense_killing(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
                               bool area_scaling) {
   akvf::ElementMatrix2D K(F, static_cast<int>(x.size() / 2));
@@ -159,6 +162,91 @@ TEST_CASE("the AKVF direction is K^+ grad E, a descent direction free of rigid m
   CHECK((akvf::rigid_motion_basis_2d(x).transpose() * d).norm() <= 1e-12 * d.norm());
 }
 
+TEST_CASE("on a long thin strip the AKVF direction is K^+ grad E in the softest bending modes too") {
+  // A 300 x 1 strip of square cells: its in-plane bending modes have
+  // eigenvalues of K far below mean(diag K), where a Tikhonov shift of 1e-8
+  // of the mean diagonal (this code's former one) damped them by tens of
+  // percent (factored_preconditioner.h).
+  akvf::TriMesh strip = akvf::test::grid_disk(301, 2);
+  strip.V.col(1) /= 300;
+  const akvf::DistortionObjective2D objective = unit_area_objective(&strip);
+  const Eigen::VectorXd x = akvf::stack_uv(strip.V.leftCols<2>());
+  const Eigen::MatrixXd K = dense_killing(objective.elements(), x, objective.rest().area, true);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(K);
+  const double softest = eig.eigenvalues()[3];  // above the three rigid motions
+  CHECK(softest < 1e-8 * K.diagonal().mean());
+  // A gradient with equal weight in every non-rigid eigen-direction.
+  const Eigen::Index n = K.rows();
+  const Eigen::VectorXd g = eig.eigenvectors().rightCols(n - 3) * Eigen::VectorXd::Ones(n - 3);
+  const Eigen::VectorXd reference =
+      eig.eigenvectors().rightCols(n - 3) * eig.eigenvalues().tail(n - 3).cwiseInverse();
+  akvf::AkvfPreconditioner2D preconditioner(objective);
+  Eigen::VectorXd d;
+  preconditioner.update({x, g, 0.0, 1});
+  preconditioner.apply(g, &d);
+  // The shifted solve's error is eps / lambda in each mode: 1.3e-4 here
+  // (0.56 with the former shift).
+  CHECK((d - reference).norm() <= 1e-3 * reference.norm());
+}
+
+namespace {
+
+// The uniform graph Laplacian per coordinate minus s I / 3 per triangle: its
+// lowest eigenvalue lies between -s times the mean and the largest number of
+// triangles at a vertex (the translations' Rayleigh quotient is minus the
+// mean of the subtracted diagonal).
+class ShiftedGraphLaplacian final : public akvf::FactoredPreconditioner2D {
+ public:
+  ShiftedGraphLaplacian(const akvf::MeshObjective2D& objective, akvf::FactorOptions options, double s)
+      : akvf::FactoredPreconditioner2D(objective, std::move(options)), s_(s) {}
+  std::string name() const override { return "shifted-graph-laplacian"; }
+
+ private:
+  void assemble(const akvf::OptimizationState&, Matrix* matrix) override {
+    matrix->assemble([this](int, Matrix::Local* local) {
+      *local = -s_ / 3 * Matrix::Local::Identity();
+      for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j)
+          for (int c = 0; c < 2; ++c) {
+            (*local)(2 * i + c, 2 * i + c) += 0.5;
+            (*local)(2 * j + c, 2 * j + c) += 0.5;
+            (*local)(2 * i + c, 2 * j + c) -= 0.5;
+          }
+    });
+  }
+  Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override {
+    return akvf::motion_basis(2, akvf::MotionProjection::kTranslations, x);
+  }
+  double s_;
+};
+
+}  // namespace
+
+TEST_CASE("a matrix rounding or a slight indefiniteness keeps from factoring is retried with a 100x larger shift") {
+  akvf::TriMesh grid = akvf::test::grid_disk(8, 8);
+  const akvf::DistortionObjective2D objective = unit_area_objective(&grid);
+  const Eigen::VectorXd x = akvf::stack_uv(grid.V.leftCols<2>());
+  // Triangles per vertex: 1 to 6, so the mean diagonal is at most 3 (6
+  // triangles, each adding 1 per corner and coordinate) and the lowest
+  // eigenvalue is at most -s: s = 3e-9 puts it below -1e-9 times the mean
+  // diagonal and above -1e-8 times it (the subtracted diagonal is at most
+  // 2 s and the diagonal at least 1 for 8 x 8).
+  const double s = 3e-9;
+  Eigen::VectorXd g = Eigen::VectorXd::LinSpaced(x.size(), -1, 1).array().sin();
+  const Eigen::MatrixXd T = akvf::translation_basis_2d(objective.num_vertices());
+  g -= T * (T.transpose() * g);
+  ShiftedGraphLaplacian retried(objective, {}, s);
+  Eigen::VectorXd d;
+  retried.update({x, g, 0.0, 1});
+  retried.apply(g, &d);
+  CHECK(retried.report().find("2 retried with a 100x larger shift") != std::string::npos);
+  CHECK(g.dot(d) > 0);
+  akvf::FactorOptions capped;
+  capped.max_tikhonov = 1e-9;
+  ShiftedGraphLaplacian refused(objective, capped, s);
+  CHECK_THROWS_AS(refused.update({x, g, 0.0, 1}), akvf::NotPositiveDefinite);
+}
+
 TEST_CASE("with factorization reuse the direction solves K(x) d = g to the tolerance") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(8, 8);
   const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
@@ -198,9 +286,9 @@ TEST_CASE("Newton, Laplacian and SLIM matrices are symmetric PSD with the expect
     p->apply(g, &d);
     CHECK(g.dot(d) > 0);
     CHECK(d.allFinite());
-    // The factored matrix is P + eps I with eps = 1e-8 mean(diag P): remove the shift to test P.
+    // The factored matrix is P + eps I with eps = tikhonov * mean(diag P): remove the shift to test P.
     Eigen::MatrixXd P(p->matrix().full());
-    P.diagonal().array() -= 1e-8 * P.diagonal().mean() / (1 + 1e-8);
+    P.diagonal().array() -= kShift * P.diagonal().mean() / (1 + kShift);
     CHECK((P - P.transpose()).norm() <= 1e-12 * P.norm());
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(P);
     CHECK(eig.eigenvalues().minCoeff() >= -1e-9 * eig.eigenvalues().maxCoeff());
@@ -281,7 +369,7 @@ TEST_CASE("at an isometric map the Hessian of the isometric energies is c K(x), 
   const Eigen::VectorXd x = akvf::stack_uv(mesh.V.leftCols<2>() * rotation.transpose());
   auto unshifted = [](const akvf::FactoredPreconditioner2D& p) {
     Eigen::MatrixXd P(p.matrix().full());
-    P.diagonal().array() -= 1e-8 * P.diagonal().mean() / (1 + 1e-8);
+    P.diagonal().array() -= kShift * P.diagonal().mean() / (1 + kShift);
     return P;
   };
   for (const auto& density : std::vector<std::shared_ptr<akvf::DistortionDensity2D>>{

@@ -52,6 +52,20 @@ TEST_CASE("supernodal and simplicial factors solve to machine precision, ordered
   }
 }
 
+TEST_CASE("an indefinite matrix is refused by the simplicial (L D L^T) and the supernodal factorization alike") {
+  for (const int nx : {6, 70}) {
+    CAPTURE(nx);
+    // K + 1e-3 mean(diag K) I minus a little more than that shift: its lowest
+    // eigenvalue (a rigid motion's) is about -1e-5 mean(diag K).
+    akvf::ElementMatrix2D K = shifted_killing(nx);
+    K.add_to_diagonal(-1.01e-3 * K.mean_diagonal() / 1.001);
+    akvf::SparseCholesky cholesky;
+    cholesky.analyze(K.upper(), 2);
+    CHECK_THROWS_AS(cholesky.factorize(K.upper()), akvf::NotPositiveDefinite);
+    CHECK(cholesky.supernodal() == (nx == 70));
+  }
+}
+
 TEST_CASE("a block size that does not divide the matrix is refused") {
   const akvf::ElementMatrix2D K = shifted_killing(4);
   akvf::SparseCholesky cholesky;
