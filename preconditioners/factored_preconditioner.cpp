@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <Eigen/IterativeLinearSolvers>
+#include <algorithm>
 #include <cmath>
 
 #include "framework/mesh/mesh_topology.h"
@@ -49,6 +50,7 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
   if (!(options_.tikhonov > 0)) throw OptionsError("Tikhonov shift must be > 0");
   if (!(options_.max_tikhonov >= options_.tikhonov))
     throw OptionsError("the largest Tikhonov shift must be >= the Tikhonov shift");
+  if (!(options_.iterative_tikhonov > 0)) throw OptionsError("the iterative solves' Tikhonov shift must be > 0");
   if (!(options_.absolute_shift >= 0)) throw OptionsError("absolute Tikhonov shift must be >= 0");
   if (!(options_.reuse_tolerance >= 0 && options_.reuse_tolerance < 1))
     throw OptionsError("factorization reuse tolerance must be in [0, 1)");
@@ -125,6 +127,8 @@ void FactoredPreconditioner<D>::choose_linear_solver() {
 template <int D>
 void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   if (options_.linear_solver == LinearSolver::kAuto) choose_linear_solver();
+  if (options_.linear_solver == LinearSolver::kAmg || options_.cg_tolerance > 0)
+    relative_shift_ = std::max(relative_shift_, options_.iterative_tikhonov);
   null_basis_ = component_vertices_ ? ComponentMotions(D, component_vertices_, state.x,
                                                        [this](const Eigen::VectorXd& part) { return null_space(part); })
                                     : ComponentMotions(null_space(state.x));

@@ -27,6 +27,11 @@
 // a pivot below zero, the factorization is retried with a shift 100 times
 // larger, up to max_tikhonov (kept for the later factorizations); a matrix
 // that fails even then is not positive semidefinite, and the error stands.
+// The iterative solves (multigrid, Jacobi CG) keep iterative_tikhonov = 1e-8:
+// stopped at a relative residual of 1e-2, they leave the softest modes
+// unresolved whatever the shift, and the smaller one only slowed their CG
+// (hilbert_b with multigrid: 19432 CG iterations in 70 AKVF iterations
+// instead of 7851 in 40, docs/performance.md).
 //
 // Reuse (tau > 0). Before factoring P(x), try CG on P(x) d = g preconditioned
 // by the last factor, projected so that neither the old factor's response to
@@ -89,6 +94,7 @@ struct FactorOptions {
   int amg_setup_cycles = 20;
   double tikhonov = 1e-12;     // shift relative to mean(diag P) (module comment)
   double max_tikhonov = 1e-4;  // largest relative shift the retries reach
+  double iterative_tikhonov = 1e-8;  // the relative shift of the multigrid and Jacobi CG solves
   double absolute_shift = 0;   // added to the relative shift: c of K + c I (§6.2 uses 1e-4)
   double reuse_tolerance = 0;  // tau; 0 factors at every update
   int reuse_max_cg = 8;
