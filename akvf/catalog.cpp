@@ -49,7 +49,7 @@ SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const Precondition
 template <int D, class Akvf, class Settings>
 std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objective, const Settings& settings) {
   const FactorOptions newton = newton_phase_options(settings);
-  const EigenvalueFilter filter = settings.newton_filter;
+  const EigenvalueFilter filter = settings.newton_phase_filter;
   auto akvf = std::make_unique<Akvf>(objective, settings.akvf);
   Akvf* first = akvf.get();  // owned by the switching preconditioner, which calls the factory before releasing it
   return std::make_unique<SwitchingPreconditioner>(

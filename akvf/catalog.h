@@ -35,7 +35,10 @@ struct PreconditionerSettings2D {
   // When akvf-newton switches; its isometric step is the energy's (set by
   // the catalog), its backtracking factor the line search's.
   SwitchRule akvf_newton_switch;
-  EigenvalueFilter newton_filter = EigenvalueFilter::kClamp;  // newton and akvf-newton's phase
+  EigenvalueFilter newton_filter = EigenvalueFilter::kClamp;  // newton
+  // akvf-newton's Newton phase: the exact Hessian while it is positive
+  // definite (newton_preconditioner.h; docs/design.md says why).
+  EigenvalueFilter newton_phase_filter = EigenvalueFilter::kExact;
 
   // Every factored preconditioner takes its symbolic analyses from `cache`.
   void share_analyses(const std::shared_ptr<SymbolicAnalysisCache>& cache) {
@@ -95,6 +98,7 @@ struct PreconditionerSettings3D {
   FactorOptions slim = shifted_factor_options(1e-4);
   SwitchRule akvf_newton_switch;  // as in 2D
   EigenvalueFilter newton_filter = EigenvalueFilter::kClamp;
+  EigenvalueFilter newton_phase_filter = EigenvalueFilter::kExact;  // as in 2D
 
   // Jacobi-CG to this relative residual instead of factoring, for every
   // matrix that changes per iteration (akvf, newton, slim; the Laplacian is

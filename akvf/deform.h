@@ -35,7 +35,7 @@ struct DeformOptions {
   int max_iters = 100;  // Figure 8 runs 100 iterations
   double time_limit = std::numeric_limits<double>::infinity();
   std::string linear_solver = "auto";  // cholmod, amg (algebraic multigrid) or auto (amg if the factor would not fit)
-  std::string eigen_filter = "clamp";  // projected Newton's element Hessians: clamp, abs or adaptive
+  std::string eigen_filter = "auto";  // projected Newton's element Hessians: auto, clamp, abs, adaptive or exact
   int threads = 0;                     // 0 = all cores
   // As ParameterizeOptions::callbacks; x is interleaved x0 y0 z0 x1 ... at
   // the input's scale.

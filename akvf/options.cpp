@@ -5,6 +5,18 @@
 #include "framework/process/error.h"
 
 namespace akvf {
+namespace {
+
+// --eigen-filter auto keeps each method's own (newton clamps, as the
+// literature's projected Newton does; akvf-newton's Newton phase uses the
+// exact Hessian while it is positive definite); a named filter applies to both.
+template <class Settings>
+void set_eigen_filters(const std::string& name, Settings* settings) {
+  if (name == "auto") return;
+  settings->newton_filter = settings->newton_phase_filter = parse_eigenvalue_filter(name);
+}
+
+}  // namespace
 
 ParamConfig param_config(const ParameterizeOptions& o) {
   ParamConfig c;
@@ -25,7 +37,7 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.preconditioner_settings.newton_phase.reuse_tolerance =
       automatic ? o.akvf_reuse : c.preconditioner_settings.newton.reuse_tolerance;
   c.line_search_settings.rho = o.ls_rho;
-  c.preconditioner_settings.newton_filter = parse_eigenvalue_filter(o.eigen_filter);
+  set_eigen_filters(o.eigen_filter, &c.preconditioner_settings);
   c.init_from_file = o.init == "file";
   if (!c.init_from_file) c.init = parse_tutte_weights(o.init);
   c.optimize_flaps = o.flaps;
@@ -53,7 +65,7 @@ DeformConfig deform_config(const DeformOptions& o) {
   c.weight = o.weight;
   c.hard_constraints = o.hard;
   c.preconditioner_settings.set_cg_tolerance(o.cg_tol);
-  c.preconditioner_settings.newton_filter = parse_eigenvalue_filter(o.eigen_filter);
+  set_eigen_filters(o.eigen_filter, &c.preconditioner_settings);
   c.akvf_as_written = o.akvf_as_written;
   c.optimizer.gradient_tolerance = o.grad_tol;
   c.optimizer.max_iterations = o.max_iters;

@@ -46,7 +46,7 @@ struct ParameterizeOptions {
   double time_limit = std::numeric_limits<double>::infinity();  // optimizer seconds, > 0
   int warm_start_iters = 1000;         // limit of the symmetric Dirichlet warm start of overflowing energies
   std::string linear_solver = "auto";  // cholmod, amg (algebraic multigrid) or auto (amg if the factor would not fit)
-  std::string eigen_filter = "clamp";  // projected Newton's element Hessians: clamp, abs or adaptive
+  std::string eigen_filter = "auto";  // projected Newton's element Hessians: auto, clamp, abs, adaptive or exact
   int threads = 0;                     // worker threads for this call; 0 = all cores
   // Called after every iteration (row 0 = the initial map) with the summary
   // and the current map (interleaved u0 v0 u1 v1 ..., area-1 units; use

@@ -132,11 +132,9 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   null_basis_ = component_vertices_ ? ComponentMotions(D, component_vertices_, state.x,
                                                        [this](const Eigen::VectorXd& part) { return null_space(part); })
                                     : ComponentMotions(null_space(state.x));
-  // P(x) plus the Tikhonov shift: relative to mean(diag P), plus the absolute c.
   const auto assemble_shifted = [&] {
     assemble(state, &matrix_);
-    matrix_.add_to_diagonal(relative_shift_ * matrix_.mean_diagonal() + options_.absolute_shift);
-    if (options_.extra_diagonal.size() != 0) matrix_.add_to_diagonal(options_.extra_diagonal);
+    add_shift();
   };
   if (options_.linear_solver == LinearSolver::kAmg) {
     // apply() builds or reuses the hierarchy (a constant P is assembled once).
@@ -165,6 +163,13 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
 }
 
 template <int D>
+void FactoredPreconditioner<D>::add_shift() {
+  // The Tikhonov shift: relative to mean(diag P), plus the absolute c.
+  matrix_.add_to_diagonal(relative_shift_ * matrix_.mean_diagonal() + options_.absolute_shift);
+  if (options_.extra_diagonal.size() != 0) matrix_.add_to_diagonal(options_.extra_diagonal);
+}
+
+template <int D>
 void FactoredPreconditioner<D>::analyze() {
   if (cholesky_.analyzed()) return;
   const bool computed = options_.analysis_cache ? options_.analysis_cache->analyze(matrix_.upper(), D, &cholesky_)
@@ -180,6 +185,10 @@ void FactoredPreconditioner<D>::factorize_current() {
       cholesky_.factorize(matrix_.upper());
       break;
     } catch (const NotPositiveDefinite& error) {
+      if (reassemble_semidefinite(&matrix_)) {
+        add_shift();
+        continue;
+      }
       if (relative_shift_ * 100 > options_.max_tikhonov)
         throw NotPositiveDefinite(std::string(error.what()) + " with a Tikhonov shift of " +
                                   std::to_string(relative_shift_) + " times its mean diagonal");
@@ -218,6 +227,13 @@ void FactoredPreconditioner<D>::apply(const Eigen::VectorXd& gradient, Eigen::Ve
   }
   cholesky_.solve(gradient, result);
   null_basis_.project_out(result);
+  // An indefinite P that rounding let through the factorization.
+  if (!(gradient.dot(*result) > 0) && reassemble_semidefinite(&matrix_)) {
+    add_shift();
+    factorize_current();
+    cholesky_.solve(gradient, result);
+    null_basis_.project_out(result);
+  }
 }
 
 template <int D>

@@ -158,11 +158,19 @@ class FactoredPreconditioner : public Preconditioner {
   virtual Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const = 0;
   // True if P does not depend on x: assembled and factored once.
   virtual bool is_constant() const { return false; }
+  // Called when the assembled P turns out not to be positive definite (the
+  // factorization fails) or gives no descent direction: a subclass whose
+  // P may be indefinite by design (the exact Hessian) fills `matrix` with a
+  // positive semidefinite P at the same x, without the shift, and returns
+  // true; the default returns false, and the shift is raised instead.
+  virtual bool reassemble_semidefinite(Matrix*) { return false; }
 
  private:
   FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices, FactorOptions options,
                          const Matrix* same_elements);
   void analyze();
+  // Adds the Tikhonov shift and the extra diagonal to the assembled P.
+  void add_shift();
   // Factors the assembled matrix; when it is not positive definite, raises
   // the shift (module comment) and retries.
   void factorize_current();

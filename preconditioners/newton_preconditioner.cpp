@@ -11,7 +11,8 @@ EigenvalueFilter parse_eigenvalue_filter(const std::string& name) {
   if (name == "clamp") return EigenvalueFilter::kClamp;
   if (name == "abs") return EigenvalueFilter::kAbsolute;
   if (name == "adaptive") return EigenvalueFilter::kAdaptive;
-  throw OptionsError("unknown eigenvalue filter '" + name + "' (valid: clamp, abs, adaptive)");
+  if (name == "exact") return EigenvalueFilter::kExact;
+  throw OptionsError("unknown eigenvalue filter '" + name + "' (valid: clamp, abs, adaptive, exact)");
 }
 
 template <int D>
@@ -62,15 +63,73 @@ EigenvalueFilter NewtonPreconditioner<D>::adaptive_choice(const OptimizationStat
 
 template <int D>
 void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* matrix) {
-  last_filter_ = filter_ == EigenvalueFilter::kAdaptive ? adaptive_choice(state) : filter_;
-  const bool mirror = last_filter_ == EigenvalueFilter::kAbsolute;
-  mirrored_assemblies_ += mirror;
+  if (filter_ == EigenvalueFilter::kAdaptive) {
+    last_filter_ = adaptive_choice(state);
+  } else if (filter_ == EigenvalueFilter::kExact) {
+    // The last exact Hessian served (no fallback since): try it at once next time.
+    if (last_filter_ == EigenvalueFilter::kExact) exact_backoff_ = 1;
+    last_filter_ = exact_wait_ > 0 ? EigenvalueFilter::kClamp : EigenvalueFilter::kExact;
+    if (exact_wait_ > 0) --exact_wait_;
+  } else {
+    last_filter_ = filter_;
+  }
+  mirrored_assemblies_ += last_filter_ == EigenvalueFilter::kAbsolute;
+  if (last_filter_ == EigenvalueFilter::kExact) {
+    ++exact_assemblies_;
+    assembled_x_ = state.x;
+  }
+  assemble_filtered(state.x, last_filter_, matrix);
+  if (last_filter_ == EigenvalueFilter::kExact && projection_ == MotionProjection::kRigidMotions && D == 2) {
+    // E(R_t x) = E(x) for every rotation R_t, so along the rotation field r
+    // (r_i = J (x_i - c), c the centroid, J the quarter turn),
+    // r^T H r = -grad E . d^2/dt^2 R_t x = grad E . (x - c) (the gradient
+    // sums to zero over each coordinate): negative wherever expanding the
+    // map lowers the energy, and then H is not positive definite, however
+    // close to the minimum. A shift of twice -grad E . (x - c) / |x - c|^2
+    // makes that curvature positive; it vanishes with the gradient.
+    Eigen::VectorXd centered = state.x;
+    for (int c = 0; c < D; ++c) {
+      double mean = 0;
+      for (Eigen::Index i = c; i < centered.size(); i += D) mean += centered[i];
+      mean /= static_cast<double>(centered.size() / D);
+      for (Eigen::Index i = c; i < centered.size(); i += D) centered[i] -= mean;
+    }
+    const double rotation_curvature = state.gradient.dot(centered) / centered.squaredNorm();
+    if (rotation_curvature < 0) matrix->add_to_diagonal(-2 * rotation_curvature);
+  }
+}
+
+template <int D>
+void NewtonPreconditioner<D>::assemble_filtered(const Eigen::VectorXd& x, EigenvalueFilter filter,
+                                                Matrix* matrix) const {
   matrix->assemble([&](int e, typename Matrix::Local* local) {
     const auto G = jacobian_map<D>(objective_.rest().Dm_inv[e]);
-    const auto J = objective_.jacobian(state.x, e);
-    const auto H = mirror ? objective_.density().absolute_hessian(J) : objective_.density().projected_hessian(J);
+    const auto J = objective_.jacobian(x, e);
+    const auto H = filter == EigenvalueFilter::kExact      ? objective_.density().hessian(J)
+                   : filter == EigenvalueFilter::kAbsolute ? objective_.density().absolute_hessian(J)
+                                                           : objective_.density().projected_hessian(J);
     *local = objective_.weights()[e] * G.transpose() * H * G;
   });
+}
+
+template <int D>
+bool NewtonPreconditioner<D>::reassemble_semidefinite(Matrix* matrix) {
+  if (last_filter_ != EigenvalueFilter::kExact) return false;
+  ++exact_fallbacks_;
+  exact_wait_ = exact_backoff_;
+  exact_backoff_ *= 2;
+  last_filter_ = EigenvalueFilter::kClamp;
+  assemble_filtered(assembled_x_, EigenvalueFilter::kClamp, matrix);
+  return true;
+}
+
+template <int D>
+std::string NewtonPreconditioner<D>::report() const {
+  std::string line = FactoredPreconditioner<D>::report();
+  if (exact_assemblies_ > 0)
+    line += "; exact Hessian at " + std::to_string(exact_assemblies_ - exact_fallbacks_) + " of " +
+            std::to_string(exact_assemblies_) + " tries";
+  return line;
 }
 
 template class NewtonPreconditioner<2>;

@@ -16,6 +16,19 @@
 //   s = x - x_prev, H the unfiltered Hessian,
 // to within |rho - 1| < adaptive_tolerance (theirs: 0.01), mirrored
 // otherwise (and at the first iteration, where there is no step yet).
+//
+// Or not filtered at all (kExact): the exact Hessian, wherever its sum is
+// positive definite, which is all Newton's method needs. The per-element
+// projection makes P stiffer than the Hessian along every direction that
+// compresses some elements (their twist eigenvalues are negative and
+// clamped to 0), so near a minimum that is not an isometry projected Newton
+// converges only linearly: on camelhead its gradient norm falls by 0.87 per
+// iteration from 1e-3 on (docs/performance.md). When the factorization finds
+// the exact Hessian not positive definite, or its direction is not a descent
+// direction, the element Hessians are clamped at that x instead, and the
+// exact one is tried again after 1, 2, 4, ... iterations (consecutive
+// failures double the wait, a success resets it), as factorization reuse
+// backs off.
 #include <string>
 
 #include "framework/optimization/mesh_objective.h"
@@ -23,13 +36,13 @@
 
 namespace akvf {
 
-enum class EigenvalueFilter { kClamp, kAbsolute, kAdaptive };
+enum class EigenvalueFilter { kClamp, kAbsolute, kAdaptive, kExact };
 // The motions projected out of the direction by default: rigid motions in 2D
 // (the energy's null space), none in 3D (the constraints fix the motion).
 constexpr MotionProjection default_newton_projection(int dimension) {
   return dimension == 2 ? MotionProjection::kRigidMotions : MotionProjection::kNone;
 }
-// "clamp", "abs", "adaptive"; OptionsError naming the valid ones otherwise.
+// "clamp", "abs", "adaptive", "exact"; OptionsError naming the valid ones otherwise.
 EigenvalueFilter parse_eigenvalue_filter(const std::string& name);
 
 template <int D>
@@ -44,10 +57,15 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   NewtonPreconditioner(const MeshObjective<D>& objective, const ElementMatrix<D, D + 1>& same_elements,
                        FactorOptions options, MotionProjection projection, EigenvalueFilter filter);
   std::string name() const override { return "newton"; }
-  // The filter the last assembly used (kClamp or kAbsolute), and how many
-  // assemblies mirrored.
+  // The filter the last assembly used (kClamp, kAbsolute or kExact), and
+  // how many assemblies mirrored.
   EigenvalueFilter last_filter() const { return last_filter_; }
   int mirrored_assemblies() const { return mirrored_assemblies_; }
+  // kExact: assemblies with the exact Hessian, and how many of them were
+  // replaced by the clamped one (not positive definite).
+  int exact_assemblies() const { return exact_assemblies_; }
+  int exact_fallbacks() const { return exact_fallbacks_; }
+  std::string report() const override;
 
   static constexpr double adaptive_tolerance = 0.01;
 
@@ -55,6 +73,10 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   using Matrix = typename FactoredPreconditioner<D>::Matrix;
   void assemble(const OptimizationState& state, Matrix* matrix) override;
   Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return motion_basis(D, projection_, x); }
+  bool reassemble_semidefinite(Matrix* matrix) override;
+  // Fills matrix with sum_e w_e G_e^T H_e G_e, H_e the element Hessian at x
+  // filtered by `filter` (kClamp, kAbsolute or kExact).
+  void assemble_filtered(const Eigen::VectorXd& x, EigenvalueFilter filter, Matrix* matrix) const;
   // kAdaptive's choice at `state` (and remembers the state for the next).
   EigenvalueFilter adaptive_choice(const OptimizationState& state);
   // s^T H(x) s with the unfiltered Hessian, the constraints' term included.
@@ -65,6 +87,9 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   EigenvalueFilter filter_;
   EigenvalueFilter last_filter_ = EigenvalueFilter::kClamp;
   int mirrored_assemblies_ = 0;
+  int exact_assemblies_ = 0, exact_fallbacks_ = 0;
+  int exact_wait_ = 0, exact_backoff_ = 1;  // kExact: iterations to clamp before trying again
+  Eigen::VectorXd assembled_x_;             // kExact: where the last exact Hessian was assembled
   Eigen::VectorXd previous_x_, previous_gradient_;
   double previous_energy_ = 0;
 };

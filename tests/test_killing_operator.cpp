@@ -427,5 +427,76 @@ TEST_CASE("the adaptive eigenvalue filter clamps only after a step the quadratic
   CHECK(newton.mirrored_assemblies() == 2);
   CHECK(akvf::parse_eigenvalue_filter("adaptive") == akvf::EigenvalueFilter::kAdaptive);
   CHECK(akvf::test::error_message([] { akvf::parse_eigenvalue_filter("mirror"); }) ==
-        "unknown eigenvalue filter 'mirror' (valid: clamp, abs, adaptive)");
+        "unknown eigenvalue filter 'mirror' (valid: clamp, abs, adaptive, exact)");
+}
+
+TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive definite, else the clamped one") {
+  const auto direction_and_matrix = [](const akvf::DistortionObjective2D& objective, const Eigen::VectorXd& x,
+                                       akvf::NewtonPreconditioner2D* newton, Eigen::MatrixXd* P) {
+    Eigen::VectorXd g, d;
+    const double energy = objective.value_and_gradient(x, &g);
+    newton->update({x, g, energy, 1});
+    newton->apply(g, &d);
+    *P = Eigen::MatrixXd(newton->matrix().full());
+    CHECK(g.dot(d) > 0);
+    return d;
+  };
+  SUBCASE("a uniformly compressed planar map: elements indefinite, their sum definite but along the rotation") {
+    akvf::TriMesh mesh = akvf::test::grid_disk(7, 6, 0.2, 3);
+    const akvf::DistortionObjective2D objective = unit_area_objective(&mesh);
+    const Eigen::Matrix2d rotation = Eigen::Rotation2Dd(0.4).toRotationMatrix();
+    const Eigen::VectorXd x = akvf::stack_uv(0.99 * mesh.V.leftCols<2>() * rotation.transpose());
+    akvf::NewtonPreconditioner2D exact(objective, {}, akvf::default_newton_projection(2),
+                                       akvf::EigenvalueFilter::kExact);
+    akvf::NewtonPreconditioner2D clamped(objective);
+    Eigen::MatrixXd P_exact, P_clamped;
+    direction_and_matrix(objective, x, &exact, &P_exact);
+    direction_and_matrix(objective, x, &clamped, &P_clamped);
+    CHECK(exact.last_filter() == akvf::EigenvalueFilter::kExact);
+    CHECK(exact.report().find("exact Hessian at 1 of 1 tries") != std::string::npos);
+    // P less its shifts is the Hessian (central differences of the
+    // gradient). Compressed, the map's energy falls as it expands, so the
+    // Hessian's curvature along the rotation is grad E . (x - c) / |x - c|^2 < 0
+    // and P carries twice its magnitude (newton_preconditioner.cpp).
+    Eigen::VectorXd g;
+    objective.value_and_gradient(x, &g);
+    Eigen::MatrixXd centered = 0.99 * mesh.V.leftCols<2>() * rotation.transpose();
+    centered.rowwise() -= centered.colwise().mean();
+    const double rotation_curvature = g.dot(akvf::stack_uv(centered)) / centered.squaredNorm();
+    CHECK(rotation_curvature < 0);
+    P_exact.diagonal().array() += 2 * rotation_curvature;
+    P_exact.diagonal().array() -= kShift * P_exact.diagonal().mean() / (1 + kShift);
+    std::mt19937 rng(3);
+    std::normal_distribution<double> normal;
+    Eigen::VectorXd v(x.size()), g_plus, g_minus;
+    for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = normal(rng);
+    const double h = 1e-6;
+    objective.value_and_gradient(x + h * v, &g_plus);
+    objective.value_and_gradient(x - h * v, &g_minus);
+    const Eigen::VectorXd Hv = (g_plus - g_minus) / (2 * h);
+    CHECK((P_exact * v - Hv).norm() <= 1e-6 * Hv.norm());
+    // The clamp stiffens the compressed elements' twist: another matrix.
+    CHECK((P_clamped * v - Hv).norm() > 1e-3 * Hv.norm());
+  }
+  SUBCASE("a distorted map: the Hessian is indefinite, so the clamped one is factored, and tried again later") {
+    akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
+    const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
+    const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.8);
+    akvf::NewtonPreconditioner2D exact(objective, {}, akvf::default_newton_projection(2),
+                                       akvf::EigenvalueFilter::kExact);
+    akvf::NewtonPreconditioner2D clamped(objective);
+    Eigen::MatrixXd P_exact, P_clamped;
+    const Eigen::VectorXd d_exact = direction_and_matrix(objective, x, &exact, &P_exact);
+    const Eigen::VectorXd d_clamped = direction_and_matrix(objective, x, &clamped, &P_clamped);
+    CHECK(exact.report().find("exact Hessian at 0 of 1 tries") != std::string::npos);
+    CHECK(exact.last_filter() == akvf::EigenvalueFilter::kClamp);
+    CHECK(P_exact == P_clamped);
+    CHECK(d_exact == d_clamped);
+    // One iteration clamped, then the exact Hessian again.
+    direction_and_matrix(objective, x, &exact, &P_exact);
+    CHECK(exact.last_filter() == akvf::EigenvalueFilter::kClamp);
+    direction_and_matrix(objective, x, &exact, &P_exact);
+    CHECK(exact.report().find("exact Hessian at 0 of 2 tries") != std::string::npos);
+    CHECK(akvf::parse_eigenvalue_filter("exact") == akvf::EigenvalueFilter::kExact);
+  }
 }
