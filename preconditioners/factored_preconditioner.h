@@ -149,6 +149,12 @@ class FactoredPreconditioner : public Preconditioner {
   // already built on the objective's elements (shared, not rebuilt).
   FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options, const Matrix& same_elements);
 
+  // True if P's systems are solved by a CHOLMOD factorization (not by
+  // multigrid or Jacobi CG): the factorization tells whether P is positive
+  // definite. Decided by the time assemble() is called.
+  bool solves_by_factorization() const {
+    return options_.linear_solver == LinearSolver::kCholmod && options_.cg_tolerance <= 0;
+  }
   // P's extra diagonal (FactorOptions::extra_diagonal as used).
   const Eigen::VectorXd& extra_diagonal() const { return options_.extra_diagonal; }
 

@@ -68,7 +68,9 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
   } else if (filter_ == EigenvalueFilter::kExact) {
     // The last exact Hessian served (no fallback since): try it at once next time.
     if (last_filter_ == EigenvalueFilter::kExact) exact_backoff_ = 1;
-    last_filter_ = exact_wait_ > 0 ? EigenvalueFilter::kClamp : EigenvalueFilter::kExact;
+    // Only a factorization tells whether the exact Hessian is positive definite.
+    last_filter_ = exact_wait_ > 0 || !this->solves_by_factorization() ? EigenvalueFilter::kClamp
+                                                                        : EigenvalueFilter::kExact;
     if (exact_wait_ > 0) --exact_wait_;
   } else {
     last_filter_ = filter_;

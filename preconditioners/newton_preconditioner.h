@@ -28,7 +28,8 @@
 // direction, the element Hessians are clamped at that x instead, and the
 // exact one is tried again after 1, 2, 4, ... iterations (consecutive
 // failures double the wait, a success resets it), as factorization reuse
-// backs off.
+// backs off. Only a factorization tells whether the Hessian is positive
+// definite: with multigrid or Jacobi CG (FactorOptions) kExact clamps.
 #include <string>
 
 #include "framework/optimization/mesh_objective.h"
