@@ -499,4 +499,17 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
     CHECK(exact.report().find("exact Hessian at 0 of 2 tries") != std::string::npos);
     CHECK(akvf::parse_eigenvalue_filter("exact") == akvf::EigenvalueFilter::kExact);
   }
+  SUBCASE("solved by CG, which cannot tell whether the Hessian is definite, the element Hessians are clamped") {
+    akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
+    const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
+    const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.8);
+    akvf::FactorOptions by_cg;
+    by_cg.cg_tolerance = 0.01;
+    akvf::NewtonPreconditioner2D exact(objective, by_cg, akvf::default_newton_projection(2),
+                                       akvf::EigenvalueFilter::kExact);
+    Eigen::MatrixXd P;
+    direction_and_matrix(objective, x, &exact, &P);
+    CHECK(exact.last_filter() == akvf::EigenvalueFilter::kClamp);
+    CHECK(exact.exact_assemblies() == 0);
+  }
 }
