@@ -15,6 +15,28 @@ EigenvalueFilter parse_eigenvalue_filter(const std::string& name) {
   throw OptionsError("unknown eigenvalue filter '" + name + "' (valid: clamp, abs, adaptive, exact)");
 }
 
+namespace {
+
+// The exact Hessian's curvature along the rotation of a 2D map,
+// r^T H r / |r|^2 with r_i = Q (x_i - c) (c the centroid, Q the quarter
+// turn). E(R_t x) = E(x) for every rotation R_t, so differentiating twice
+// at t = 0, r^T H r = -grad E . d^2/dt^2 R_t x = grad E . (x - c) (the
+// gradient sums to zero over each coordinate), and |r| = |x - c|. It is
+// negative wherever expanding the map lowers the energy, however close to
+// the minimum, and vanishes with the gradient.
+double rotation_curvature_2d(const Eigen::VectorXd& x, const Eigen::VectorXd& gradient) {
+  Eigen::VectorXd centered = x;
+  for (int c = 0; c < 2; ++c) {
+    double mean = 0;
+    for (Eigen::Index i = c; i < centered.size(); i += 2) mean += centered[i];
+    mean /= static_cast<double>(centered.size() / 2);
+    for (Eigen::Index i = c; i < centered.size(); i += 2) centered[i] -= mean;
+  }
+  return gradient.dot(centered) / centered.squaredNorm();
+}
+
+}  // namespace
+
 template <int D>
 NewtonPreconditioner<D>::NewtonPreconditioner(const MeshObjective<D>& objective, FactorOptions options,
                                               MotionProjection projection, EigenvalueFilter filter)
@@ -82,22 +104,8 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
   }
   assemble_filtered(state.x, last_filter_, matrix);
   if (last_filter_ == EigenvalueFilter::kExact && projection_ == MotionProjection::kRigidMotions && D == 2) {
-    // E(R_t x) = E(x) for every rotation R_t, so along the rotation field r
-    // (r_i = J (x_i - c), c the centroid, J the quarter turn),
-    // r^T H r = -grad E . d^2/dt^2 R_t x = grad E . (x - c) (the gradient
-    // sums to zero over each coordinate): negative wherever expanding the
-    // map lowers the energy, and then H is not positive definite, however
-    // close to the minimum. A shift of twice -grad E . (x - c) / |x - c|^2
-    // makes that curvature positive; it vanishes with the gradient.
-    Eigen::VectorXd centered = state.x;
-    for (int c = 0; c < D; ++c) {
-      double mean = 0;
-      for (Eigen::Index i = c; i < centered.size(); i += D) mean += centered[i];
-      mean /= static_cast<double>(centered.size() / D);
-      for (Eigen::Index i = c; i < centered.size(); i += D) centered[i] -= mean;
-    }
-    const double rotation_curvature = state.gradient.dot(centered) / centered.squaredNorm();
-    if (rotation_curvature < 0) matrix->add_to_diagonal(-2 * rotation_curvature);
+    const double curvature = rotation_curvature_2d(state.x, state.gradient);
+    if (curvature < 0) matrix->add_to_diagonal(-2 * curvature);
   }
 }
 

@@ -23,9 +23,14 @@
 // compresses some elements (their twist eigenvalues are negative and
 // clamped to 0), so near a minimum that is not an isometry projected Newton
 // converges only linearly: on camelhead its gradient norm falls by 0.87 per
-// iteration from 1e-3 on (docs/performance.md). When the factorization finds
-// the exact Hessian not positive definite, or its direction is not a descent
-// direction, the element Hessians are clamped at that x instead, and the
+// iteration from 1e-3 on (docs/performance.md). In 2D the Hessian's
+// curvature along the rotation, grad E . (x - c) / |x - c|^2, is negative
+// wherever the map would rather expand, so P adds twice its magnitude to
+// the diagonal (the direction never moves along the rotation, which is
+// projected out; the shift vanishes with the gradient). When the
+// factorization finds the exact Hessian not positive definite, or its
+// direction is not a descent direction, the element Hessians are clamped
+// at that x instead, and the
 // exact one is tried again after 1, 2, 4, ... iterations (consecutive
 // failures double the wait, a success resets it), as factorization reuse
 // backs off. Only a factorization tells whether the Hessian is positive
