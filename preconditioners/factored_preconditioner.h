@@ -155,6 +155,9 @@ class FactoredPreconditioner : public Preconditioner {
   bool solves_by_factorization() const {
     return options_.linear_solver == LinearSolver::kCholmod && options_.cg_tolerance <= 0;
   }
+  // The vertices of each connected component when the mesh has several (the
+  // charts of a cut mesh), else null.
+  const std::vector<std::vector<int>>* component_vertices() const { return component_vertices_.get(); }
   // P's extra diagonal (FactorOptions::extra_diagonal as used).
   const Eigen::VectorXd& extra_diagonal() const { return options_.extra_diagonal; }
 

@@ -17,22 +17,26 @@ EigenvalueFilter parse_eigenvalue_filter(const std::string& name) {
 
 namespace {
 
-// The exact Hessian's curvature along the rotation of a 2D map,
-// r^T H r / |r|^2 with r_i = Q (x_i - c) (c the centroid, Q the quarter
-// turn). E(R_t x) = E(x) for every rotation R_t, so differentiating twice
-// at t = 0, r^T H r = -grad E . d^2/dt^2 R_t x = grad E . (x - c) (the
+// The exact Hessian's curvature along the rotation of the vertices
+// `vertices` of a 2D map (one chart), r^T H r / |r|^2 with
+// r_i = Q (x_i - c) (c their centroid, Q the quarter turn). E(R_t x) = E(x)
+// for every rotation R_t of the chart, so differentiating twice at t = 0,
+// r^T H r = -grad E . d^2/dt^2 R_t x = grad E . (x - c) over the chart (its
 // gradient sums to zero over each coordinate), and |r| = |x - c|. It is
-// negative wherever expanding the map lowers the energy, however close to
+// negative wherever expanding the chart lowers the energy, however close to
 // the minimum, and vanishes with the gradient.
-double rotation_curvature_2d(const Eigen::VectorXd& x, const Eigen::VectorXd& gradient) {
-  Eigen::VectorXd centered = x;
-  for (int c = 0; c < 2; ++c) {
-    double mean = 0;
-    for (Eigen::Index i = c; i < centered.size(); i += 2) mean += centered[i];
-    mean /= static_cast<double>(centered.size() / 2);
-    for (Eigen::Index i = c; i < centered.size(); i += 2) centered[i] -= mean;
+double rotation_curvature_2d(const Eigen::VectorXd& x, const Eigen::VectorXd& gradient,
+                             const std::vector<int>& vertices) {
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  for (int v : vertices) centroid += x.segment<2>(2 * v);
+  centroid /= static_cast<double>(vertices.size());
+  double along = 0, squared_norm = 0;
+  for (int v : vertices) {
+    const Eigen::Vector2d offset = x.segment<2>(2 * v) - centroid;
+    along += gradient.segment<2>(2 * v).dot(offset);
+    squared_norm += offset.squaredNorm();
   }
-  return gradient.dot(centered) / centered.squaredNorm();
+  return along / squared_norm;
 }
 
 }  // namespace
@@ -103,10 +107,29 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
     assembled_x_ = state.x;
   }
   assemble_filtered(state.x, last_filter_, matrix);
-  if (last_filter_ == EigenvalueFilter::kExact && projection_ == MotionProjection::kRigidMotions && D == 2) {
-    const double curvature = rotation_curvature_2d(state.x, state.gradient);
+  if (last_filter_ == EigenvalueFilter::kExact && projection_ == MotionProjection::kRigidMotions && D == 2)
+    add_rotation_shifts(state, matrix);
+}
+
+template <int D>
+void NewtonPreconditioner<D>::add_rotation_shifts(const OptimizationState& state, Matrix* matrix) const {
+  // Twice the negative curvature along each chart's rotation, on that
+  // chart's coordinates (newton_preconditioner.h).
+  const auto* charts = this->component_vertices();
+  if (!charts) {
+    std::vector<int> all(static_cast<size_t>(state.x.size() / D));
+    for (size_t v = 0; v < all.size(); ++v) all[v] = static_cast<int>(v);
+    const double curvature = rotation_curvature_2d(state.x, state.gradient, all);
     if (curvature < 0) matrix->add_to_diagonal(-2 * curvature);
+    return;
   }
+  Eigen::VectorXd shift = Eigen::VectorXd::Zero(state.x.size());
+  for (const std::vector<int>& chart : *charts) {
+    const double curvature = rotation_curvature_2d(state.x, state.gradient, chart);
+    if (curvature < 0)
+      for (int v : chart) shift.template segment<D>(D * v).setConstant(-2 * curvature);
+  }
+  matrix->add_to_diagonal(shift);
 }
 
 template <int D>

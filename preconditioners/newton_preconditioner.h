@@ -24,10 +24,11 @@
 // clamped to 0), so near a minimum that is not an isometry projected Newton
 // converges only linearly: on camelhead its gradient norm falls by 0.87 per
 // iteration from 1e-3 on (docs/performance.md). In 2D the Hessian's
-// curvature along the rotation, grad E . (x - c) / |x - c|^2, is negative
-// wherever the map would rather expand, so P adds twice its magnitude to
-// the diagonal (the direction never moves along the rotation, which is
-// projected out; the shift vanishes with the gradient). When the
+// curvature along the rotation of each chart, grad E . (x - c) / |x - c|^2
+// over the chart, is negative wherever the chart would rather expand, so P
+// adds twice its magnitude to the chart's diagonal (the direction never
+// moves along the rotations, which are projected out; the shift vanishes
+// with the gradient). When the
 // factorization finds the exact Hessian not positive definite, or its
 // direction is not a descent direction, the element Hessians are clamped
 // at that x instead, and the
@@ -80,6 +81,9 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   void assemble(const OptimizationState& state, Matrix* matrix) override;
   Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return motion_basis(D, projection_, x); }
   bool reassemble_semidefinite(Matrix* matrix) override;
+  // kExact in 2D: adds to P's diagonal, on each chart's coordinates, twice
+  // the Hessian's negative curvature along that chart's rotation (module comment).
+  void add_rotation_shifts(const OptimizationState& state, Matrix* matrix) const;
   // Fills matrix with sum_e w_e G_e^T H_e G_e, H_e the element Hessian at x
   // filtered by `filter` (kClamp, kAbsolute or kExact).
   void assemble_filtered(const Eigen::VectorXd& x, EigenvalueFilter filter, Matrix* matrix) const;

@@ -441,42 +441,61 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
     CHECK(g.dot(d) > 0);
     return d;
   };
-  SUBCASE("a uniformly compressed planar map: elements indefinite, their sum definite but along the rotation") {
-    akvf::TriMesh mesh = akvf::test::grid_disk(7, 6, 0.2, 3);
-    const akvf::DistortionObjective2D objective = unit_area_objective(&mesh);
-    const Eigen::Matrix2d rotation = Eigen::Rotation2Dd(0.4).toRotationMatrix();
-    const Eigen::VectorXd x = akvf::stack_uv(0.99 * mesh.V.leftCols<2>() * rotation.transpose());
-    akvf::NewtonPreconditioner2D exact(objective, {}, akvf::default_newton_projection(2),
-                                       akvf::EigenvalueFilter::kExact);
-    akvf::NewtonPreconditioner2D clamped(objective);
-    Eigen::MatrixXd P_exact, P_clamped;
-    direction_and_matrix(objective, x, &exact, &P_exact);
-    direction_and_matrix(objective, x, &clamped, &P_clamped);
-    CHECK(exact.last_filter() == akvf::EigenvalueFilter::kExact);
-    CHECK(exact.report().find("exact Hessian at 1 of 1 tries") != std::string::npos);
-    // P less its shifts is the Hessian (central differences of the
-    // gradient). Compressed, the map's energy falls as it expands, so the
-    // Hessian's curvature along the rotation is grad E . (x - c) / |x - c|^2 < 0
-    // and P carries twice its magnitude (newton_preconditioner.cpp).
-    Eigen::VectorXd g;
-    objective.value_and_gradient(x, &g);
-    Eigen::MatrixXd centered = 0.99 * mesh.V.leftCols<2>() * rotation.transpose();
-    centered.rowwise() -= centered.colwise().mean();
-    const double rotation_curvature = g.dot(akvf::stack_uv(centered)) / centered.squaredNorm();
-    CHECK(rotation_curvature < 0);
-    P_exact.diagonal().array() += 2 * rotation_curvature;
-    P_exact.diagonal().array() -= kShift * P_exact.diagonal().mean() / (1 + kShift);
-    std::mt19937 rng(3);
-    std::normal_distribution<double> normal;
-    Eigen::VectorXd v(x.size()), g_plus, g_minus;
-    for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = normal(rng);
-    const double h = 1e-6;
-    objective.value_and_gradient(x + h * v, &g_plus);
-    objective.value_and_gradient(x - h * v, &g_minus);
-    const Eigen::VectorXd Hv = (g_plus - g_minus) / (2 * h);
-    CHECK((P_exact * v - Hv).norm() <= 1e-6 * Hv.norm());
-    // The clamp stiffens the compressed elements' twist: another matrix.
-    CHECK((P_clamped * v - Hv).norm() > 1e-3 * Hv.norm());
+  SUBCASE("compressed planar charts: elements indefinite, their sum definite but along each chart's rotation") {
+    for (const int charts : {1, 2}) {
+      CAPTURE(charts);
+      // One jittered grid, or two side by side (a cut mesh's charts),
+      // compressed by 0.99 and 0.97 and turned.
+      const akvf::TriMesh grid = akvf::test::grid_disk(7, 6, 0.2, 3);
+      const Eigen::Index n = grid.V.rows();
+      akvf::TriMesh mesh;
+      mesh.V.resize(charts * n, 3);
+      mesh.F.resize(charts * grid.F.rows(), 3);
+      for (int c = 0; c < charts; ++c) {
+        mesh.V.middleRows(c * n, n) = grid.V;
+        mesh.V.middleRows(c * n, n).col(0).array() += 2.0 * c;
+        mesh.F.middleRows(c * grid.F.rows(), grid.F.rows()) = grid.F.array() + static_cast<int>(c * n);
+      }
+      const akvf::DistortionObjective2D objective = unit_area_objective(&mesh);
+      const Eigen::Matrix2d rotation = Eigen::Rotation2Dd(0.4).toRotationMatrix();
+      Eigen::MatrixXd uv = mesh.V.leftCols<2>() * rotation.transpose();
+      for (int c = 0; c < charts; ++c) uv.middleRows(c * n, n) *= c == 0 ? 0.99 : 0.97;
+      const Eigen::VectorXd x = akvf::stack_uv(uv);
+      akvf::NewtonPreconditioner2D exact(objective, {}, akvf::default_newton_projection(2),
+                                         akvf::EigenvalueFilter::kExact);
+      akvf::NewtonPreconditioner2D clamped(objective);
+      Eigen::MatrixXd P_exact, P_clamped;
+      direction_and_matrix(objective, x, &exact, &P_exact);
+      direction_and_matrix(objective, x, &clamped, &P_clamped);
+      CHECK(exact.last_filter() == akvf::EigenvalueFilter::kExact);
+      CHECK(exact.report().find("exact Hessian at 1 of 1 tries") != std::string::npos);
+      // P less its shifts is the Hessian (central differences of the
+      // gradient). Compressed, a chart's energy falls as it expands, so the
+      // Hessian's curvature along its rotation, grad E . (x - c) / |x - c|^2
+      // over the chart, is negative, and P carries twice its magnitude on
+      // the chart's coordinates (newton_preconditioner.h).
+      Eigen::VectorXd g;
+      objective.value_and_gradient(x, &g);
+      for (int c = 0; c < charts; ++c) {
+        Eigen::MatrixXd centered = uv.middleRows(c * n, n);
+        centered.rowwise() -= centered.colwise().mean();
+        const double curvature = g.segment(2 * c * n, 2 * n).dot(akvf::stack_uv(centered)) / centered.squaredNorm();
+        CHECK(curvature < 0);
+        P_exact.diagonal().segment(2 * c * n, 2 * n).array() += 2 * curvature;
+      }
+      P_exact.diagonal().array() -= kShift * P_exact.diagonal().mean() / (1 + kShift);
+      std::mt19937 rng(3);
+      std::normal_distribution<double> normal;
+      Eigen::VectorXd v(x.size()), g_plus, g_minus;
+      for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = normal(rng);
+      const double h = 1e-6;
+      objective.value_and_gradient(x + h * v, &g_plus);
+      objective.value_and_gradient(x - h * v, &g_minus);
+      const Eigen::VectorXd Hv = (g_plus - g_minus) / (2 * h);
+      CHECK((P_exact * v - Hv).norm() <= 1e-6 * Hv.norm());
+      // The clamp stiffens the compressed elements' twist: another matrix.
+      CHECK((P_clamped * v - Hv).norm() > 1e-3 * Hv.norm());
+    }
   }
   SUBCASE("a distorted map: the Hessian is indefinite, so the clamped one is factored, and tried again later") {
     akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
