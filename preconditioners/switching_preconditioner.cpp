@@ -14,7 +14,10 @@ void SwitchingPreconditioner::update(const OptimizationState& state) {
     const bool curvature_limited = step > 0 && step < rule_.bound_share * state.previous_max_step;
     const bool newton_like =
         state.previous_backtracked && step >= std::sqrt(rule_.backtracking_factor) * rule_.isometric_step;
-    curvature_limited_steps_ = curvature_limited && !newton_like ? curvature_limited_steps_ + 1 : 0;
+    // More than Newton's step lowers the logarithm of an exponential energy (module comment).
+    const bool beyond_newton = state.energy * std::exp(1.0) < previous_energy_;
+    curvature_limited_steps_ = curvature_limited && !newton_like && !beyond_newton ? curvature_limited_steps_ + 1 : 0;
+    previous_energy_ = state.energy;
     if (curvature_limited_steps_ >= rule_.patience) {
       second_ = make_second_();
       switch_iteration_ = state.iteration;

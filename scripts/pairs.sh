@@ -12,7 +12,9 @@ MESH=${1:-$DATA/tri/cow_b.obj}
 [ -f "$MESH" ] || { echo "mesh not found: $MESH (set AKVF_DATA_DIR)" >&2; exit 1; }
 
 energies=$("$AKVF" list | awk '/^energies/{on=1; next} /^[a-z]/{on=0} on{print $1}')
-methods=$("$AKVF" list | awk '/^(preconditioners|solvers)/{on=1; next} /^[a-z]/{on=0} on{print $1}')
+# Every preconditioner, and every solver but `descent` (the preconditioned
+# descent the preconditioners already run).
+methods=$("$AKVF" list | awk '/^(preconditioners|solvers)/{on=1; next} /^[a-z]/{on=0} on && $1 != "descent"{print $1}')
 
 echo "# Energy x preconditioner pairs"
 echo
@@ -33,7 +35,7 @@ for m in $methods; do
   printf '| %s |' "$m"
   for e in $energies; do
     line=$("$AKVF" param "$MESH" --quiet --energy "$e" --precond "$m" --max-iters 100 --grad-tol 0 2>/dev/null \
-           | awk '/^status/ {gsub(",", ""); print $9 " / " $6 " s / " $2}') || true
+           | sed -n 's/^status \([a-z-]*\).* after [0-9]* iterations, \([0-9.]*\) s: energy \([^,]*\),.*/\3 \/ \2 s \/ \1/p') || true
     printf ' %s |' "${line:-error}"
   done
   echo
