@@ -41,26 +41,34 @@ SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const Precondition
   return rule;
 }
 
-// AKVF, then projected Newton on the same matrix pattern: the Newton phase
-// shares AKVF's assembly pattern (element_matrix.h) and takes over its
-// symbolic analysis and factor memory at the switch, where AKVF is released,
-// so the switch costs no setup the pure methods do not pay before their
-// start, and no second analysis or factor is kept.
+// AKVF, then projected Newton on the same matrix pattern, and AKVF again if
+// Newton's steps meet the flip-free bound (switching_preconditioner.h): each
+// takes over the other's symbolic analysis and factor memory at a switch,
+// where the other is released, so a switch costs no setup the pure methods
+// do not pay before their start, and no second analysis or factor is kept.
 template <int D, class Akvf, class Settings>
 std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objective, const Settings& settings) {
   const FactorOptions newton = newton_phase_options(settings);
   const EigenvalueFilter filter = settings.newton_phase_filter;
-  auto akvf = std::make_unique<Akvf>(objective, settings.akvf);
-  Akvf* first = akvf.get();  // owned by the switching preconditioner, which calls the factory before releasing it
+  const auto akvf_options = settings.akvf;
+  auto factored = [](Preconditioner& current) -> FactoredPreconditioner<D>& {
+    return dynamic_cast<FactoredPreconditioner<D>&>(current);
+  };
   return std::make_unique<SwitchingPreconditioner>(
-      "akvf-newton", std::move(akvf),
-      [&objective, first, newton, filter] {
-        auto second = std::make_unique<NewtonPreconditioner<D>>(objective, first->matrix(), newton,
+      "akvf-newton", std::make_unique<Akvf>(objective, akvf_options),
+      [&objective, newton, filter, factored](Preconditioner& current) {
+        FactoredPreconditioner<D>& akvf = factored(current);
+        auto second = std::make_unique<NewtonPreconditioner<D>>(objective, akvf.matrix(), newton,
                                                                 default_newton_projection(D), filter);
-        second->take_over_factorization(*first);
-        return second;
+        second->take_over_factorization(akvf);
+        return std::unique_ptr<Preconditioner>(std::move(second));
       },
-      akvf_switch_rule(objective, settings));
+      akvf_switch_rule(objective, settings),
+      [&objective, akvf_options, factored](Preconditioner& current) {
+        auto first = std::make_unique<Akvf>(objective, akvf_options);
+        first->take_over_factorization(factored(current));
+        return std::unique_ptr<Preconditioner>(std::move(first));
+      });
 }
 
 }  // namespace

@@ -4,54 +4,89 @@
 
 namespace akvf {
 
+namespace {
+
+void add_statistics(const PreconditionerStatistics& more, PreconditionerStatistics* sum) {
+  sum->factorizations += more.factorizations;
+  sum->cg_solves += more.cg_solves;
+  sum->reused_solves += more.reused_solves;
+  sum->cg_iterations += more.cg_iterations;
+  sum->symbolic_analyses += more.symbolic_analyses;
+  sum->multigrid_setups += more.multigrid_setups;
+}
+
+}  // namespace
+
 SwitchingPreconditioner::SwitchingPreconditioner(std::string name, std::unique_ptr<Preconditioner> first,
-                                                 Factory second, SwitchRule rule)
-    : name_(std::move(name)), first_(std::move(first)), make_second_(std::move(second)), rule_(rule) {}
+                                                 Factory second, SwitchRule rule, Factory first_again)
+    : name_(std::move(name)),
+      current_(std::move(first)),
+      make_second_(std::move(second)),
+      make_first_again_(std::move(first_again)),
+      rule_(rule),
+      patience_(rule.patience) {}
+
+bool SwitchingPreconditioner::leave_first(const OptimizationState& state) {
+  const double step = state.previous_step;
+  const bool curvature_limited = step > 0 && step < rule_.bound_share * state.previous_max_step;
+  const bool newton_like =
+      state.previous_backtracked && step >= std::sqrt(rule_.backtracking_factor) * rule_.isometric_step;
+  // More than Newton's step lowers the logarithm of an exponential energy (module comment).
+  const bool beyond_newton = state.energy * std::exp(1.0) < previous_energy_;
+  limited_steps_ = curvature_limited && !newton_like && !beyond_newton ? limited_steps_ + 1 : 0;
+  return limited_steps_ >= patience_;
+}
+
+bool SwitchingPreconditioner::leave_second(const OptimizationState& state) {
+  // The first trial min(1, 0.8 alpha_max) was below Newton's unit step and
+  // accepted at once: the flip-free bound set it; and the bound is closer
+  // than the step before's: the steps close in on a collapse (module comment).
+  const double step = state.previous_step;
+  const bool bound_limited = step > 0 && step < 1 && !state.previous_backtracked;
+  const bool closing_in = state.previous_max_step < previous_max_step_;
+  limited_steps_ = bound_limited && closing_in ? limited_steps_ + 1 : 0;
+  return limited_steps_ >= rule_.patience;
+}
+
+std::string SwitchingPreconditioner::current_report() const {
+  const std::string since = switches_.empty() ? "" : "from iteration " + std::to_string(switches_.back()) + " ";
+  return since + current_->name() + ": " + current_->report();
+}
+
+void SwitchingPreconditioner::switch_to(const Factory& make, int iteration) {
+  std::unique_ptr<Preconditioner> next = make(*current_);
+  released_reports_ += (released_reports_.empty() ? "" : "; ") + current_report();
+  add_statistics(current_->statistics(), &released_statistics_);
+  current_ = std::move(next);
+  switches_.push_back(iteration);
+  limited_steps_ = 0;
+}
 
 void SwitchingPreconditioner::update(const OptimizationState& state) {
-  if (!second_) {
-    const double step = state.previous_step;
-    const bool curvature_limited = step > 0 && step < rule_.bound_share * state.previous_max_step;
-    const bool newton_like =
-        state.previous_backtracked && step >= std::sqrt(rule_.backtracking_factor) * rule_.isometric_step;
-    // More than Newton's step lowers the logarithm of an exponential energy (module comment).
-    const bool beyond_newton = state.energy * std::exp(1.0) < previous_energy_;
-    curvature_limited_steps_ = curvature_limited && !newton_like && !beyond_newton ? curvature_limited_steps_ + 1 : 0;
-    previous_energy_ = state.energy;
-    if (curvature_limited_steps_ >= rule_.patience) {
-      second_ = make_second_();
-      switch_iteration_ = state.iteration;
-      first_report_ = first_report();
-      first_statistics_ = first_->statistics();
-      first_.reset();
-    }
+  // The last step is the phase in use's: a switch takes effect at once.
+  if (!in_second() && leave_first(state)) {
+    switch_to(make_second_, state.iteration);
+  } else if (in_second() && make_first_again_ && leave_second(state)) {
+    switch_to(make_first_again_, state.iteration);
+    patience_ *= 2;
   }
-  (second_ ? *second_ : *first_).update(state);
+  previous_energy_ = state.energy;
+  previous_max_step_ = state.previous_max_step;
+  current_->update(state);
 }
 
 void SwitchingPreconditioner::apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) {
-  (second_ ? *second_ : *first_).apply(gradient, result);
+  current_->apply(gradient, result);
 }
 
-std::string SwitchingPreconditioner::first_report() const { return first_->name() + ": " + first_->report(); }
-
 std::string SwitchingPreconditioner::report() const {
-  if (!second_) return first_report() + "; no switch";
-  return first_report_ + "; from iteration " + std::to_string(switch_iteration_) + " " + second_->name() + ": " +
-         second_->report();
+  return released_reports_ + (released_reports_.empty() ? "" : "; ") + current_report() +
+         (switches_.empty() ? "; no switch" : "");
 }
 
 PreconditionerStatistics SwitchingPreconditioner::statistics() const {
-  PreconditionerStatistics sum = second_ ? first_statistics_ : first_->statistics();
-  if (second_) {
-    const PreconditionerStatistics more = second_->statistics();
-    sum.factorizations += more.factorizations;
-    sum.cg_solves += more.cg_solves;
-    sum.reused_solves += more.reused_solves;
-    sum.cg_iterations += more.cg_iterations;
-    sum.symbolic_analyses += more.symbolic_analyses;
-    sum.multigrid_setups += more.multigrid_setups;
-  }
+  PreconditionerStatistics sum = released_statistics_;
+  add_statistics(current_->statistics(), &sum);
   return sum;
 }
 

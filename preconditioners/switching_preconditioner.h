@@ -1,6 +1,7 @@
 #pragma once
-// Two preconditioners in sequence: the first while the flip-free bound
-// decides the step, the second once the energy's curvature does.
+// Two preconditioners: the first while the flip-free bound decides the
+// step, the second once the energy's curvature does (and the first again if
+// the bound comes back).
 //
 // AKVF (§4-§5) is at its best far from the minimum, where the step is set by
 // the flip-free bound alpha_max (§5.3) and K's near-rigid global motions
@@ -39,13 +40,32 @@
 // On a nearly isometric map (hilbert_b, a developable strip) AKVF's steps
 // are 1/c and it keeps AKVF, whose K models the flat bending modes better
 // than the per-element projected Hessian (docs/design.md, "The default
-// method"). The switch is made once and never undone, so the first
-// preconditioner is released then (its report and statistics kept): its
-// factor would otherwise stay in memory beside the second's.
+// method").
+//
+// Back to the first: Newton's quadratic model has its minimizer at the unit
+// step. When the line search's first trial, 0.8 alpha_max, is below 1 and
+// accepted at once, the flip-free bound and not the curvature set Newton's
+// step: the model's minimizer lies beyond an inversion. That alone is no
+// reason to leave (right after a switch Newton's first steps often meet the
+// bound and still gain most: MIPS on camelhead), but when alpha_max is also
+// smaller than the step before's, the steps close in on a collapse: each
+// goes 0.8 of the way to it, and if the direction keeps pointing there the
+// bound shrinks geometrically and the run stalls. An energy without a
+// barrier does that: with ARAP on cow_b the default stalled at 0.1496 after
+// 37 iterations, alpha_max falling fivefold per step, where AKVF reaches
+// 0.01655 in 100 (docs/pairs.md). After `patience` such Newton steps in a
+// row the first preconditioner is rebuilt and takes over the second's
+// factorization. Each
+// return doubles the patience of the next switch to the second, so a run
+// whose Newton phases keep meeting the barrier spends ever less of its
+// iterations there. Whichever preconditioner is not in use is released (its
+// report and statistics are kept): its factor would otherwise stay in memory
+// beside the other's.
 #include <functional>
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "framework/optimization/preconditioner.h"
 
@@ -62,31 +82,44 @@ struct SwitchRule {
 
 class SwitchingPreconditioner final : public Preconditioner {
  public:
-  using Factory = std::function<std::unique_ptr<Preconditioner>()>;
-  // `second` is built when the switch happens (its setup costs nothing before).
+  // Builds a preconditioner when a switch happens (its setup costs nothing
+  // before), from the one in use, whose factorization it may take over;
+  // the one in use is released right after.
+  using Factory = std::function<std::unique_ptr<Preconditioner>(Preconditioner& current)>;
+  // Without `first_again` the switch to `second` is never undone.
   SwitchingPreconditioner(std::string name, std::unique_ptr<Preconditioner> first, Factory second,
-                          SwitchRule rule = {});
+                          SwitchRule rule = {}, Factory first_again = nullptr);
 
   std::string name() const override { return name_; }
   void update(const OptimizationState& state) override;
   void apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) override;
   std::string report() const override;
   PreconditionerStatistics statistics() const override;
-  // The iteration at which the second preconditioner took over, or 0.
-  int switch_iteration() const { return switch_iteration_; }
+  // The iteration at which the second preconditioner first took over, or 0.
+  int switch_iteration() const { return switches_.empty() ? 0 : switches_.front(); }
+  // Every iteration at which the preconditioner in use changed, in order
+  // (first to second, back to the first, ...).
+  const std::vector<int>& switches() const { return switches_; }
+  bool in_second() const { return switches_.size() % 2 == 1; }
 
  private:
-  std::string first_report() const;  // "name: report" of the first, while it exists
+  // Counts the last step toward leaving the phase in use; true to leave.
+  bool leave_first(const OptimizationState& state);
+  bool leave_second(const OptimizationState& state);
+  void switch_to(const Factory& make, int iteration);
+  std::string current_report() const;  // "[from iteration k ]name: report" of the one in use
 
   std::string name_;
-  std::unique_ptr<Preconditioner> first_, second_;
-  std::string first_report_;  // "name: report" of the first, kept when it is released
-  PreconditionerStatistics first_statistics_;
-  Factory make_second_;
+  std::unique_ptr<Preconditioner> current_;
+  Factory make_second_, make_first_again_;
   SwitchRule rule_;
-  int curvature_limited_steps_ = 0;
+  std::string released_reports_;  // "name: report; from iteration k name: report; ..." of the released ones
+  PreconditionerStatistics released_statistics_;
+  std::vector<int> switches_;
+  int patience_;                  // of the next switch to the second
+  int limited_steps_ = 0;         // consecutive steps that count toward leaving the phase in use
   double previous_energy_ = std::numeric_limits<double>::quiet_NaN();  // at the last update
-  int switch_iteration_ = 0;
+  double previous_max_step_ = 0;  // alpha_max of the step before the last
 };
 
 }  // namespace akvf

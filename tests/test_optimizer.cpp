@@ -81,6 +81,27 @@ class NanGradientBelow final : public akvf::Objective {
   double threshold_;
 };
 
+// The distortion objective, except that every iterate whose energy is below
+// `threshold` counts one inverted element: what rounding does to an element
+// that an energy without a barrier (ARAP) has collapsed.
+class InvertedBelow final : public akvf::Objective {
+ public:
+  InvertedBelow(const akvf::Objective& base, double threshold) : base_(base), threshold_(threshold) {}
+  int num_variables() const override { return base_.num_variables(); }
+  double value(const Eigen::VectorXd& x) const override { return base_.value(x); }
+  double value_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd* g) const override {
+    return base_.value_and_gradient(x, g);
+  }
+  double max_feasible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d) const override {
+    return base_.max_feasible_step(x, d);
+  }
+  int count_inverted(const Eigen::VectorXd& x) const override { return base_.value(x) < threshold_ ? 1 : 0; }
+
+ private:
+  const akvf::Objective& base_;
+  double threshold_;
+};
+
 }  // namespace
 
 TEST_CASE("symmetric Dirichlet reaches exactly 4 on a developable mesh") {
@@ -175,6 +196,22 @@ TEST_CASE("a non-finite direction or gradient ends the run with a status naming 
   CHECK(stopped.x.allFinite());
   CHECK(setup.objective->value(stopped.x) == stopped.trace.back().energy);
   CHECK(stopped.trace.back().energy >= 0.999 * stopped.trace.front().energy);
+}
+
+// optimizer.cpp: below alpha_max no element inverts in exact arithmetic, so
+// an inversion there is an element degenerate to rounding.
+TEST_CASE("an element inverted by rounding within the flip-free bound ends the run as stalled, not failed") {
+  ParamConfig config;
+  const auto setup = akvf::prepare_parameterization(akvf::test::bumpy_disk(6, 6), "test", config);
+  const akvf::BacktrackingLineSearch search;
+  const InvertedBelow inverted_below(*setup.objective, 0.999 * setup.objective->value(setup.x0));
+  akvf::AkvfPreconditioner2D akvf_preconditioner(*setup.objective);
+  const auto result = akvf::minimize(inverted_below, akvf_preconditioner, search, setup.x0, config.optimizer);
+  CHECK(result.status == TerminationStatus::kStalled);
+  CHECK(akvf::is_normal_termination(result.status));
+  CHECK(result.message.find("iteration 1 would invert 1 element(s) within the flip-free bound") == 0);
+  CHECK(result.x == setup.x0);
+  CHECK(result.trace.size() == 1);
 }
 
 TEST_CASE("the distortion objective names the first bad element of an iterate") {
@@ -395,7 +432,7 @@ TEST_CASE("akvf-newton switches after two curvature-set steps that do not show A
   auto switch_after = [&](const std::vector<Step>& steps) {
     akvf::SwitchingPreconditioner p(
         "test", std::make_unique<akvf::IdentityPreconditioner>(),
-        [] { return std::make_unique<akvf::IdentityPreconditioner>(); }, rule);
+        [](akvf::Preconditioner&) { return std::make_unique<akvf::IdentityPreconditioner>(); }, rule);
     const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
     p.update({x, g, 1.0, 1});
     int k = 2;
@@ -415,4 +452,58 @@ TEST_CASE("akvf-newton switches after two curvature-set steps that do not show A
   // Without an isometric step (infinity) every curvature-set step counts.
   rule.isometric_step = std::numeric_limits<double>::infinity();
   CHECK(switch_after({{0.25, 100, true}, {0.25, 100, true}}) == 3);
+}
+
+// switching_preconditioner.h: Newton steps whose first trial, below the unit
+// step, was set by a flip-free bound closer than the step before's and
+// accepted at once send the run back to the first preconditioner after
+// `patience` of them; each return doubles the patience of the next switch to
+// the second.
+TEST_CASE("akvf-newton returns to AKVF after two Newton steps closing in on a collapse") {
+  akvf::SwitchRule rule;  // isometric step infinity: every curvature-set step counts
+  struct Step {
+    double step, max_step;
+    bool backtracked;
+  };
+  int built_second = 0, built_first = 0;
+  akvf::SwitchingPreconditioner p(
+      "test", std::make_unique<akvf::IdentityPreconditioner>(),
+      [&](akvf::Preconditioner&) {
+        ++built_second;
+        return std::make_unique<akvf::IdentityPreconditioner>();
+      },
+      rule,
+      [&](akvf::Preconditioner&) {
+        ++built_first;
+        return std::make_unique<akvf::IdentityPreconditioner>();
+      });
+  const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
+  int k = 1;
+  auto run = [&](const std::vector<Step>& steps) {
+    for (const Step& s : steps) p.update({x, g, 1.0, k++, s.step, s.max_step, s.backtracked});
+  };
+  const Step curvature{0.25, 100, true}, unit{1.0, 5, false};
+  auto bound = [](double max_step) { return Step{0.8 * max_step, max_step, false}; };
+  run({{0, 0, false}, curvature, curvature});  // iterations 1-3: switch at 3
+  CHECK(p.switches() == std::vector<int>{3});
+  CHECK(p.in_second());
+  // One bound-set Newton step, then a unit step: the count starts over.
+  run({bound(0.5), unit, bound(0.5)});  // iterations 4-6
+  CHECK(p.switches() == std::vector<int>{3});
+  // Bound-set steps whose bound recedes do not count (MIPS on camelhead).
+  run({bound(0.6), bound(1.1), bound(1.2)});  // iterations 7-9
+  CHECK(p.switches() == std::vector<int>{3});
+  // A backtracked short step is the curvature's, not the bound's.
+  run({{0.4, 0.5, true}, bound(0.2), bound(0.04)});  // iterations 10-12: back at 12
+  CHECK(p.switches() == std::vector<int>{3, 12});
+  CHECK(!p.in_second());
+  CHECK(built_second == 1);
+  CHECK(built_first == 1);
+  // The next switch to Newton needs twice the patience: 4 curvature-set steps.
+  run({curvature, curvature, curvature});
+  CHECK(p.switches() == std::vector<int>{3, 12});
+  run({curvature});
+  CHECK(p.switches() == std::vector<int>{3, 12, 16});
+  CHECK(p.report().find("from iteration 12 identity") != std::string::npos);
+  CHECK(p.report().find("from iteration 16 identity") != std::string::npos);
 }

@@ -182,6 +182,16 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
       // whose row ends the trace.
       const std::string note = bad_element_note(objective, x);
       x.swap(previous);
+      // In exact arithmetic no element inverts below alpha_max (§5.3), so an
+      // inversion there means an element was already degenerate to rounding:
+      // an energy without a barrier (ARAP) lets elements collapse, and the
+      // bound cannot be resolved any further. The run has ended, not failed.
+      if (std::isfinite(energy) && std::isfinite(row.grad_norm) && search.step < search.max_feasible_step)
+        return finish(TerminationStatus::kStalled,
+                      "iteration " + std::to_string(k) + " would invert " + std::to_string(row.flips) +
+                          " element(s) within the flip-free bound, i.e. an element has collapsed to rounding (the "
+                          "energy does not keep it from inverting)" +
+                          note + "; the previous iterate is kept");
       return finish(TerminationStatus::kNumericalFailure,
                     "iteration " + std::to_string(k) +
                         " produced a non-finite energy or gradient or an inverted element (" +
