@@ -65,6 +65,12 @@ class SparseCholesky {
   int index_bits() const;
   // Tests: analyze with the 64-bit interface whatever the factor's size.
   void use_64_bit_indices(bool on);
+  // The fill-reducing ordering of the last analysis: "amd", or "metis" (its
+  // nested dissection, computed besides AMD's on large meshes and kept when
+  // it needs fewer flops; sparse_cholesky.cpp says when).
+  std::string ordering() const;
+  // Tests: compute METIS's ordering besides AMD's whatever the size.
+  void always_try_metis(bool on);
   // Share of the supernodal factor's entries whose triangular solves run on
   // one core (the top of the elimination tree; the rest is split between two
   // cores, see solvers/supernodal_solve.h). 1 for a simplicial factor.

@@ -120,6 +120,32 @@ TEST_CASE("CHOLMOD's 64-bit interface gives the 32-bit interface's bits, analyze
   }
 }
 
+// sparse_cholesky.cpp, use_metis: small meshes keep AMD's ordering; METIS's
+// nested dissection, when tried, is kept only if it needs fewer flops, and
+// solves the same system.
+TEST_CASE("METIS's nested dissection, where it is tried, solves the same system as AMD's ordering") {
+  const akvf::ElementMatrix2D K = shifted_killing(120);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), -1.0, 2.0).array().sin();
+  const Eigen::SparseMatrix<double> A = K.upper().selfadjointView<Eigen::Upper>();
+  akvf::SparseCholesky amd, tried;
+  tried.always_try_metis(true);
+  amd.analyze(K.upper(), 2);
+  tried.analyze(K.upper(), 2);
+  CHECK(amd.ordering() == "amd");  // 120 x 120 vertices: below the size where METIS is tried
+  // On a square grid nested dissection needs fewer flops already at this size.
+  CHECK(tried.ordering() == "metis");
+  CHECK(tried.factor_flops() < amd.factor_flops());
+  akvf::SparseCholesky copied;
+  copied.copy_analysis(tried);
+  CHECK(copied.ordering() == tried.ordering());
+  for (akvf::SparseCholesky* cholesky : {&amd, &tried}) {
+    cholesky->factorize(K.upper());
+    Eigen::VectorXd x;
+    cholesky->solve(b, &x);
+    CHECK((A * x - b).norm() <= 1e-10 * b.norm());
+  }
+}
+
 TEST_CASE("a kept analysis is shared, and solving before a factorization is refused") {
   const akvf::ElementMatrix2D K = shifted_killing(20);
   akvf::SparseCholesky analyzed, copy;
