@@ -188,7 +188,7 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                               }));
     f.push_back(text_field<O>("cut", "cut", "none|auto",
                               "auto cuts a closed, multi-boundary, higher-genus or multi-component mesh into disks "
-                              "(one chart per component, side by side); none refuses such meshes (default none)",
+                              "(one chart per component, side by side); none refuses such meshes",
                               &O::cut, [](const O& o) {
                                 if (o.cut != "none" && o.cut != "auto")
                                   throw OptionsError("unknown cut '" + o.cut + "' (valid: none, auto)");
