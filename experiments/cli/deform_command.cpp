@@ -93,11 +93,10 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
     record_options(deform_option_fields(), options, &settings);
     settings["preset"] = preset;
     settings["constraints"] = cl.text("constraints", "");
-    write_summary(summary_path,
-                  single_run_summary(
-                      "deform", path, settings,
-                      run_record(run.result, energies_3d().create(options.energy, {options.exponent})->lower_bound(),
-                                 mesh.num_vertices(), mesh.num_tets())));
+    Json record = run_record(run.result, energies_3d().create(options.energy, {options.exponent})->lower_bound(),
+                             mesh.num_vertices(), mesh.num_tets());
+    record["linear_algebra"] = linear_algebra_record(run.preconditioner_statistics, run.preconditioner_report);
+    write_summary(summary_path, single_run_summary("deform", path, settings, record));
   }
   return exit_code_of(run.result);
 }

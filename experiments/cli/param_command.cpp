@@ -53,11 +53,12 @@ ParameterizeOptions options_from(const CommandLine& cl) {
 
 // The --summary record: the run's options, then its outcome and the machine.
 Json param_summary(const std::string& mesh_file, const ParameterizeOptions& options, const ParamSetup& setup,
-                   const OptimizerResult& result) {
+                   const ParamRun& run) {
   Json settings;
   record_options(parameterize_option_fields(), options, &settings);
-  Json record =
-      run_record(result, setup.objective->lower_bound(), setup.disk.mesh.num_vertices(), setup.disk.mesh.num_faces());
+  Json record = run_record(run.result, setup.objective->lower_bound(), setup.disk.mesh.num_vertices(),
+                           setup.disk.mesh.num_faces());
+  record["linear_algebra"] = linear_algebra_record(run.preconditioner_statistics, run.preconditioner_report);
   if (setup.disk.cut) record["cut"] = cut_record(setup.disk);
   return single_run_summary("param", mesh_file, settings, record);
 }
@@ -113,7 +114,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
                          " iterations, E = " + std::to_string(last.energy));
   if (!outputs.png.empty()) write_layout_png(outputs.png, setup, result.x, outputs.png_size);
   if (!outputs.summary.empty() || !outputs.view.empty()) {
-    const Json summary = param_summary(name, options, setup, result);
+    const Json summary = param_summary(name, options, setup, run);
     if (!outputs.summary.empty()) write_summary(outputs.summary, summary);
     if (!outputs.view.empty()) {
       ViewContent view = view_of(setup, result.x, std::filesystem::path(name).filename().string());

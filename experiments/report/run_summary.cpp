@@ -77,6 +77,16 @@ Json run_record(const OptimizerResult& result, double lower_bound, int vertices,
   return record;
 }
 
+Json linear_algebra_record(const PreconditionerStatistics& statistics, const std::string& report) {
+  return Json{{"factorizations", statistics.factorizations},
+              {"reused_solves", statistics.reused_solves},
+              {"cg_solves", statistics.cg_solves},
+              {"cg_iterations", statistics.cg_iterations},
+              {"symbolic_analyses", statistics.symbolic_analyses},
+              {"multigrid_setups", statistics.multigrid_setups},
+              {"report", report}};
+}
+
 Json cut_record(const DiskMesh& disk) {
   return {{"charts", disk.num_charts()},
           {"cut_edges", disk.cut_edges},

@@ -11,6 +11,7 @@
 #include "akvf/option_schema.h"
 #include "framework/mesh/mesh_validation.h"
 #include "framework/optimization/optimizer.h"
+#include "framework/optimization/preconditioner.h"
 
 namespace akvf {
 
@@ -30,6 +31,12 @@ Json machine_record();
 // the tolerance), iterations, seconds, final_energy, lower_bound, grad_norm,
 // max_flips (over all iterates), vertices, elements, peak_memory_mb.
 Json run_record(const OptimizerResult& result, double lower_bound, int vertices, int elements);
+
+// What the linear algebra cost: factorizations, reused_solves (CG with an
+// earlier factorization), cg_solves (plain Jacobi CG), cg_iterations,
+// symbolic_analyses, multigrid_setups, and the preconditioner's one-line
+// report (for akvf-newton: each phase, where it switched).
+Json linear_algebra_record(const PreconditionerStatistics& statistics, const std::string& report);
 
 // What the automatic cut did (--cut auto): charts, cut_edges, and per chart
 // the genus and boundary loops of its component before the cut.

@@ -55,6 +55,7 @@ struct CaseResult {
   int vertices = 0, elements = 0;
   std::optional<ViewContent> view;  // the final map, when views are asked for
   Json cut;                         // cut_record after --cut auto, else null
+  Json linear_algebra;              // linear_algebra_record
 };
 
 CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, const std::string& mesh_path,
@@ -81,7 +82,9 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
     return CallbackAction::kContinue;
   });
   CaseResult out;
-  out.result = run_parameterization(setup, config, callbacks).result;
+  ParamRun run = run_parameterization(setup, config, callbacks);
+  out.result = std::move(run.result);
+  out.linear_algebra = linear_algebra_record(run.preconditioner_statistics, run.preconditioner_report);
   if (!s.snapshots.empty())  // also the layout where the run stopped (it may stop before a snapshot)
     snapshot("final", out.result.x,
              c.mesh_label + " - " + c.method_label + ", final (iteration " +
@@ -122,6 +125,7 @@ CaseResult run_deform_case(const ExperimentCase& c, const std::string& mesh_path
   const DeformRun run = run_deformation(mesh, mesh_path, constraints, config, {progress});
   CaseResult out;
   out.result = run.result;
+  out.linear_algebra = linear_algebra_record(run.preconditioner_statistics, run.preconditioner_report);
   out.lower_bound = energies_3d().create(s.deform.energy, {s.deform.exponent})->lower_bound();
   out.vertices = run.prepared.mesh.num_vertices();
   out.elements = run.prepared.mesh.num_tets();
@@ -153,6 +157,7 @@ Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOpt
                        : run_deform_case(c, path, manifest, options.data_dir, trace.callback());
     trace.finish(r.result);
     summary.update(run_record(r.result, r.lower_bound, r.vertices, r.elements));
+    summary["linear_algebra"] = r.linear_algebra;
     if (!r.cut.is_null()) summary["cut"] = r.cut;
     if (r.view) {
       r.view->summary = summary;

@@ -42,6 +42,10 @@ def test_param_summaries_validate(program, tmp_path):
                    check=True, capture_output=True)
     summary = validate(tmp_path / "a.json")
     assert summary["problem"] == "param" and "cut" not in summary
+    # The default method factors at least once and its report names AKVF's phase.
+    linear_algebra = summary["linear_algebra"]
+    assert linear_algebra["factorizations"] >= 1 and linear_algebra["symbolic_analyses"] == 1
+    assert linear_algebra["report"].startswith("akvf: ")
     V, F = torus()
     write_obj(tmp_path / "torus.obj", V, F)
     subprocess.run([program, "param", str(tmp_path / "torus.obj"), "--cut", "auto", "--summary",
