@@ -54,13 +54,13 @@
 // barrier does that: with ARAP on cow_b the default stalled at 0.1496 after
 // 37 iterations, alpha_max falling fivefold per step, where AKVF reaches
 // 0.01655 in 100 (docs/pairs.md). After `patience` such Newton steps in a
-// row the first preconditioner is rebuilt and takes over the second's
-// factorization. Each
-// return doubles the patience of the next switch to the second, so a run
-// whose Newton phases keep meeting the barrier spends ever less of its
-// iterations there. Whichever preconditioner is not in use is released (its
-// report and statistics are kept): its factor would otherwise stay in memory
-// beside the other's.
+// row the first preconditioner is rebuilt (its assembly pattern anew) and
+// takes over the second's analysis and factor. Each return doubles the
+// patience of the next switch to the second, so a run whose Newton phases
+// keep meeting the barrier spends ever less of its iterations there.
+// Whichever preconditioner is not in use is released (its report and
+// statistics are kept): its factor would otherwise stay in memory beside the
+// other's.
 #include <functional>
 #include <limits>
 #include <memory>
