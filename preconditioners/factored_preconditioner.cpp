@@ -97,6 +97,8 @@ std::string FactoredPreconditioner<D>::report() const {
   std::string line = std::to_string(statistics_.factorizations) + " factorizations, " +
                      std::to_string(statistics_.reused_solves) + " solves with an earlier factor (" +
                      std::to_string(statistics_.cg_iterations) + " CG iterations)";
+  // Only the large meshes' ordering is worth a word (sparse_cholesky.cpp, use_metis).
+  if (cholesky_.ordering() == "metis") line += ", METIS ordering";
   if (shift_increases_ > 0)
     line += "; " + std::to_string(shift_increases_) + " retried with a 100x larger shift";
   return line;
