@@ -87,8 +87,8 @@ class SwitchingPreconditioner final : public Preconditioner {
   // the one in use is released right after.
   using Factory = std::function<std::unique_ptr<Preconditioner>(Preconditioner& current)>;
   // Without `first_again` the switch to `second` is never undone.
-  SwitchingPreconditioner(std::string name, std::unique_ptr<Preconditioner> first, Factory second,
-                          SwitchRule rule = {}, Factory first_again = nullptr);
+  SwitchingPreconditioner(std::string name, std::unique_ptr<Preconditioner> first, Factory second, SwitchRule rule = {},
+                          Factory first_again = nullptr);
 
   std::string name() const override { return name_; }
   void update(const OptimizationState& state) override;
@@ -116,10 +116,10 @@ class SwitchingPreconditioner final : public Preconditioner {
   std::string released_reports_;  // "name: report; from iteration k name: report; ..." of the released ones
   PreconditionerStatistics released_statistics_;
   std::vector<int> switches_;
-  int patience_;                  // of the next switch to the second
-  int limited_steps_ = 0;         // consecutive steps that count toward leaving the phase in use
+  int patience_;           // of the next switch to the second
+  int limited_steps_ = 0;  // consecutive steps that count toward leaving the phase in use
   double previous_energy_ = std::numeric_limits<double>::quiet_NaN();  // at the last update
-  double previous_max_step_ = 0;  // alpha_max of the step before the last
+  double previous_max_step_ = 0;                                       // alpha_max of the step before the last
 };
 
 }  // namespace akvf

@@ -59,34 +59,11 @@ class PoisoningPreconditioner final : public akvf::Preconditioner {
   int good_iterations_, iteration_ = 0;
 };
 
-// The distortion objective, except that the gradient at vertex 2 turns NaN
-// once the energy falls below `threshold`.
-class NanGradientBelow final : public akvf::Objective {
+// An objective that hands every call to `base`, for the ones below to
+// change one thing.
+class ForwardingObjective : public akvf::Objective {
  public:
-  NanGradientBelow(const akvf::Objective& base, double threshold) : base_(base), threshold_(threshold) {}
-  int num_variables() const override { return base_.num_variables(); }
-  double value(const Eigen::VectorXd& x) const override { return base_.value(x); }
-  double value_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd* g) const override {
-    const double e = base_.value_and_gradient(x, g);
-    if (e < threshold_) (*g)[4] = std::numeric_limits<double>::quiet_NaN();
-    return e;
-  }
-  double max_feasible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d) const override {
-    return base_.max_feasible_step(x, d);
-  }
-  int count_inverted(const Eigen::VectorXd& x) const override { return base_.count_inverted(x); }
-
- private:
-  const akvf::Objective& base_;
-  double threshold_;
-};
-
-// The distortion objective, except that every iterate whose energy is below
-// `threshold` counts one inverted element: what rounding does to an element
-// that an energy without a barrier (ARAP) has collapsed.
-class InvertedBelow final : public akvf::Objective {
- public:
-  InvertedBelow(const akvf::Objective& base, double threshold) : base_(base), threshold_(threshold) {}
+  explicit ForwardingObjective(const akvf::Objective& base) : base_(base) {}
   int num_variables() const override { return base_.num_variables(); }
   double value(const Eigen::VectorXd& x) const override { return base_.value(x); }
   double value_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd* g) const override {
@@ -95,10 +72,36 @@ class InvertedBelow final : public akvf::Objective {
   double max_feasible_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d) const override {
     return base_.max_feasible_step(x, d);
   }
+  int count_inverted(const Eigen::VectorXd& x) const override { return base_.count_inverted(x); }
+
+ protected:
+  const akvf::Objective& base_;
+};
+
+// The distortion objective, except that the gradient at vertex 2 turns NaN
+// once the energy falls below `threshold`.
+class NanGradientBelow final : public ForwardingObjective {
+ public:
+  NanGradientBelow(const akvf::Objective& base, double threshold) : ForwardingObjective(base), threshold_(threshold) {}
+  double value_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd* g) const override {
+    const double e = base_.value_and_gradient(x, g);
+    if (e < threshold_) (*g)[4] = std::numeric_limits<double>::quiet_NaN();
+    return e;
+  }
+
+ private:
+  double threshold_;
+};
+
+// The distortion objective, except that every iterate whose energy is below
+// `threshold` counts one inverted element: what rounding does to an element
+// that an energy without a barrier (ARAP) has collapsed.
+class InvertedBelow final : public ForwardingObjective {
+ public:
+  InvertedBelow(const akvf::Objective& base, double threshold) : ForwardingObjective(base), threshold_(threshold) {}
   int count_inverted(const Eigen::VectorXd& x) const override { return base_.value(x) < threshold_ ? 1 : 0; }
 
  private:
-  const akvf::Objective& base_;
   double threshold_;
 };
 
