@@ -8,6 +8,7 @@
 #include "framework/mesh/chart_layout.h"
 #include "framework/process/error.h"
 #include "solvers/lbfgs_solver.h"
+#include "solvers/sparse_cholesky.h"
 
 namespace akvf {
 
@@ -26,6 +27,21 @@ bool usable_start(const Objective& objective, const Eigen::VectorXd& x) {
 }
 ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
                         const std::vector<IterationCallback>& callbacks);
+
+// The Tutte system's solver: CHOLMOD's supernodal Cholesky (with nested
+// dissection on large meshes) from kCholmodTutteVertices on, Eigen's
+// simplicial L D L^T below, where both take milliseconds and the maps of the
+// committed results (docs/results.md, docs/pairs.md) were computed with it:
+// the two factorizations round differently, and a start differing in its last
+// bits can change an iteration count. The paper's largest mesh has 20 K
+// vertices; at 320 K (horse_b subdivided twice) CHOLMOD's already saves 0.3 s
+// of a 3.9-s setup, at 1.27 M (three times) 6.5 s of 25 s (docs/performance.md).
+constexpr int kCholmodTutteVertices = 100000;
+
+SpdSolver tutte_solver(const TriMesh& mesh) {
+  if (mesh.num_vertices() < kCholmodTutteVertices) return {};
+  return solve_positive_definite;
+}
 }  // namespace
 
 ParamSetup prepare_parameterization(const TriMesh& input, const std::string& name, const ParamConfig& config) {
@@ -66,7 +82,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
     setup.x0 = start_from_map(setup, config.start_uv, name + ": the texture coordinates", true, &setup.warnings);
   } else {
     Eigen::MatrixXd UV = tutte_embedding_charts(normalized, setup.disk.boundary_loops, setup.disk.face_chart,
-                                                config.init, &setup.warnings);
+                                                config.init, &setup.warnings, tutte_solver(normalized));
     if (config.optimize_flaps) setup.flaps_moved = optimize_flaps(normalized, &UV);
     setup.x0 = stack_uv(UV);
   }

@@ -41,19 +41,19 @@ using Long = SuiteSparse_long;
 // cholmod_l_* (SuiteSparse_long).
 template <class Index>
 struct Cholmod;
-#define AKVF_CHOLMOD_API(INDEX, PREFIX, ITYPE)                                   \
-  template <>                                                                    \
-  struct Cholmod<INDEX> {                                                        \
-    static constexpr int itype = ITYPE;                                          \
-    static constexpr auto start = &PREFIX##start;                                \
-    static constexpr auto finish = &PREFIX##finish;                              \
-    static constexpr auto analyze = &PREFIX##analyze;                            \
-    static constexpr auto factorize = &PREFIX##factorize;                        \
-    static constexpr auto copy_factor = &PREFIX##copy_factor;                    \
-    static constexpr auto free_factor = &PREFIX##free_factor;                    \
-    static constexpr auto allocate_dense = &PREFIX##allocate_dense;              \
-    static constexpr auto free_dense = &PREFIX##free_dense;                      \
-    static constexpr auto solve2 = &PREFIX##solve2;                              \
+#define AKVF_CHOLMOD_API(INDEX, PREFIX, ITYPE)                      \
+  template <>                                                       \
+  struct Cholmod<INDEX> {                                           \
+    static constexpr int itype = ITYPE;                             \
+    static constexpr auto start = &PREFIX##start;                   \
+    static constexpr auto finish = &PREFIX##finish;                 \
+    static constexpr auto analyze = &PREFIX##analyze;               \
+    static constexpr auto factorize = &PREFIX##factorize;           \
+    static constexpr auto copy_factor = &PREFIX##copy_factor;       \
+    static constexpr auto free_factor = &PREFIX##free_factor;       \
+    static constexpr auto allocate_dense = &PREFIX##allocate_dense; \
+    static constexpr auto free_dense = &PREFIX##free_dense;         \
+    static constexpr auto solve2 = &PREFIX##solve2;                 \
   };
 AKVF_CHOLMOD_API(int, cholmod_, CHOLMOD_INT)
 AKVF_CHOLMOD_API(Long, cholmod_l_, CHOLMOD_LONG)
@@ -205,8 +205,8 @@ class CholmodFactor final : public PermutedFactor {
   void set_pattern(const std::shared_ptr<const PermutedPattern>& pattern) {
     pattern_ = pattern;
     if constexpr (!std::is_same_v<Index, int>) {
-      column_start_ = std::make_shared<std::vector<Index>>(pattern->lower_column_start.begin(),
-                                                           pattern->lower_column_start.end());
+      column_start_ =
+          std::make_shared<std::vector<Index>>(pattern->lower_column_start.begin(), pattern->lower_column_start.end());
       row_ = std::make_shared<std::vector<Index>>(pattern->lower_row.begin(), pattern->lower_row.end());
     }
   }
@@ -225,10 +225,10 @@ class CholmodFactor final : public PermutedFactor {
   // for the factor's structure at the first solve.
   SupernodalSolve<Index>& supernodal_solve() {
     if (!supernodal_solver_)
-      supernodal_solver_ = std::make_unique<SupernodalSolve<Index>>(SupernodalStructure<Index>{
-          static_cast<Index>(factor_->nsuper), static_cast<const Index*>(factor_->super),
-          static_cast<const Index*>(factor_->pi), static_cast<const Index*>(factor_->px),
-          static_cast<const Index*>(factor_->s)});
+      supernodal_solver_ = std::make_unique<SupernodalSolve<Index>>(
+          SupernodalStructure<Index>{static_cast<Index>(factor_->nsuper), static_cast<const Index*>(factor_->super),
+                                     static_cast<const Index*>(factor_->pi), static_cast<const Index*>(factor_->px),
+                                     static_cast<const Index*>(factor_->s)});
     return *supernodal_solver_;
   }
 
@@ -266,9 +266,9 @@ struct SparseCholesky::Impl {
   std::unique_ptr<PermutedFactor> factor;
   std::vector<double> lower_value;  // empty until the first factorization
   std::vector<double> permuted_rhs;
-  bool wide_indices = false;        // tests: 64-bit indices from the start
-  bool always_try_metis = false;    // tests: METIS's ordering besides AMD's at any size
-  std::string ordering;             // of the last analysis: "amd" or "metis"
+  bool wide_indices = false;      // tests: 64-bit indices from the start
+  bool always_try_metis = false;  // tests: METIS's ordering besides AMD's at any size
+  std::string ordering;           // of the last analysis: "amd" or "metis"
 
   Impl() {
     cholmod_start(&common);
@@ -437,8 +437,7 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
   }
   std::vector<int> permutation(n);
   for (int a = 0; a < blocks; ++a)
-    for (int c = 0; c < block_size; ++c)
-      permutation[a * block_size + c] = block_permutation[a] * block_size + c;
+    for (int c = 0; c < block_size; ++c) permutation[a * block_size + c] = block_permutation[a] * block_size + c;
 
   // 2. The permuted matrix, analyzed again in its natural order (the
   //    postorder is already part of the permutation), with CHOLMOD's int
@@ -478,9 +477,26 @@ void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& upper) {
   m.factor->factorize(m.lower_value.data());
 }
 
+bool solve_positive_definite(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd* X) {
+  Eigen::SparseMatrix<double> upper = A.triangularView<Eigen::Upper>();
+  upper.makeCompressed();
+  SparseCholesky cholesky;
+  try {
+    cholesky.factorize(upper);
+  } catch (const NotPositiveDefinite&) {
+    return false;
+  }
+  X->resize(B.rows(), B.cols());
+  Eigen::VectorXd x;
+  for (Eigen::Index c = 0; c < B.cols(); ++c) {
+    cholesky.solve(B.col(c), &x);
+    X->col(c) = x;
+  }
+  return true;
+}
+
 void SparseCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd* x) {
-  if (!analyzed() || !impl_->factor->factored())
-    throw NumericalError("SparseCholesky::solve called before factorize");
+  if (!analyzed() || !impl_->factor->factored()) throw NumericalError("SparseCholesky::solve called before factorize");
   Impl& m = *impl_;
   const auto n = static_cast<size_t>(b.size());
   const std::vector<int>& permutation = m.pattern->permutation;

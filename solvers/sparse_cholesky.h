@@ -81,6 +81,11 @@ class SparseCholesky {
   std::unique_ptr<Impl> impl_;
 };
 
+// X = A^-1 B for a sparse symmetric positive definite A (both triangles
+// stored): one analysis, one factorization and a solve per column of B.
+// Returns false if A is not (numerically) positive definite.
+bool solve_positive_definite(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd* X);
+
 // "MAJOR.MINOR.PATCH" of the CHOLMOD the project was built against.
 std::string cholmod_version();
 

@@ -152,8 +152,9 @@ TEST_CASE("a kept analysis is shared, and solving before a factorization is refu
   analyzed.analyze(K.upper(), 2);
   copy.copy_analysis(analyzed);
   Eigen::VectorXd x;
-  CHECK(akvf::test::error_message([&] { copy.solve(Eigen::VectorXd::Ones(K.upper().rows()), &x); })
-            .find("before factorize") != std::string::npos);
+  CHECK(akvf::test::error_message([&] {
+          copy.solve(Eigen::VectorXd::Ones(K.upper().rows()), &x);
+        }).find("before factorize") != std::string::npos);
   copy.factorize(K.upper());
   // The source stays an unfactored analysis that can be copied again.
   akvf::SparseCholesky again;
@@ -164,4 +165,21 @@ TEST_CASE("a kept analysis is shared, and solving before a factorization is refu
   copy.solve(b, &x_copy);
   again.solve(b, &x_again);
   CHECK(x_copy == x_again);
+}
+
+TEST_CASE("solve_positive_definite solves every column of a positive definite system and declines an indefinite one") {
+  const akvf::ElementMatrix2D K = shifted_killing(40);
+  const Eigen::SparseMatrix<double> A = K.upper().selfadjointView<Eigen::Upper>();
+  Eigen::MatrixXd B(A.rows(), 2);
+  B.col(0) = Eigen::VectorXd::LinSpaced(A.rows(), -1.0, 2.0).array().sin();
+  B.col(1) = Eigen::VectorXd::LinSpaced(A.rows(), 0.5, 3.0).array().cos();
+  Eigen::MatrixXd X;
+  REQUIRE(akvf::solve_positive_definite(A, B, &X));
+  REQUIRE(X.cols() == 2);
+  for (int c = 0; c < 2; ++c) CHECK((A * X.col(c) - B.col(c)).norm() <= 1e-10 * B.col(c).norm());
+
+  akvf::ElementMatrix2D indefinite = shifted_killing(40);
+  indefinite.add_to_diagonal(-1.01e-3 * indefinite.mean_diagonal() / 1.001);
+  const Eigen::SparseMatrix<double> C = indefinite.upper().selfadjointView<Eigen::Upper>();
+  CHECK_FALSE(akvf::solve_positive_definite(C, B, &X));
 }

@@ -8,6 +8,7 @@
 #include "framework/mesh/mesh_validation.h"
 #include "framework/mesh/rest_geometry.h"
 #include "framework/optimization/distortion_objective.h"
+#include "solvers/sparse_cholesky.h"
 #include "tests/test_support.h"
 
 TEST_CASE("Tutte maps a disk without inverted triangles onto a circle of the mesh's area") {
@@ -22,13 +23,40 @@ TEST_CASE("Tutte maps a disk without inverted triangles onto a circle of the mes
   }
 }
 
+TEST_CASE("a given solver gives the Tutte map Eigen's gives, and one that declines falls back to Eigen's") {
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(9, 7);
+  const auto disk = akvf::prepare_disk_mesh(mesh, "bumpy");
+  akvf::Warnings warnings;
+  const auto tutte = [&](akvf::TutteWeights weights, const akvf::SpdSolver& solver) {
+    return akvf::tutte_embedding(mesh, disk.boundary_loops[0], weights, &warnings, solver);
+  };
+  const akvf::SpdSolver declines = [](const Eigen::SparseMatrix<double>&, const Eigen::MatrixXd&, Eigen::MatrixXd*) {
+    return false;
+  };
+  int calls = 0;
+  const akvf::SpdSolver cholmod_solver = [&](const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B,
+                                             Eigen::MatrixXd* X) {
+    ++calls;
+    return akvf::solve_positive_definite(A, B, X);
+  };
+  for (auto weights : {akvf::TutteWeights::kUniform, akvf::TutteWeights::kCotangent}) {
+    const Eigen::MatrixXd eigen = tutte(weights, {});
+    calls = 0;
+    const Eigen::MatrixXd cholmod = tutte(weights, cholmod_solver);
+    CHECK(calls == 1);
+    CHECK((cholmod - eigen).cwiseAbs().maxCoeff() <= 1e-12 * eigen.cwiseAbs().maxCoeff());
+    CHECK(tutte(weights, declines) == eigen);
+  }
+}
+
 TEST_CASE("cotangent Tutte falls back to uniform weights when it would fold") {
   // Obtuse triangles give negative cotangent weights; a needle fan folds.
   akvf::TriMesh mesh = akvf::test::grid_disk(6, 6, 0.45, 3);
   mesh.V.col(0) *= 40;  // very anisotropic cells: many obtuse angles
   const auto disk = akvf::prepare_disk_mesh(mesh, "stretched");
   akvf::Warnings warnings;
-  const Eigen::MatrixXd UV = akvf::tutte_embedding(mesh, disk.boundary_loops[0], akvf::TutteWeights::kCotangent, &warnings);
+  const Eigen::MatrixXd UV =
+      akvf::tutte_embedding(mesh, disk.boundary_loops[0], akvf::TutteWeights::kCotangent, &warnings);
   CHECK(akvf::count_inverted_triangles(mesh.F, UV) == 0);
   if (!warnings.empty()) CHECK(warnings[0].find("using uniform weights instead") != std::string::npos);
 }

@@ -23,9 +23,10 @@ std::vector<std::vector<int>> chart_vertices(const Eigen::MatrixXi& F, const std
 }  // namespace
 
 Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<std::vector<int>>& boundary_loops,
-                                       const std::vector<int>& face_chart, TutteWeights weights, Warnings* warnings) {
+                                       const std::vector<int>& face_chart, TutteWeights weights, Warnings* warnings,
+                                       const SpdSolver& solver) {
   const int charts = static_cast<int>(boundary_loops.size());
-  if (charts == 1) return tutte_embedding(mesh, boundary_loops[0], weights, warnings);
+  if (charts == 1) return tutte_embedding(mesh, boundary_loops[0], weights, warnings, solver);
   const std::vector<std::vector<int>> vertices = chart_vertices(mesh.F, face_chart, charts, mesh.num_vertices());
   std::vector<std::vector<int>> faces(charts);
   for (int f = 0; f < mesh.num_faces(); ++f) faces[face_chart[f]].push_back(f);
@@ -43,7 +44,7 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
       chart.F.row(row) = mesh.F.row(faces[c][row]).unaryExpr([&](int v) { return local[v]; });
     std::vector<int> loop(boundary_loops[c].size());
     std::transform(boundary_loops[c].begin(), boundary_loops[c].end(), loop.begin(), [&](int v) { return local[v]; });
-    const Eigen::MatrixXd chart_uv = tutte_embedding(chart, loop, weights, warnings);
+    const Eigen::MatrixXd chart_uv = tutte_embedding(chart, loop, weights, warnings, solver);
     for (std::size_t i = 0; i < vertices[c].size(); ++i) UV.row(vertices[c][i]) = chart_uv.row(i);
   }
   pack_charts(mesh.F, face_chart, charts, &UV);

@@ -12,8 +12,10 @@ namespace akvf {
 // The Tutte embedding of every chart (faces with face_chart[f] == c, whose
 // boundary loop is boundary_loops[c]) on a circle of the chart's area, the
 // charts then packed side by side (pack_charts). One chart: tutte_embedding.
+// `solver` as there.
 Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<std::vector<int>>& boundary_loops,
-                                       const std::vector<int>& face_chart, TutteWeights weights, Warnings* warnings);
+                                       const std::vector<int>& face_chart, TutteWeights weights, Warnings* warnings,
+                                       const SpdSolver& solver = {});
 
 // Translates every chart of UV (#V by 2) so that their bounding boxes do not
 // overlap: rows of charts, tallest first, each row at most as wide as the

@@ -32,7 +32,8 @@ Triplets edge_weights(const TriMesh& mesh, TutteWeights weights) {
   return w;
 }
 
-Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, TutteWeights weights, bool* ok) {
+Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, TutteWeights weights,
+                            const SpdSolver& solver, bool* ok) {
   const int n = mesh.num_vertices();
   Eigen::MatrixXd UV = Eigen::MatrixXd::Zero(n, 2);
   std::vector<double> arc(loop.size() + 1, 0.0);
@@ -66,12 +67,17 @@ Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, T
   }
   Eigen::SparseMatrix<double> L(m, m);
   L.setFromTriplets(lhs.begin(), lhs.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(L);
-  if (solver.info() != Eigen::Success) {
-    *ok = false;
-    return UV;
+  Eigen::MatrixXd interior;
+  if (!solver || !solver(L, rhs, &interior)) {
+    // Also for cotangent weights whose system is not positive definite: a
+    // nonsingular one still has an L D L^T (whose map is checked for folds).
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(L);
+    if (ldlt.info() != Eigen::Success) {
+      *ok = false;
+      return UV;
+    }
+    interior = ldlt.solve(rhs);
   }
-  const Eigen::MatrixXd interior = solver.solve(rhs);
   for (int v = 0; v < n; ++v)
     if (interior_index[v] >= 0) UV.row(v) = interior.row(interior_index[v]);
   *ok = UV.allFinite();
@@ -81,10 +87,10 @@ Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, T
 }  // namespace
 
 Eigen::MatrixXd tutte_embedding(const TriMesh& mesh, const std::vector<int>& boundary_loop, TutteWeights weights,
-                                Warnings* warnings) {
+                                Warnings* warnings, const SpdSolver& solver) {
   bool ok = false;
   if (weights == TutteWeights::kCotangent) {
-    Eigen::MatrixXd UV = solve_tutte(mesh, boundary_loop, TutteWeights::kCotangent, &ok);
+    Eigen::MatrixXd UV = solve_tutte(mesh, boundary_loop, TutteWeights::kCotangent, solver, &ok);
     const int inverted = ok ? count_inverted_triangles(mesh.F, UV) : -1;
     if (inverted == 0) return UV;
     if (warnings)
@@ -92,7 +98,7 @@ Eigen::MatrixXd tutte_embedding(const TriMesh& mesh, const std::vector<int>& bou
                                              " triangles; using uniform weights instead"
                                        : "cotangent Tutte system is singular; using uniform weights instead");
   }
-  Eigen::MatrixXd UV = solve_tutte(mesh, boundary_loop, TutteWeights::kUniform, &ok);
+  Eigen::MatrixXd UV = solve_tutte(mesh, boundary_loop, TutteWeights::kUniform, solver, &ok);
   if (!ok) throw ValidationError("the Tutte system could not be solved (is the mesh connected?)");
   return UV;
 }

@@ -2,6 +2,8 @@
 // Initial maps for parameterization (Algorithm 1, first two lines): the Tutte
 // embedding and the flap optimization of §5.4.
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -11,14 +13,23 @@ namespace akvf {
 
 enum class TutteWeights { kUniform, kCotangent };
 
+// Solves A X = B for a sparse symmetric A (both triangles stored); returns
+// false when it cannot (A not positive definite), and the Tutte solve then
+// falls back to Eigen's simplicial L D L^T, the framework's own solver. The
+// library passes CHOLMOD's supernodal Cholesky on large meshes
+// (akvf/parameterization.cpp says from where).
+using SpdSolver =
+    std::function<bool(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd* X)>;
+
 // Tutte embedding: the boundary loop on a circle of the mesh's area, spaced by
 // 3D arc length, and each interior vertex at the weighted average of its
 // neighbours. With cotangent weights (which may be negative) the map can fold;
 // then the uniform map is returned instead and a warning is added.
 //   boundary_loop  ordered with the mesh to its left (counter-clockwise result)
+//   solver         for the interior vertices' system; empty: Eigen's L D L^T
 //   returns UV     #V by 2
 Eigen::MatrixXd tutte_embedding(const TriMesh& mesh, const std::vector<int>& boundary_loop, TutteWeights weights,
-                                Warnings* warnings);
+                                Warnings* warnings, const SpdSolver& solver = {});
 
 // §5.4: moves every flap vertex (a boundary vertex in a single triangle) to
 // the optimal position for an isometric energy given its two neighbours:
