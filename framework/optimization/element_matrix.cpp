@@ -24,28 +24,66 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
   built->num_elements = static_cast<int>(elements.rows());
   const int n = D * num_vertices;
   const int ne = static_cast<int>(elements.rows());
-  // Global dof of local dof i of element e.
-  auto dof = [&](int e, int i) { return D * elements(e, i / D) + i % D; };
-  std::vector<Eigen::Triplet<double>> pattern;
-  pattern.reserve(static_cast<std::size_t>(kSlots) * ne);
-  for (int e = 0; e < ne; ++e)
+
+  // The vertex graph's upper triangle: for each vertex v the vertices u <= v
+  // that share an element with it (v itself last), in increasing order.
+  // Built by counting, without a triplet per local slot: at 10 M triangles
+  // those took 3.4 GB and most of the setup (docs/performance.md).
+  std::vector<long> listed_start(num_vertices + 1, 0);
+  const auto for_each_pair = [&](int e, auto&& visit) {  // visit(u, v) for u <= v
+    for (int j = 0; j < N; ++j)
+      for (int i = 0; i < N; ++i)
+        if (elements(e, i) < elements(e, j) || i == j) visit(elements(e, i), elements(e, j));
+  };
+  for (int e = 0; e < ne; ++e) for_each_pair(e, [&](int, int v) { ++listed_start[v + 1]; });
+  for (int v = 0; v < num_vertices; ++v) listed_start[v + 1] += listed_start[v];
+  std::vector<int> listed(listed_start[num_vertices]);
+  {
+    std::vector<long> fill(listed_start.begin(), listed_start.end() - 1);
+    for (int e = 0; e < ne; ++e) for_each_pair(e, [&](int u, int v) { listed[fill[v]++] = u; });
+  }
+  std::vector<int> neighbors_of(num_vertices, 0);  // distinct neighbors u <= v
+  parallel_for_index(num_vertices, 4096, [&](int v) {
+    const auto begin = listed.begin() + listed_start[v], end = listed.begin() + listed_start[v + 1];
+    std::sort(begin, end);
+    neighbors_of[v] = static_cast<int>(std::unique(begin, end) - begin);
+  });
+  // Column D v + c holds the D rows of each neighbor u < v, then D v + 0..c.
+  std::vector<int> outer(n + 1, 0);
+  for (int v = 0; v < num_vertices; ++v)
+    for (int c = 0; c < D; ++c)
+      outer[D * v + c + 1] = outer[D * v + c] + (neighbors_of[v] > 0 ? D * (neighbors_of[v] - 1) + c + 1 : 0);
+  upper_.resize(n, n);
+  upper_.resizeNonZeros(outer[n]);
+  std::copy(outer.begin(), outer.end(), upper_.outerIndexPtr());
+  std::fill(upper_.valuePtr(), upper_.valuePtr() + outer[n], 0.0);
+  int* rows = upper_.innerIndexPtr();
+  parallel_for_index(num_vertices, 4096, [&](int v) {
+    for (int c = 0; c < D; ++c) {
+      int* row = rows + outer[D * v + c];
+      for (int k = 0; k < neighbors_of[v]; ++k) {
+        const int u = listed[listed_start[v] + k];
+        for (int r = 0; r < (u < v ? D : c + 1); ++r) *row++ = D * u + r;
+      }
+    }
+  });
+
+  // Where each local slot (i <= j, in this loop order) lands among the
+  // nonzeros: the k-th neighbor's rows start at D k in its column.
+  std::vector<int> slot_entry(static_cast<std::size_t>(kSlots) * ne);
+  parallel_for_index(ne, 1024, [&](int e) {
+    auto dof = [&](int i) { return D * elements(e, i / D) + i % D; };  // global dof of local dof i
+    int* entry = slot_entry.data() + static_cast<std::size_t>(kSlots) * e;
     for (int j = 0; j < kLocalSize; ++j)
       for (int i = 0; i <= j; ++i) {
-        const int a = dof(e, i), b = dof(e, j);
-        pattern.emplace_back(std::min(a, b), std::max(a, b), 0.0);
+        const int low = std::min(dof(i), dof(j)), high = std::max(dof(i), dof(j));
+        const int v = high / D;
+        const int* first = listed.data() + listed_start[v];
+        const int k = static_cast<int>(std::lower_bound(first, first + neighbors_of[v], low / D) - first);
+        *entry++ = outer[high] + D * k + low % D;
       }
-  upper_.resize(n, n);
-  upper_.setFromTriplets(pattern.begin(), pattern.end());
-  upper_.makeCompressed();
-
-  // Where each local slot (i <= j, in the loop order above) lands among the nonzeros.
-  std::vector<int> slot_entry(pattern.size());
-  const int* rows = upper_.innerIndexPtr();
-  for (std::size_t s = 0; s < pattern.size(); ++s) {
-    const int begin = upper_.outerIndexPtr()[pattern[s].col()], end = upper_.outerIndexPtr()[pattern[s].col() + 1];
-    slot_entry[s] = static_cast<int>(std::lower_bound(rows + begin, rows + end, pattern[s].row()) - rows);
-  }
-  std::vector<Eigen::Triplet<double>>().swap(pattern);
+  });
+  std::vector<int>().swap(listed);
   // Invert it: for each nonzero, its contributing slots in increasing order
   // (so each sum has a fixed order whatever the thread count) ...
   const int nnz = static_cast<int>(upper_.nonZeros());

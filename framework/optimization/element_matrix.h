@@ -7,7 +7,9 @@
 // the SLIM proxy and the Laplacian all have this form.
 //
 // The sparsity pattern (the upper triangle of D x D blocks for each vertex
-// and edge) is built once from the elements and may be shared by another
+// and edge) is built once from the elements, through the vertex graph (each
+// vertex's sorted neighbors, found by counting: no triplet per local slot,
+// which took 3.4 GB at 10 M triangles), and may be shared by another
 // matrix on the same elements (with_pattern_of: akvf-newton's Newton phase
 // takes AKVF's at the switch instead of building it again). Each local
 // matrix's upper triangle, D N (D N + 1) / 2 numbers, goes to the global upper triangle;

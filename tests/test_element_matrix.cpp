@@ -1,0 +1,71 @@
+// ElementMatrix: the pattern built from the vertex graph and the chunked,
+// ordered assembly against the plain reference, a triplet per local slot
+// summed by Eigen in element order.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "framework/optimization/element_matrix.h"
+#include "tests/test_support.h"
+
+namespace {
+
+// A symmetric local matrix whose entries depend on the element and the slot.
+template <int D, int N>
+void local_matrix(int e, typename akvf::ElementMatrix<D, N>::Local* M) {
+  constexpr int n = D * N;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i <= j; ++i) (*M)(i, j) = (*M)(j, i) = std::sin(0.37 * e + 1.3 * i + 0.71 * j) + (i == j ? 3 : 0);
+}
+
+template <int D, int N>
+Eigen::SparseMatrix<double> triplet_reference(const Eigen::MatrixXi& elements, int num_vertices) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  typename akvf::ElementMatrix<D, N>::Local M;
+  for (int e = 0; e < elements.rows(); ++e) {
+    local_matrix<D, N>(e, &M);
+    for (int j = 0; j < D * N; ++j)
+      for (int i = 0; i <= j; ++i) {
+        const int a = D * elements(e, i / D) + i % D, b = D * elements(e, j / D) + j % D;
+        triplets.emplace_back(std::min(a, b), std::max(a, b), M(i, j));
+      }
+  }
+  Eigen::SparseMatrix<double> upper(D * num_vertices, D * num_vertices);
+  upper.setFromTriplets(triplets.begin(), triplets.end());
+  return upper;
+}
+
+template <int D, int N>
+void check_against_reference(const Eigen::MatrixXi& elements, int num_vertices) {
+  akvf::ElementMatrix<D, N> matrix(elements, num_vertices);
+  matrix.assemble([](int e, typename akvf::ElementMatrix<D, N>::Local* M) { local_matrix<D, N>(e, M); });
+  const Eigen::SparseMatrix<double> reference = triplet_reference<D, N>(elements, num_vertices);
+  const Eigen::SparseMatrix<double>& upper = matrix.upper();
+  REQUIRE(upper.isCompressed());
+  REQUIRE(upper.nonZeros() == reference.nonZeros());
+  const auto same = [](const auto* a, const auto* b, Eigen::Index n) { return std::equal(a, a + n, b); };
+  CHECK(same(upper.outerIndexPtr(), reference.outerIndexPtr(), upper.outerSize() + 1));
+  CHECK(same(upper.innerIndexPtr(), reference.innerIndexPtr(), upper.nonZeros()));
+  // The same sums in the same order (increasing element): the same bits.
+  CHECK(same(upper.valuePtr(), reference.valuePtr(), upper.nonZeros()));
+}
+
+}  // namespace
+
+TEST_CASE("element matrices: the pattern and the sums are those of one triplet per local slot, bit for bit") {
+  SUBCASE("triangles, more than one assembly chunk") {
+    const akvf::TriMesh grid = akvf::test::grid_disk(140, 130, 0.2, 3);  // 2 x 139 x 129 > 32768 triangles
+    REQUIRE(grid.F.rows() > (1 << 15));
+    check_against_reference<2, 3>(grid.F, static_cast<int>(grid.V.rows()));
+  }
+  SUBCASE("tetrahedra") {
+    const akvf::TetMesh cube = akvf::test::tet_grid(6);
+    check_against_reference<3, 4>(cube.T, cube.num_vertices());
+  }
+  SUBCASE("elements listed in any vertex order") {
+    akvf::TriMesh grid = akvf::test::grid_disk(9, 7, 0.2, 3);
+    for (int f = 0; f < grid.F.rows(); f += 2) std::swap(grid.F(f, 0), grid.F(f, 2));  // clockwise ones too
+    check_against_reference<2, 3>(grid.F, static_cast<int>(grid.V.rows()));
+  }
+}
