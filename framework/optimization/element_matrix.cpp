@@ -27,8 +27,8 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
 
   // The vertex graph's upper triangle: for each vertex v the vertices u <= v
   // that share an element with it (v itself last), in increasing order.
-  // Built by counting, without a triplet per local slot: at 10 M triangles
-  // those took 3.4 GB and most of the setup (docs/performance.md).
+  // Built by counting, without a triplet per local slot (those took 3.4 GB
+  // at 10 M triangles; docs/performance.md, "Memory at scale").
   std::vector<long> listed_start(num_vertices + 1, 0);
   const auto for_each_pair = [&](int e, auto&& visit) {  // visit(u, v) for u <= v
     for (int j = 0; j < N; ++j)
