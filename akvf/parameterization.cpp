@@ -34,8 +34,8 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
 // committed results (docs/results.md, docs/pairs.md) were computed with it:
 // the two factorizations round differently, and a start differing in its last
 // bits can change an iteration count. The paper's largest mesh has 20 K
-// vertices; at 320 K (horse_b subdivided twice) CHOLMOD's already saves 0.3 s
-// of a 3.9-s setup, at 1.27 M (three times) 6.5 s of 25 s (docs/performance.md).
+// vertices; at 1.27 M (horse_b subdivided three times) the setup of a run
+// takes 10.3 s instead of 19.3 s (docs/performance.md).
 constexpr int kCholmodTutteVertices = 100000;
 
 SpdSolver tutte_solver(const TriMesh& mesh) {
