@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "framework/process/error.h"
+#include "solvers/supernodal_factorization.h"
 #include "solvers/supernodal_solve.h"
 
 namespace akvf {
@@ -93,8 +94,10 @@ class PermutedFactor {
   virtual bool analyze(const std::shared_ptr<const PermutedPattern>& pattern) = 0;
   // A new object holding a copy of this (analyzed, unfactored) analysis.
   virtual std::unique_ptr<PermutedFactor> copy_analysis() const = 0;
-  // values: the lower triangle's, in the pattern's order.
-  virtual void factorize(double* values) = 0;
+  // values: the lower triangle's, in the pattern's order. A supernodal
+  // factor is computed by SupernodalFactorization (two cores, CHOLMOD's
+  // bits) unless `by_cholmod`.
+  virtual void factorize(double* values, bool by_cholmod) = 0;
   // z = (L L^T)^-1 z in the permuted numbering.
   virtual void solve(double* z) = 0;
   virtual bool supernodal() const = 0;
@@ -152,7 +155,18 @@ class CholmodFactor final : public PermutedFactor {
     return copy;
   }
 
-  void factorize(double* values) override {
+  void factorize(double* values, bool by_cholmod) override {
+    own_factored_ = false;
+    if (factor_->is_super && !by_cholmod) {
+      // Not value-initialized: each supernode's block is set when it is
+      // built, so the pages are first touched by the core that builds it.
+      if (!factor_values_) factor_values_.reset(new double[factor_->xsize]);
+      const LowerTriangle A{static_cast<int>(factor_->n), pattern_->lower_column_start.data(),
+                            pattern_->lower_row.data(), values};
+      parallel_factorization().factorize(A, factor_values_.get());
+      own_factored_ = true;
+      return;
+    }
     cholmod_sparse B = lower(values);
     Api::factorize(&B, factor_, &common_);
     if (common_.status == CHOLMOD_NOT_POSDEF)
@@ -174,7 +188,7 @@ class CholmodFactor final : public PermutedFactor {
 
   void solve(double* z) override {
     if (factor_->is_super) {
-      supernodal_solve().solve(static_cast<const double*>(factor_->x), z);
+      supernodal_solve().solve(own_factored_ ? factor_values_.get() : static_cast<const double*>(factor_->x), z);
       return;
     }
     const size_t n = factor_->n;
@@ -187,7 +201,7 @@ class CholmodFactor final : public PermutedFactor {
   }
 
   bool supernodal() const override { return factor_->is_super; }
-  bool factored() const override { return factor_->xtype != CHOLMOD_PATTERN; }
+  bool factored() const override { return own_factored_ || factor_->xtype != CHOLMOD_PATTERN; }
   double serial_solve_share() override { return factor_->is_super ? supernodal_solve().top_share() : 1.0; }
   int index_bits() const override { return 8 * static_cast<int>(sizeof(Index)); }
   // A supernodal factor stores its supernodes' dense blocks (xsize values,
@@ -223,13 +237,18 @@ class CholmodFactor final : public PermutedFactor {
 
   // Our supernodal triangular solves (solvers/supernodal_solve.h), set up
   // for the factor's structure at the first solve.
+  SupernodalStructure<Index> structure() const {
+    return {static_cast<Index>(factor_->nsuper), static_cast<const Index*>(factor_->super),
+            static_cast<const Index*>(factor_->pi), static_cast<const Index*>(factor_->px),
+            static_cast<const Index*>(factor_->s)};
+  }
   SupernodalSolve<Index>& supernodal_solve() {
-    if (!supernodal_solver_)
-      supernodal_solver_ = std::make_unique<SupernodalSolve<Index>>(
-          SupernodalStructure<Index>{static_cast<Index>(factor_->nsuper), static_cast<const Index*>(factor_->super),
-                                     static_cast<const Index*>(factor_->pi), static_cast<const Index*>(factor_->px),
-                                     static_cast<const Index*>(factor_->s)});
+    if (!supernodal_solver_) supernodal_solver_ = std::make_unique<SupernodalSolve<Index>>(structure());
     return *supernodal_solver_;
+  }
+  SupernodalFactorization<Index>& parallel_factorization() {
+    if (!parallel_factorization_) parallel_factorization_ = std::make_unique<SupernodalFactorization<Index>>(structure());
+    return *parallel_factorization_;
   }
 
   cholmod_common common_;
@@ -241,6 +260,9 @@ class CholmodFactor final : public PermutedFactor {
   cholmod_dense* workspace_y_ = nullptr;
   cholmod_dense* workspace_e_ = nullptr;
   std::unique_ptr<SupernodalSolve<Index>> supernodal_solver_;
+  std::unique_ptr<SupernodalFactorization<Index>> parallel_factorization_;
+  std::unique_ptr<double[]> factor_values_;  // L by SupernodalFactorization (factor_->xsize entries)
+  bool own_factored_ = false;
 };
 
 // Whether to compute METIS's nested dissection besides AMD. On large meshes
@@ -267,6 +289,7 @@ struct SparseCholesky::Impl {
   std::vector<double> lower_value;  // empty until the first factorization
   std::vector<double> permuted_rhs;
   bool wide_indices = false;      // tests: 64-bit indices from the start
+  bool by_cholmod = false;        // tests, benchmarks: CHOLMOD's own numeric factorization
   bool always_try_metis = false;  // tests: METIS's ordering besides AMD's at any size
   std::string ordering;           // of the last analysis: "amd" or "metis"
 
@@ -406,6 +429,8 @@ std::string SparseCholesky::ordering() const { return analyzed() ? impl_->orderi
 
 void SparseCholesky::always_try_metis(bool on) { impl_->always_try_metis = on; }
 
+void SparseCholesky::use_cholmod_factorization(bool on) { impl_->by_cholmod = on; }
+
 void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block_size) {
   if (!upper.isCompressed() || upper.rows() != upper.cols())
     throw NumericalError("SparseCholesky: matrix must be square and compressed");
@@ -474,7 +499,7 @@ void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& upper) {
   m.lower_value.resize(value_map.size());
   const double* values = upper.valuePtr();
   for (std::size_t k = 0; k < value_map.size(); ++k) m.lower_value[value_map[k]] = values[k];
-  m.factor->factorize(m.lower_value.data());
+  m.factor->factorize(m.lower_value.data(), m.by_cholmod);
 }
 
 bool solve_positive_definite(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd* X) {

@@ -39,8 +39,10 @@ class SparseCholesky {
   // analyze() would compute for its pattern, without the ordering work
   // (solvers/symbolic_analysis_cache.h).
   void copy_analysis(const SparseCholesky& other);
-  // Numeric factorization A = L L^T. Throws NotPositiveDefinite if A is
-  // not (numerically) positive definite, NumericalError on other failures.
+  // Numeric factorization A = L L^T: a supernodal factor on two cores
+  // (solvers/supernodal_factorization.h), a simplicial one by CHOLMOD.
+  // Throws NotPositiveDefinite if A is not (numerically) positive
+  // definite, NumericalError on other failures.
   void factorize(const Eigen::SparseMatrix<double>& upper);
   // x = A^-1 b (x is resized).
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd* x);
@@ -71,6 +73,10 @@ class SparseCholesky {
   std::string ordering() const;
   // Tests: compute METIS's ordering besides AMD's whatever the size.
   void always_try_metis(bool on);
+  // Tests and benchmarks: supernodal factors by CHOLMOD's own numeric
+  // factorization (one core) instead of SupernodalFactorization (two cores,
+  // the same bits; solvers/supernodal_factorization.h).
+  void use_cholmod_factorization(bool on);
   // Share of the supernodal factor's entries whose triangular solves run on
   // one core (the top of the elimination tree; the rest is split between two
   // cores, see solvers/supernodal_solve.h). 1 for a simplicial factor.

@@ -13,20 +13,9 @@
 // arithmetic, and the result, do not depend on the number of threads.
 #include <vector>
 
-namespace akvf {
+#include "solvers/supernodal_tree.h"
 
-// The supernodal structure of a factor, as CHOLMOD stores it (super, pi, px,
-// s), with CHOLMOD's integers (int, or SuiteSparse_long for factors whose
-// entries pass 2^31); the values are passed to solve(), as they change with
-// each numeric factorization.
-template <class Index>
-struct SupernodalStructure {
-  Index supernodes = 0;
-  const Index* first_column = nullptr;   // super: supernode s has columns [first_column[s], first_column[s + 1])
-  const Index* pattern_start = nullptr;  // pi: its row indices are pattern[pattern_start[s] .. pattern_start[s + 1])
-  const Index* value_start = nullptr;    // px: its column-major block starts at values[value_start[s]]
-  const Index* pattern = nullptr;        // s
-};
+namespace akvf {
 
 template <class Index>
 class SupernodalSolve {
@@ -42,7 +31,6 @@ class SupernodalSolve {
   double top_share() const { return top_share_; }
 
  private:
-  enum Owner : char { kGroup0 = 0, kGroup1 = 1, kTop = 2 };
   void forward(const double* values, int group, double* z);
   void backward(const double* values, const std::vector<int>& order, double* z, std::vector<double>* scratch) const;
 

@@ -63,6 +63,10 @@ TEST_CASE("an indefinite matrix is refused by the simplicial (L D L^T) and the s
     cholesky.analyze(K.upper(), 2);
     CHECK_THROWS_AS(cholesky.factorize(K.upper()), akvf::NotPositiveDefinite);
     CHECK(cholesky.supernodal() == (nx == 70));
+    if (nx == 70) {  // the two-core factorization leaves no factor to solve with
+      Eigen::VectorXd x;
+      CHECK_THROWS_AS(cholesky.solve(Eigen::VectorXd::Ones(K.upper().rows()), &x), akvf::NumericalError);
+    }
   }
 }
 
@@ -91,6 +95,37 @@ TEST_CASE("the supernodal solve splits the elimination tree across two cores and
   for (const auto& x : solutions) CHECK(x == solutions.front());
   const Eigen::SparseMatrix<double> A = K.upper().selfadjointView<Eigen::Upper>();
   CHECK((A * solutions.front() - b).norm() <= 1e-10 * b.norm());
+}
+
+TEST_CASE("the two-core supernodal factorization gives CHOLMOD's bits, on one thread or two, 32- or 64-bit") {
+  // 70 x 70: AMD's ordering; 160 x 160: METIS's, a top with several branches.
+  for (const int nx : {70, 160}) {
+    const akvf::ElementMatrix2D K = shifted_killing(nx);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), -1.0, 2.0).array().sin();
+    for (const bool wide : {false, true}) {
+      CAPTURE(nx);
+      CAPTURE(wide);
+      akvf::SparseCholesky cholmod, ours;
+      cholmod.use_cholmod_factorization(true);
+      for (akvf::SparseCholesky* cholesky : {&cholmod, &ours}) {
+        cholesky->use_64_bit_indices(wide);
+        cholesky->analyze(K.upper(), 2);
+      }
+      REQUIRE(ours.supernodal());
+      CHECK(ours.ordering() == (nx == 70 ? "amd" : "metis"));
+      cholmod.factorize(K.upper());
+      Eigen::VectorXd expected;
+      cholmod.solve(b, &expected);
+      for (const int threads : {2, 1, 2}) {  // a second factorization reuses the first's lists and memory
+        CAPTURE(threads);
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        ours.factorize(K.upper());
+        Eigen::VectorXd x;
+        ours.solve(b, &x);
+        CHECK(x == expected);
+      }
+    }
+  }
 }
 
 TEST_CASE("CHOLMOD's 64-bit interface gives the 32-bit interface's bits, analyzed or copied") {

@@ -100,10 +100,13 @@ akvf::ElementMatrix2D shifted_killing_operator(const Fixture& f) {
   return K;
 }
 
-void BM_NumericFactorization(benchmark::State& state, const std::string& mesh, int subdivide) {
+// by_cholmod: CHOLMOD's own numeric factorization (one core) instead of
+// ours (solvers/supernodal_factorization.h: two cores, the same bits).
+void BM_NumericFactorization(benchmark::State& state, const std::string& mesh, int subdivide, bool by_cholmod) {
   REQUIRE_FIXTURE(state, mesh, subdivide);
   const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
   akvf::SparseCholesky cholesky;
+  cholesky.use_cholmod_factorization(by_cholmod);
   cholesky.analyze(K.upper(), 2);
   for (auto _ : state) cholesky.factorize(K.upper());
   state.counters["nnz(L)"] = cholesky.factor_nonzeros();
@@ -278,7 +281,10 @@ void register_all() {
     benchmark::RegisterBenchmark(("EnergyGradient/" + mesh).c_str(), BM_EnergyGradient, mesh)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Energy/" + mesh).c_str(), BM_Energy, mesh)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh, 0)
+    benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh, 0, false)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("NumericFactorization/cholmod/" + mesh).c_str(), BM_NumericFactorization, mesh, 0,
+                                 true)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("SymbolicAnalysis/" + mesh).c_str(), BM_SymbolicAnalysis, mesh)
         ->Unit(benchmark::kMillisecond);
@@ -297,9 +303,11 @@ void register_all() {
   // than the mesh (fill), which is what the multigrid path is for.
   for (const int subdivide : {2, 3}) {
     const std::string name = "horse_b.obj/x" + std::to_string(1 << (2 * subdivide));
-    benchmark::RegisterBenchmark(("NumericFactorization/" + name).c_str(), BM_NumericFactorization, "horse_b.obj",
-                                 subdivide)
-        ->Unit(benchmark::kMillisecond);
+    for (const bool by_cholmod : {false, true})
+      benchmark::RegisterBenchmark(
+          ("NumericFactorization/" + std::string(by_cholmod ? "cholmod/" : "") + name).c_str(),
+          BM_NumericFactorization, "horse_b.obj", subdivide, by_cholmod)
+          ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Solve/" + name).c_str(), BM_Solve, "horse_b.obj", subdivide)
         ->Unit(benchmark::kMillisecond);
   }

@@ -1,0 +1,113 @@
+#pragma once
+// Numeric supernodal Cholesky factorization A = L L^T on the symbolic
+// structure of CHOLMOD's analysis, on two cores.
+//
+// The algorithm is CHOLMOD's left-looking supernodal one (Chen, Davis, Hager
+// and Rajamanickam 2008, as in cholmod_super_numeric): for each supernode s
+// in order, its block is set to A's columns, every earlier supernode d whose
+// rows reach s's columns subtracts its update L_d(rows >= s, :) L_d(rows in
+// s, :)^T (BLAS dsyrk and dgemm into a buffer, scattered into s's block),
+// then the diagonal block is factored (LAPACK dpotrf) and the rows below it
+// solved (BLAS dtrsm). CHOLMOD 3 runs that loop on one core; on this 2-core
+// machine its factorization of a large mesh's K used one core
+// (docs/performance.md). Here the same calls run on two:
+//  - below a cut of the elimination tree, two groups of disjoint subtrees
+//    (supernodal_tree.h) are factored at the same time, one per core; a
+//    subtree's supernodes update only each other and the top;
+//  - above the cut (the top: the largest separators of the nested
+//    dissection), disjoint branches run concurrently.
+// A supernode needs only its descendants, all finished before it starts.
+// Each supernode's updates are applied in CHOLMOD's order (the last linked
+// first: every link is keyed by when CHOLMOD's one loop would have made it),
+// with CHOLMOD's BLAS calls and arguments, so the factor has CHOLMOD's bits
+// whatever the number of threads and their timing (tests/test_sparse_cholesky.cpp
+// compares them). Splitting one supernode's work between the cores (an
+// update's rows, or the rows of its triangular solve) changes the shapes of
+// the BLAS calls, and with them OpenBLAS's kernels and the rounding; it was
+// measured and left out (docs/performance.md).
+#include <vector>
+
+#include "solvers/supernodal_tree.h"
+
+namespace akvf {
+
+// The lower triangle of A in compressed columns (int indices), in the
+// factor's (permuted) numbering.
+struct LowerTriangle {
+  int n = 0;
+  const int* column_start = nullptr;
+  const int* row = nullptr;
+  const double* value = nullptr;
+};
+
+template <class Index>
+class SupernodalFactorization {
+ public:
+  // Splits the elimination tree (the structure must outlive this object).
+  explicit SupernodalFactorization(const SupernodalStructure<Index>& structure);
+
+  // Fills values (structure.value_start[supernodes] entries, CHOLMOD's
+  // supernodal layout) with L. Throws NotPositiveDefinite (naming the
+  // column) when a pivot is not positive.
+  void factorize(const LowerTriangle& A, double* values);
+
+  // Share of the estimated flops in the top part.
+  double top_share() const { return top_share_; }
+
+ private:
+  // An update of the supernode being built by supernode `node`: its rows
+  // [first, first + rows) of the pattern, the first `inside` of them in the
+  // target's columns.
+  struct Descendant {
+    int node;
+    Index first;
+    int inside, rows;
+  };
+  // When a supernode was linked to the list of the next supernode it
+  // updates: while supernode `node` was worked on, as its `order`-th link
+  // (its descendants in their order, then itself).
+  struct Key {
+    int node, order;
+    bool operator>(const Key& other) const {
+      return node != other.node ? node > other.node : order > other.order;
+    }
+  };
+  // What one worker (core) needs: the local row of each row of the
+  // supernode being built, its descendants, the update buffer.
+  struct Workspace {
+    std::vector<int> local_row;  // by global row; valid for the rows of the supernode being built
+    std::vector<Descendant> descendants;
+    std::vector<int> relative;  // the update's rows as local rows of the target
+    std::vector<double> update;
+  };
+
+  void factor_supernode(int s, int worker, const LowerTriangle& A, double* values);
+  // s's branch of the top, then s.
+  void factor_top(int s, const LowerTriangle& A, double* values);
+  void assemble(int s, const LowerTriangle& A, const std::vector<int>& local_row, double* values) const;
+  // s's descendants from both workers' lists, in CHOLMOD's order.
+  void collect(int s, int worker);
+  void apply_update(const Descendant& d, int s, Workspace* w, double* values) const;
+  void factor_diagonal(int s, double* values) const;
+  // The rows of s below its diagonal block: L21 = A21 L11^-T.
+  void solve_below(int s, double* values) const;
+  // After s's descendants were applied: each is linked to the supernode it updates next.
+  void advance(int s, int worker);
+  void link(int d, Index position, int worker, Key key);
+
+  SupernodalStructure<Index> s_;
+  std::vector<int> column_node_;
+  std::vector<int> group_[2];                    // supernodes, in increasing order
+  std::vector<int> top_roots_;                   // the roots of the top's branches
+  std::vector<std::vector<int>> top_children_;  // children of top supernodes that are in the top
+  double top_share_ = 0;
+  // Per factorization: each supernode's next row to update (an index into
+  // the pattern), and per worker the linked lists of supernodes waiting to
+  // update each supernode, with the keys of their links.
+  std::vector<Index> next_row_;
+  std::vector<int> head_[2], next_;
+  std::vector<Key> key_;
+  Workspace workspace_[2];
+};
+
+}  // namespace akvf
