@@ -104,8 +104,10 @@ double DistortionObjective<D>::max_feasible_step(const Eigen::VectorXd& x, const
 
 template <int D>
 int DistortionObjective<D>::count_inverted(const Eigen::VectorXd& x) const {
+  for_each_index(static_cast<int>(elements_.rows()),
+                 [&](int e) { element_value_[e] = !(edge_matrix(x, e).determinant() > 0); });
   int inverted = 0;
-  for (int e = 0; e < elements_.rows(); ++e) inverted += !(edge_matrix(x, e).determinant() > 0);
+  for (double flag : element_value_) inverted += flag != 0;
   return inverted;
 }
 
