@@ -19,19 +19,20 @@ namespace akvf {
 // lower triangle of P A P^T ourselves, in the compressed form CHOLMOD's
 // supernodal factorization reads directly when the ordering is natural
 // (stype < 0). cholmod_factorize on A with a permutation would instead build a
-// permuted transpose, with its allocations, at every call; here each
-// factorization only scatters the values through a fixed index map.
+// permuted transpose, with its allocations, at every call; here CHOLMOD's
+// factorizations get the values gathered through a fixed index map, and our
+// supernodal factorization reads them through the map from A's own values
+// (no copy: at 10 M triangles the lower triangle's values are 0.6 GB).
 //
 // The pattern part (permutation, lower triangle's indices, index map) is
 // immutable after the analysis and shared by copies of it (copy_analysis:
-// the cache of symbolic_analysis_cache.h, kept by the API's repeated solves), and
-// the values are allocated at the first factorization, so an analysis kept
-// for later costs no values (at 10 M triangles the lower triangle's values
-// are 0.6 GB and its indices 0.9 GB).
+// the cache of symbolic_analysis_cache.h, kept by the API's repeated solves),
+// so an analysis kept for later costs no values (at 10 M triangles the
+// lower triangle's indices are 0.9 GB).
 struct PermutedPattern {
   std::vector<int> permutation;  // row a of P A P^T is row permutation[a] of A
   std::vector<int> lower_column_start, lower_row;
-  std::vector<int> value_map;  // nonzero k of the upper input -> its slot in the lower triangle
+  std::vector<int> source;  // entry p of the lower triangle is nonzero source[p] of the upper input
 };
 
 namespace {
@@ -94,10 +95,10 @@ class PermutedFactor {
   virtual bool analyze(const std::shared_ptr<const PermutedPattern>& pattern) = 0;
   // A new object holding a copy of this (analyzed, unfactored) analysis.
   virtual std::unique_ptr<PermutedFactor> copy_analysis() const = 0;
-  // values: the lower triangle's, in the pattern's order. A supernodal
-  // factor is computed by SupernodalFactorization (two cores, CHOLMOD's
-  // bits) unless `by_cholmod`.
-  virtual void factorize(double* values, bool by_cholmod) = 0;
+  // upper_values: the upper input's nonzeros (PermutedPattern::source
+  // maps them to the lower triangle). A supernodal factor is computed by
+  // SupernodalFactorization (two cores, CHOLMOD's bits) unless `by_cholmod`.
+  virtual void factorize(const double* upper_values, bool by_cholmod) = 0;
   // z = (L L^T)^-1 z in the permuted numbering.
   virtual void solve(double* z) = 0;
   virtual bool supernodal() const = 0;
@@ -155,19 +156,22 @@ class CholmodFactor final : public PermutedFactor {
     return copy;
   }
 
-  void factorize(double* values, bool by_cholmod) override {
+  void factorize(const double* upper_values, bool by_cholmod) override {
     own_factored_ = false;
+    const std::vector<int>& source = pattern_->source;
     if (factor_->is_super && !by_cholmod) {
       // Not value-initialized: each supernode's block is set when it is
       // built, so the pages are first touched by the core that builds it.
       if (!factor_values_) factor_values_.reset(new double[factor_->xsize]);
       const LowerTriangle A{static_cast<int>(factor_->n), pattern_->lower_column_start.data(),
-                            pattern_->lower_row.data(), values};
+                            pattern_->lower_row.data(), upper_values, source.data()};
       parallel_factorization().factorize(A, factor_values_.get());
       own_factored_ = true;
       return;
     }
-    cholmod_sparse B = lower(values);
+    lower_value_.resize(source.size());  // allocated at the first factorization
+    for (std::size_t p = 0; p < source.size(); ++p) lower_value_[p] = upper_values[source[p]];
+    cholmod_sparse B = lower(lower_value_.data());
     Api::factorize(&B, factor_, &common_);
     if (common_.status == CHOLMOD_NOT_POSDEF)
       throw NotPositiveDefinite("matrix is not positive definite (CHOLMOD stopped at column " +
@@ -262,6 +266,7 @@ class CholmodFactor final : public PermutedFactor {
   std::unique_ptr<SupernodalSolve<Index>> supernodal_solver_;
   std::unique_ptr<SupernodalFactorization<Index>> parallel_factorization_;
   std::unique_ptr<double[]> factor_values_;  // L by SupernodalFactorization (factor_->xsize entries)
+  std::vector<double> lower_value_;           // the lower triangle's values, for CHOLMOD's factorizations
   bool own_factored_ = false;
 };
 
@@ -286,7 +291,6 @@ struct SparseCholesky::Impl {
   cholmod_common common;  // the ordering's (int: the graph of the blocks is small)
   std::shared_ptr<const PermutedPattern> pattern;
   std::unique_ptr<PermutedFactor> factor;
-  std::vector<double> lower_value;  // empty until the first factorization
   std::vector<double> permuted_rhs;
   bool wide_indices = false;      // tests: 64-bit indices from the start
   bool by_cholmod = false;        // tests, benchmarks: CHOLMOD's own numeric factorization
@@ -349,7 +353,7 @@ struct SparseCholesky::Impl {
     auto built = std::make_shared<PermutedPattern>();
     std::vector<int>& lower_column_start = built->lower_column_start;
     std::vector<int>& lower_row = built->lower_row;
-    std::vector<int>& value_map = built->value_map;
+    std::vector<int>& source = built->source;
     std::vector<int> inverse(n);
     for (int a = 0; a < n; ++a) inverse[permutation[a]] = a;
     const int* start = upper.outerIndexPtr();
@@ -378,11 +382,11 @@ struct SparseCholesky::Impl {
     stable_bucket_sort(entries, &Entry::column);
     lower_column_start.assign(n + 1, 0);
     lower_row.resize(entries.size());
-    value_map.resize(entries.size());
+    source.resize(entries.size());
     for (std::size_t e = 0; e < entries.size(); ++e) {
       ++lower_column_start[entries[e].column + 1];
       lower_row[e] = entries[e].row;
-      value_map[entries[e].source] = static_cast<int>(e);
+      source[e] = entries[e].source;
     }
     for (int j = 0; j < n; ++j) lower_column_start[j + 1] += lower_column_start[j];
     built->permutation = std::move(permutation);
@@ -413,7 +417,6 @@ double SparseCholesky::factor_bytes() const { return analyzed() ? impl_->factor-
 void SparseCholesky::clear() {
   impl_->factor.reset();
   impl_->pattern.reset();
-  std::vector<double>().swap(impl_->lower_value);
 }
 
 void SparseCholesky::take_over(SparseCholesky* other) {
@@ -469,7 +472,6 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
   //    indices while the factor's entries fit them and its 64-bit ones
   //    (cholmod_l_*) from 2^31 entries on (the same arithmetic: same bits).
   m.pattern = Impl::permuted_lower(upper, std::move(permutation));
-  m.lower_value.clear();
   if (!m.wide_indices) {
     m.factor = std::make_unique<CholmodFactor<int>>();
     if (m.factor->analyze(m.pattern)) return;
@@ -487,19 +489,14 @@ void SparseCholesky::copy_analysis(const SparseCholesky& other) {
   m.factor = from.factor->copy_analysis();
   m.pattern = from.pattern;
   m.ordering = from.ordering;
-  m.lower_value.clear();
 }
 
 void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& upper) {
   if (!analyzed()) analyze(upper);
   Impl& m = *impl_;
-  const std::vector<int>& value_map = m.pattern->value_map;
-  if (static_cast<std::size_t>(upper.nonZeros()) != value_map.size())
+  if (static_cast<std::size_t>(upper.nonZeros()) != m.pattern->source.size())
     throw NumericalError("SparseCholesky: the sparsity pattern changed since analyze()");
-  m.lower_value.resize(value_map.size());
-  const double* values = upper.valuePtr();
-  for (std::size_t k = 0; k < value_map.size(); ++k) m.lower_value[value_map[k]] = values[k];
-  m.factor->factorize(m.lower_value.data(), m.by_cholmod);
+  m.factor->factorize(upper.valuePtr(), m.by_cholmod);
 }
 
 bool solve_positive_definite(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd* X) {

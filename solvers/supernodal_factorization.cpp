@@ -6,8 +6,6 @@
 
 #include <algorithm>
 #include <cholmod.h>  // SuiteSparse_long
-#include <cmath>
-#include <numeric>
 #include <string>
 
 #include "solvers/sparse_cholesky.h"
@@ -48,21 +46,17 @@ SupernodalFactorization<Index>::SupernodalFactorization(const SupernodalStructur
   for (int node = 0; node < n_super; ++node) work[node] = supernode_flops(block_shape(s_, node));
   // The top counts about half: its branches are worked on concurrently.
   const std::vector<char> owner = split_subtrees(tree, work, 0.5);
-  double top = 0;
   top_children_.resize(n_super);
   for (int node = 0; node < n_super; ++node) {
     if (owner[node] != kTop) {
       group_[static_cast<int>(owner[node])].push_back(node);
       continue;
     }
-    top += work[node];
     if (tree.parent[node] < 0)
       top_roots_.push_back(node);
     else
       top_children_[tree.parent[node]].push_back(node);  // a top node's parent is in the top
   }
-  const double total = std::accumulate(work.begin(), work.end(), 0.0);
-  top_share_ = total > 0 ? top / total : 0;
   next_row_.resize(n_super);
   next_.resize(n_super);
   key_.resize(n_super);
@@ -70,12 +64,12 @@ SupernodalFactorization<Index>::SupernodalFactorization(const SupernodalStructur
 }
 
 template <class Index>
-void SupernodalFactorization<Index>::link(int d, Index position, int list, Key key) {
+void SupernodalFactorization<Index>::link(int d, Index position, int worker, Key key) {
   next_row_[d] = position;
   if (position < s_.pattern_start[d + 1]) {
     const int target = column_node_[static_cast<std::size_t>(s_.pattern[position])];
-    next_[d] = head_[list][target];
-    head_[list][target] = d;
+    next_[d] = head_[worker][target];
+    head_[worker][target] = d;
     key_[d] = key;
   }
 }
@@ -89,7 +83,7 @@ void SupernodalFactorization<Index>::assemble(int s, const LowerTriangle& A, con
   for (int j = 0; j < b.columns; ++j) {
     const int column = b.first_column + j;
     double* target = block + static_cast<std::size_t>(j) * b.rows;
-    for (int p = A.column_start[column]; p < A.column_start[column + 1]; ++p) target[local_row[A.row[p]]] += A.value[p];
+    for (int p = A.column_start[column]; p < A.column_start[column + 1]; ++p) target[local_row[A.row[p]]] += A.value[A.source[p]];
   }
 }
 

@@ -32,12 +32,14 @@
 namespace akvf {
 
 // The lower triangle of A in compressed columns (int indices), in the
-// factor's (permuted) numbering.
+// factor's (permuted) numbering; entry p's value is value[source[p]] (A's
+// values in another order: no copy of them is made).
 struct LowerTriangle {
   int n = 0;
   const int* column_start = nullptr;
   const int* row = nullptr;
   const double* value = nullptr;
+  const int* source = nullptr;
 };
 
 template <class Index>
@@ -50,9 +52,6 @@ class SupernodalFactorization {
   // supernodal layout) with L. Throws NotPositiveDefinite (naming the
   // column) when a pivot is not positive.
   void factorize(const LowerTriangle& A, double* values);
-
-  // Share of the estimated flops in the top part.
-  double top_share() const { return top_share_; }
 
  private:
   // An update of the supernode being built by supernode `node`: its rows
@@ -100,7 +99,6 @@ class SupernodalFactorization {
   std::vector<int> group_[2];                    // supernodes, in increasing order
   std::vector<int> top_roots_;                   // the roots of the top's branches
   std::vector<std::vector<int>> top_children_;  // children of top supernodes that are in the top
-  double top_share_ = 0;
   // Per factorization: each supernode's next row to update (an index into
   // the pattern), and per worker the linked lists of supernodes waiting to
   // update each supernode, with the keys of their links.

@@ -12,7 +12,9 @@
 //
 // The unit: K (Eq. 5, area-scaled) at the initial map in 2D, K (Eq. 9-10) +
 // 1e-4 I at the rest shape in 3D, analyzed once, then the median of 5
-// numeric factorizations. Prints a Markdown table (docs/performance.md).
+// numeric factorizations: ours (two cores, what the runs use), and
+// CHOLMOD's own (one core), the unit issue 14's targets were first set in.
+// Prints a Markdown table (docs/performance.md).
 //
 // Usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim] [--repeat N] [--only 2d|3d]
 #include <algorithm>
@@ -45,10 +47,15 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
+struct Unit {
+  double ours = 0, cholmod = 0;  // seconds
+};
+
 // Median seconds of 5 numeric factorizations of `matrix` (analyzed once).
 template <int D>
-double factorization_seconds(const akvf::ElementMatrix<D, D + 1>& matrix) {
+double factorization_seconds(const akvf::ElementMatrix<D, D + 1>& matrix, bool by_cholmod) {
   akvf::SparseCholesky cholesky;
+  cholesky.use_cholmod_factorization(by_cholmod);
   cholesky.analyze(matrix.upper(), D);
   std::vector<double> seconds;
   for (int i = 0; i < 5; ++i) {
@@ -59,22 +66,27 @@ double factorization_seconds(const akvf::ElementMatrix<D, D + 1>& matrix) {
   return median(seconds);
 }
 
-double unit_2d(const akvf::TriMesh& mesh) {
+template <int D>
+Unit factorization_units(const akvf::ElementMatrix<D, D + 1>& matrix) {
+  return {factorization_seconds<D>(matrix, false), factorization_seconds<D>(matrix, true)};
+}
+
+Unit unit_2d(const akvf::TriMesh& mesh) {
   const akvf::ThreadLimit threads(0);
   const akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "mesh", akvf::ParamConfig{});
   const akvf::DistortionObjective2D& objective = *setup.objective;
   akvf::ElementMatrix2D K(objective.elements(), objective.num_vertices());
   akvf::assemble_killing_operator_2d(objective.elements(), setup.x0, objective.rest().area, true, &K);
   K.add_to_diagonal(1e-8 * K.mean_diagonal());
-  return factorization_seconds<2>(K);
+  return factorization_units<2>(K);
 }
 
-double unit_3d(const akvf::TetMesh& mesh) {
+Unit unit_3d(const akvf::TetMesh& mesh) {
   const akvf::ThreadLimit threads(0);
   akvf::ElementMatrix3D K(mesh.T, mesh.num_vertices());
   akvf::assemble_killing_operator_3d(mesh.T, akvf::stack_rows(mesh.V), &K);
   K.add_to_diagonal(1e-4);
-  return factorization_seconds<3>(K);
+  return factorization_units<3>(K);
 }
 
 struct Row {
@@ -85,15 +97,16 @@ struct Row {
   double energy = 0;
 };
 
-void print_rows(const std::string& mesh, long elements, double unit, const std::vector<Row>& rows) {
+void print_rows(const std::string& mesh, long elements, const Unit& unit, const std::vector<Row>& rows) {
   double best = std::numeric_limits<double>::infinity();
   for (const Row& r : rows)
     if (r.status == "converged" || r.status == "reached") best = std::min(best, r.seconds);
   for (const Row& r : rows) {
     char line[400];
-    std::snprintf(line, sizeof line, "| %s | %ld | %.1f | %s | %d | %.3f | %.1f | %.2f | %s | %.10g |", mesh.c_str(),
-                  elements, 1e3 * unit, r.method.c_str(), r.iterations, r.seconds, r.seconds / unit, r.seconds / best,
-                  r.status.c_str(), r.energy);
+    std::snprintf(line, sizeof line, "| %s | %ld | %.1f | %.1f | %s | %d | %.3f | %.1f | %.1f | %.2f | %s | %.10g |",
+                  mesh.c_str(), elements, 1e3 * unit.ours, 1e3 * unit.cholmod, r.method.c_str(), r.iterations,
+                  r.seconds, r.seconds / unit.ours, r.seconds / unit.cholmod, r.seconds / best, r.status.c_str(),
+                  r.energy);
     std::cout << line << std::endl;
   }
 }
@@ -106,8 +119,9 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(data / "tri")) files.push_back(entry.path());
   std::sort(files.begin(), files.end());
-  std::cout << "| mesh | faces | unit (ms) | method | iterations | seconds | units | / best | status | energy |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|\n";
+  std::cout << "| mesh | faces | unit (ms) | CHOLMOD unit (ms) | method | iterations | seconds | units | CHOLMOD units "
+               "| / best | status | energy |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& file : files) {
     akvf::TriMesh mesh;
     try {
@@ -116,7 +130,7 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
       continue;
     }
     if (mesh.num_faces() < 10000) continue;
-    double unit = 0;
+    Unit unit;
     try {
       unit = unit_2d(mesh);
     } catch (const akvf::Error& e) {
@@ -167,8 +181,8 @@ void run_3d(const std::filesystem::path& data, const std::vector<std::string>& m
   const std::vector<Case> cases = {{"cube_4k.obj", "cube_4k (slim-cube)", true},
                                    {"octopus-low.mesh", "octopus-low (lifted)", false},
                                    {"bar.tet", "bar (lifted)", false}};
-  std::cout << "\n| tet mesh | tets | unit (ms) | method | iterations to 1e-4 | seconds | units | / best | status | "
-               "energy |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  std::cout << "\n| tet mesh | tets | unit (ms) | CHOLMOD unit (ms) | method | iterations to 1e-4 | seconds | units | "
+               "CHOLMOD units | / best | status | energy |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Case& c : cases) {
     const std::filesystem::path path = data / "tet" / c.file;
     if (!std::filesystem::exists(path)) continue;
@@ -178,7 +192,7 @@ void run_3d(const std::filesystem::path& data, const std::vector<std::string>& m
     akvf::TetMesh unit_mesh = mesh;
     const double volume_scale = 1.0 / std::cbrt(akvf::rest_tets(mesh).total_volume);
     unit_mesh.V *= volume_scale;
-    const double unit = unit_3d(unit_mesh);
+    const Unit unit = unit_3d(unit_mesh);
     const auto run = [&](const std::string& method) {
       akvf::DeformOptions options;
       options.preconditioner = method_name(method, options.preconditioner);
