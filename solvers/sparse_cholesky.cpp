@@ -239,8 +239,9 @@ class CholmodFactor final : public PermutedFactor {
       return sparse_view<Index>(n, column_start_->data(), row_->data(), values, -1);
   }
 
-  // Our supernodal triangular solves (solvers/supernodal_solve.h), set up
-  // for the factor's structure at the first solve.
+  // The factor's supernodal structure, and our triangular solves
+  // (solvers/supernodal_solve.h) and numeric factorization
+  // (solvers/supernodal_factorization.h) on it, set up at first use.
   SupernodalStructure<Index> structure() const {
     return {static_cast<Index>(factor_->nsuper), static_cast<const Index*>(factor_->super),
             static_cast<const Index*>(factor_->pi), static_cast<const Index*>(factor_->px),
