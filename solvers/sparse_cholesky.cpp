@@ -252,7 +252,8 @@ class CholmodFactor final : public PermutedFactor {
     return *supernodal_solver_;
   }
   SupernodalFactorization<Index>& parallel_factorization() {
-    if (!parallel_factorization_) parallel_factorization_ = std::make_unique<SupernodalFactorization<Index>>(structure());
+    if (!parallel_factorization_)
+      parallel_factorization_ = std::make_unique<SupernodalFactorization<Index>>(structure());
     return *parallel_factorization_;
   }
 
@@ -267,7 +268,7 @@ class CholmodFactor final : public PermutedFactor {
   std::unique_ptr<SupernodalSolve<Index>> supernodal_solver_;
   std::unique_ptr<SupernodalFactorization<Index>> parallel_factorization_;
   std::unique_ptr<double[]> factor_values_;  // L by SupernodalFactorization (factor_->xsize entries)
-  std::vector<double> lower_value_;           // the lower triangle's values, for CHOLMOD's factorizations
+  std::vector<double> lower_value_;          // the lower triangle's values, for CHOLMOD's factorizations
   bool own_factored_ = false;
 };
 

@@ -4,9 +4,10 @@
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
-#include <algorithm>
 #include <cholmod.h>  // SuiteSparse_long
+#include <algorithm>
 #include <string>
+#include <utility>
 
 #include "solvers/sparse_cholesky.h"
 
@@ -40,8 +41,8 @@ double supernode_flops(const BlockShape& shape) {
 template <class Index>
 SupernodalFactorization<Index>::SupernodalFactorization(const SupernodalStructure<Index>& structure) : s_(structure) {
   const int n_super = static_cast<int>(s_.supernodes);
-  const SupernodalTree tree = supernodal_tree(s_);
-  column_node_ = tree.column_node;
+  SupernodalTree tree = supernodal_tree(s_);
+  column_node_ = std::move(tree.column_node);
   std::vector<double> work(n_super);
   for (int node = 0; node < n_super; ++node) work[node] = supernode_flops(block_shape(s_, node));
   // The top counts about half: its branches are worked on concurrently.
@@ -83,7 +84,8 @@ void SupernodalFactorization<Index>::assemble(int s, const LowerTriangle& A, con
   for (int j = 0; j < b.columns; ++j) {
     const int column = b.first_column + j;
     double* target = block + static_cast<std::size_t>(j) * b.rows;
-    for (int p = A.column_start[column]; p < A.column_start[column + 1]; ++p) target[local_row[A.row[p]]] += A.value[A.source[p]];
+    for (int p = A.column_start[column]; p < A.column_start[column + 1]; ++p)
+      target[local_row[A.row[p]]] += A.value[A.source[p]];
   }
 }
 
@@ -194,8 +196,13 @@ void SupernodalFactorization<Index>::factorize(const LowerTriangle& A, double* v
   // thread index names the worker).
   tbb::task_arena arena(2);
   arena.execute([&] {
-    tbb::parallel_invoke([&] { for (int s : group_[0]) factor_supernode(s, 0, A, values); },
-                         [&] { for (int s : group_[1]) factor_supernode(s, 1, A, values); });
+    tbb::parallel_invoke(
+        [&] {
+          for (int s : group_[0]) factor_supernode(s, 0, A, values);
+        },
+        [&] {
+          for (int s : group_[1]) factor_supernode(s, 1, A, values);
+        });
     tbb::parallel_for_each(top_roots_.begin(), top_roots_.end(), [&](int root) { factor_top(root, A, values); });
   });
 }

@@ -67,9 +67,7 @@ class SupernodalFactorization {
   // (its descendants in their order, then itself).
   struct Key {
     int node, order;
-    bool operator>(const Key& other) const {
-      return node != other.node ? node > other.node : order > other.order;
-    }
+    bool operator>(const Key& other) const { return node != other.node ? node > other.node : order > other.order; }
   };
   // What one worker (core) needs: the local row of each row of the
   // supernode being built, its descendants, the update buffer.
@@ -96,8 +94,8 @@ class SupernodalFactorization {
 
   SupernodalStructure<Index> s_;
   std::vector<int> column_node_;
-  std::vector<int> group_[2];                    // supernodes, in increasing order
-  std::vector<int> top_roots_;                   // the roots of the top's branches
+  std::vector<int> group_[2];                   // supernodes, in increasing order
+  std::vector<int> top_roots_;                  // the roots of the top's branches
   std::vector<std::vector<int>> top_children_;  // children of top supernodes that are in the top
   // Per factorization: each supernode's next row to update (an index into
   // the pattern), and per worker the linked lists of supernodes waiting to

@@ -2,9 +2,9 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include <cholmod.h>  // SuiteSparse_long
 #include <Eigen/Core>
 #include <algorithm>
-#include <cholmod.h>  // SuiteSparse_long
 #include <numeric>
 
 namespace akvf {
@@ -69,7 +69,7 @@ void SupernodalSolve<Index>::forward(const double* values, int group, double* z)
 // L^T x = y over supernodes `order`, last first.
 template <class Index>
 void SupernodalSolve<Index>::backward(const double* values, const std::vector<int>& order, double* z,
-                               std::vector<double>* scratch) const {
+                                      std::vector<double>* scratch) const {
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     const int node = *it;
     const BlockShape b = block_shape(s_, node);

@@ -304,9 +304,8 @@ void register_all() {
   for (const int subdivide : {2, 3}) {
     const std::string name = "horse_b.obj/x" + std::to_string(1 << (2 * subdivide));
     for (const bool by_cholmod : {false, true})
-      benchmark::RegisterBenchmark(
-          ("NumericFactorization/" + std::string(by_cholmod ? "cholmod/" : "") + name).c_str(),
-          BM_NumericFactorization, "horse_b.obj", subdivide, by_cholmod)
+      benchmark::RegisterBenchmark(("NumericFactorization/" + std::string(by_cholmod ? "cholmod/" : "") + name).c_str(),
+                                   BM_NumericFactorization, "horse_b.obj", subdivide, by_cholmod)
           ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Solve/" + name).c_str(), BM_Solve, "horse_b.obj", subdivide)
         ->Unit(benchmark::kMillisecond);
