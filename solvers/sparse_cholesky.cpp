@@ -5,8 +5,14 @@
 #include <algorithm>
 #include <cstring>
 #include <memory>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "framework/process/error.h"
 #include "solvers/supernodal_factorization.h"
@@ -287,10 +293,49 @@ class CholmodFactor final : public PermutedFactor {
 // fewer flops per nonzero than the matrix factored, stays below.
 bool use_metis(double amd_flops, double graph_nonzeros) { return amd_flops > 7000 * graph_nonzeros; }
 
+// Whether to start METIS's ordering before AMD's result decides whether it
+// is needed (use_metis), on the core that AMD's ordering leaves idle. A
+// needless METIS run delays the analysis by METIS's time minus AMD's (about
+// 4x AMD's on the meshes measured); a needed one saves AMD's (horse_b x64:
+// 1.3 s of 8.5 s, METIS 7 s). So it pays only where METIS is almost always
+// needed: on large meshes. AMD's fill on a mesh-like (planar) graph grows
+// faster than nested dissection's O(n log n) (Lipton, Rose and Tarjan), so
+// its flops per nonzero, which use_metis compares, grow with the mesh; every
+// mesh measured here from 1.8e5 vertices on (camelhead and horse_b
+// subdivided, up to 5.1e6 vertices) needed METIS, the largest paper mesh
+// (horse_b, 2e4 vertices) does not. The first power of two above the
+// paper's meshes by a margin: 2^17 blocks. Either way the ordering kept is
+// the one use_metis chooses: only the timing depends on this guess.
+bool start_metis_early(int blocks) { return blocks >= (1 << 17); }
+
+// A fill-reducing ordering of the symmetric pattern A (upper triangle) by
+// `method` (CHOLMOD_AMD, CHOLMOD_METIS), postordered; its flop count in
+// *flops. Its own cholmod_common: two may run at the same time.
+std::vector<int> block_ordering(cholmod_sparse* A, int method, double* flops) {
+  cholmod_common common;
+  cholmod_start(&common);
+  common.print = 0;
+  common.nmethods = 1;
+  common.method[0].ordering = method;
+  common.postorder = 1;
+  cholmod_factor* ordering = cholmod_analyze(A, &common);
+  std::vector<int> permutation;
+  if (ordering) {
+    const int* perm = static_cast<const int*>(ordering->Perm);
+    permutation.assign(perm, perm + A->nrow);
+    *flops = common.method[0].fl;
+    cholmod_free_factor(&ordering, &common);
+  }
+  const int status = common.status;
+  cholmod_finish(&common);
+  if (status < CHOLMOD_OK)
+    throw NumericalError("CHOLMOD symbolic analysis failed (status " + std::to_string(status) + ")");
+  return permutation;
+}
+
 }  // namespace
 
 struct SparseCholesky::Impl {
-  cholmod_common common;  // the ordering's (int: the graph of the blocks is small)
   std::shared_ptr<const PermutedPattern> pattern;
   std::unique_ptr<PermutedFactor> factor;
   std::vector<double> permuted_rhs;
@@ -298,15 +343,6 @@ struct SparseCholesky::Impl {
   bool by_cholmod = false;        // tests, benchmarks: CHOLMOD's own numeric factorization
   bool always_try_metis = false;  // tests: METIS's ordering besides AMD's at any size
   std::string ordering;           // of the last analysis: "amd" or "metis"
-
-  Impl() {
-    cholmod_start(&common);
-    common.print = 0;
-  }
-  ~Impl() {
-    factor.reset();
-    cholmod_finish(&common);
-  }
 
   // The upper-triangular pattern of the graph whose nodes are the blocks of
   // block_size consecutive unknowns (block size 1: the pattern of `upper`).
@@ -333,21 +369,6 @@ struct SparseCholesky::Impl {
     }
   }
 
-  // A fill-reducing ordering of the symmetric pattern A (upper triangle) by
-  // `method` (CHOLMOD_AMD, CHOLMOD_METIS), postordered; its flop and
-  // nonzero counts are left in common.method[0].
-  std::vector<int> block_ordering(cholmod_sparse* A, int method) {
-    common.nmethods = 1;
-    common.method[0].ordering = method;
-    common.postorder = 1;
-    cholmod_factor* ordering = cholmod_analyze(A, &common);
-    check_status(common, "symbolic analysis");
-    const int* perm = static_cast<const int*>(ordering->Perm);
-    std::vector<int> permutation(perm, perm + A->nrow);
-    cholmod_free_factor(&ordering, &common);
-    return permutation;
-  }
-
   // The lower triangle of P A P^T from the pattern of `upper`.
   static std::shared_ptr<const PermutedPattern> permuted_lower(const Eigen::SparseMatrix<double>& upper,
                                                                std::vector<int> permutation) {
@@ -360,37 +381,35 @@ struct SparseCholesky::Impl {
     for (int a = 0; a < n; ++a) inverse[permutation[a]] = a;
     const int* start = upper.outerIndexPtr();
     const int* rows = upper.innerIndexPtr();
-    struct Entry {
-      int column, row, source;
-    };
-    std::vector<Entry> entries;
-    entries.reserve(upper.nonZeros());
+    // Entry k of `upper` (row rows[k], column j) lands in column
+    // min(inverse[rows[k]], inverse[j]) of the lower triangle, at row max.
+    // Counted per column, scattered to its column (one pass each), then
+    // each column's entries sorted by row, columns in parallel (a column
+    // holds the few neighbours of one unknown).
+    lower_column_start.assign(n + 1, 0);
+    for (int j = 0; j < n; ++j)
+      for (int k = start[j]; k < start[j + 1]; ++k) ++lower_column_start[std::min(inverse[rows[k]], inverse[j]) + 1];
+    for (int j = 0; j < n; ++j) lower_column_start[j + 1] += lower_column_start[j];
+    lower_row.resize(upper.nonZeros());
+    source.resize(upper.nonZeros());
+    std::vector<int> next(lower_column_start.begin(), lower_column_start.end() - 1);
     for (int j = 0; j < n; ++j)
       for (int k = start[j]; k < start[j + 1]; ++k) {
         const int a = inverse[rows[k]], b = inverse[j];
-        entries.push_back({std::min(a, b), std::max(a, b), k});
+        const int p = next[std::min(a, b)]++;
+        lower_row[p] = std::max(a, b);
+        source[p] = k;
       }
-    // Sorted by (column, row) in linear time: a stable counting sort by row,
-    // then one by column.
-    const auto stable_bucket_sort = [n](std::vector<Entry>& items, int Entry::*key) {
-      std::vector<int> offset(n + 1, 0);
-      for (const Entry& e : items) ++offset[e.*key + 1];
-      for (int i = 0; i < n; ++i) offset[i + 1] += offset[i];
-      std::vector<Entry> sorted(items.size());
-      for (const Entry& e : items) sorted[offset[e.*key]++] = e;
-      items.swap(sorted);
-    };
-    stable_bucket_sort(entries, &Entry::row);
-    stable_bucket_sort(entries, &Entry::column);
-    lower_column_start.assign(n + 1, 0);
-    lower_row.resize(entries.size());
-    source.resize(entries.size());
-    for (std::size_t e = 0; e < entries.size(); ++e) {
-      ++lower_column_start[entries[e].column + 1];
-      lower_row[e] = entries[e].row;
-      source[e] = entries[e].source;
-    }
-    for (int j = 0; j < n; ++j) lower_column_start[j + 1] += lower_column_start[j];
+    tbb::parallel_for(tbb::blocked_range<int>(0, n), [&](const tbb::blocked_range<int>& columns) {
+      std::vector<std::pair<int, int>> column;
+      for (int j = columns.begin(); j < columns.end(); ++j) {
+        const int first = lower_column_start[j], end = lower_column_start[j + 1];
+        column.clear();
+        for (int p = first; p < end; ++p) column.emplace_back(lower_row[p], source[p]);
+        std::sort(column.begin(), column.end());  // rows are distinct within a column
+        for (int p = first; p < end; ++p) std::tie(lower_row[p], source[p]) = column[p - first];
+      }
+    });
     built->permutation = std::move(permutation);
     return built;
   }
@@ -449,21 +468,27 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
   //    (vertices) and expanded to their unknowns: the same elimination order
   //    as on the scalar graph, at a fraction of the analysis time. AMD, and
   //    METIS's nested dissection as well where it can pay (`use_metis`),
-  //    whichever needs fewer flops, postordered.
+  //    whichever needs fewer flops, postordered. On large graphs the two
+  //    run at the same time (`start_metis_early`).
   std::vector<int> block_start, block_row;
   m.block_pattern(upper, block_size, &block_start, &block_row);
   const int blocks = n / block_size;
   cholmod_sparse A = sparse_view<int>(blocks, block_start.data(), block_row.data(), nullptr, 1);
-  std::vector<int> block_permutation = m.block_ordering(&A, CHOLMOD_AMD);
-  m.ordering = "amd";
-  const double amd_flops = m.common.method[0].fl;
   const double expanded = static_cast<double>(block_size) * block_size * block_size;
-  if (m.always_try_metis || use_metis(expanded * amd_flops, block_start[blocks])) {
-    std::vector<int> metis_permutation = m.block_ordering(&A, CHOLMOD_METIS);
-    if (m.common.method[0].fl < amd_flops) {
-      block_permutation.swap(metis_permutation);
-      m.ordering = "metis";
-    }
+  double amd_flops = 0, metis_flops = 0;
+  std::vector<int> block_permutation, metis_permutation;
+  const auto order_by_metis = [&] { metis_permutation = block_ordering(&A, CHOLMOD_METIS, &metis_flops); };
+  if (!m.always_try_metis && start_metis_early(blocks)) {
+    tbb::parallel_invoke([&] { block_permutation = block_ordering(&A, CHOLMOD_AMD, &amd_flops); }, order_by_metis);
+  } else {
+    block_permutation = block_ordering(&A, CHOLMOD_AMD, &amd_flops);
+    if (m.always_try_metis || use_metis(expanded * amd_flops, block_start[blocks])) order_by_metis();
+  }
+  m.ordering = "amd";
+  if ((m.always_try_metis || use_metis(expanded * amd_flops, block_start[blocks])) && !metis_permutation.empty() &&
+      metis_flops < amd_flops) {
+    block_permutation.swap(metis_permutation);
+    m.ordering = "metis";
   }
   std::vector<int> permutation(n);
   for (int a = 0; a < blocks; ++a)

@@ -181,6 +181,30 @@ TEST_CASE("METIS's nested dissection, where it is tried, solves the same system 
   }
 }
 
+TEST_CASE("on a large graph AMD's and METIS's orderings run at once and the same one is kept") {
+  // 363 x 363 vertices: above the size where METIS starts beside AMD
+  // (sparse_cholesky.cpp, start_metis_early); always_try_metis computes
+  // the two one after the other and keeps the one with fewer flops, as the
+  // size rule does here.
+  const akvf::ElementMatrix2D K = shifted_killing(363);
+  REQUIRE(K.upper().rows() / 2 >= (1 << 17));
+  akvf::SparseCholesky at_once, in_turn;
+  in_turn.always_try_metis(true);
+  at_once.analyze(K.upper(), 2);
+  in_turn.analyze(K.upper(), 2);
+  CHECK(at_once.ordering() == "metis");
+  CHECK(in_turn.ordering() == at_once.ordering());
+  CHECK(at_once.factor_nonzeros() == in_turn.factor_nonzeros());
+  CHECK(at_once.factor_flops() == in_turn.factor_flops());
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), -1.0, 2.0).array().sin();
+  Eigen::VectorXd x_at_once, x_in_turn;
+  at_once.factorize(K.upper());
+  at_once.solve(b, &x_at_once);
+  in_turn.factorize(K.upper());
+  in_turn.solve(b, &x_in_turn);
+  CHECK((x_at_once - x_in_turn).cwiseAbs().maxCoeff() == 0.0);  // the same permutation: the same bits
+}
+
 TEST_CASE("a kept analysis is shared, and solving before a factorization is refused") {
   const akvf::ElementMatrix2D K = shifted_killing(20);
   akvf::SparseCholesky analyzed, copy;

@@ -113,8 +113,8 @@ void BM_NumericFactorization(benchmark::State& state, const std::string& mesh, i
   state.counters["flops"] = benchmark::Counter(cholesky.factor_flops(), benchmark::Counter::kIsIterationInvariantRate);
 }
 
-void BM_SymbolicAnalysis(benchmark::State& state, const std::string& mesh) {
-  REQUIRE_FIXTURE(state, mesh);
+void BM_SymbolicAnalysis(benchmark::State& state, const std::string& mesh, int subdivide) {
+  REQUIRE_FIXTURE(state, mesh, subdivide);
   const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
   for (auto _ : state) {
     akvf::SparseCholesky cholesky;
@@ -286,7 +286,7 @@ void register_all() {
     benchmark::RegisterBenchmark(("NumericFactorization/cholmod/" + mesh).c_str(), BM_NumericFactorization, mesh, 0,
                                  true)
         ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("SymbolicAnalysis/" + mesh).c_str(), BM_SymbolicAnalysis, mesh)
+    benchmark::RegisterBenchmark(("SymbolicAnalysis/" + mesh).c_str(), BM_SymbolicAnalysis, mesh, 0)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh, 0)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("SymmetricProduct/" + mesh).c_str(), BM_SymmetricProduct, mesh)
@@ -308,6 +308,8 @@ void register_all() {
                                    BM_NumericFactorization, "horse_b.obj", subdivide, by_cholmod)
           ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Solve/" + name).c_str(), BM_Solve, "horse_b.obj", subdivide)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("SymbolicAnalysis/" + name).c_str(), BM_SymbolicAnalysis, "horse_b.obj", subdivide)
         ->Unit(benchmark::kMillisecond);
   }
   if (!akvf::AlgebraicMultigrid::available()) return;
