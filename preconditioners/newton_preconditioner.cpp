@@ -1,5 +1,6 @@
 #include "preconditioners/newton_preconditioner.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "framework/process/error.h"
@@ -95,37 +96,49 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
     // The last exact Hessian served (no fallback since): try it at once next time.
     if (last_filter_ == EigenvalueFilter::kExact) exact_backoff_ = 1;
     // Only a factorization tells whether the exact Hessian is positive definite.
-    last_filter_ = exact_wait_ > 0 || !this->solves_by_factorization() ? EigenvalueFilter::kClamp
-                                                                        : EigenvalueFilter::kExact;
+    last_filter_ =
+        exact_wait_ > 0 || !this->solves_by_factorization() ? EigenvalueFilter::kClamp : EigenvalueFilter::kExact;
     if (exact_wait_ > 0) --exact_wait_;
   } else {
     last_filter_ = filter_;
   }
   mirrored_assemblies_ += last_filter_ == EigenvalueFilter::kAbsolute;
-  if (last_filter_ == EigenvalueFilter::kExact) {
-    ++exact_assemblies_;
-    assembled_x_ = state.x;
-  }
-  assemble_filtered(state.x, last_filter_, matrix);
-  if (last_filter_ == EigenvalueFilter::kExact && projection_ == MotionProjection::kRigidMotions && D == 2)
-    add_rotation_shifts(state, matrix);
+  // kExact's fallback: the last one served (no failure since), so the next
+  // keeps less of the negative part.
+  if (partial_ && !partial_failed_) negative_share_ = std::max(kLeastNegativeShare, negative_share_ / 4);
+  partial_ = filter_ == EigenvalueFilter::kExact && last_filter_ == EigenvalueFilter::kClamp &&
+             this->solves_by_factorization();
+  partial_failed_ = false;
+  if (last_filter_ == EigenvalueFilter::kExact) ++exact_assemblies_;
+  assembled_x_ = state.x;
+  assembled_gradient_ = state.gradient;
+  assemble_at_assembled_x(matrix);
 }
 
 template <int D>
-void NewtonPreconditioner<D>::add_rotation_shifts(const OptimizationState& state, Matrix* matrix) const {
+void NewtonPreconditioner<D>::assemble_at_assembled_x(Matrix* matrix) const {
+  const bool exact_based = last_filter_ == EigenvalueFilter::kExact || (partial_ && negative_share_ < 1);
+  assemble_filtered(assembled_x_, last_filter_, matrix, partial_ ? negative_share_ : 1.0);
+  if (exact_based && projection_ == MotionProjection::kRigidMotions && D == 2)
+    add_rotation_shifts(assembled_x_, assembled_gradient_, matrix);
+}
+
+template <int D>
+void NewtonPreconditioner<D>::add_rotation_shifts(const Eigen::VectorXd& x, const Eigen::VectorXd& gradient,
+                                                  Matrix* matrix) const {
   // Twice the negative curvature along each chart's rotation, on that
   // chart's coordinates (newton_preconditioner.h).
   const auto* charts = this->component_vertices();
   if (!charts) {
-    std::vector<int> all(static_cast<size_t>(state.x.size() / D));
+    std::vector<int> all(static_cast<size_t>(x.size() / D));
     for (size_t v = 0; v < all.size(); ++v) all[v] = static_cast<int>(v);
-    const double curvature = rotation_curvature_2d(state.x, state.gradient, all);
+    const double curvature = rotation_curvature_2d(x, gradient, all);
     if (curvature < 0) matrix->add_to_diagonal(-2 * curvature);
     return;
   }
-  Eigen::VectorXd shift = Eigen::VectorXd::Zero(state.x.size());
+  Eigen::VectorXd shift = Eigen::VectorXd::Zero(x.size());
   for (const std::vector<int>& chart : *charts) {
-    const double curvature = rotation_curvature_2d(state.x, state.gradient, chart);
+    const double curvature = rotation_curvature_2d(x, gradient, chart);
     if (curvature < 0)
       for (int v : chart) shift.template segment<D>(D * v).setConstant(-2 * curvature);
   }
@@ -133,26 +146,42 @@ void NewtonPreconditioner<D>::add_rotation_shifts(const OptimizationState& state
 }
 
 template <int D>
-void NewtonPreconditioner<D>::assemble_filtered(const Eigen::VectorXd& x, EigenvalueFilter filter,
-                                                Matrix* matrix) const {
+void NewtonPreconditioner<D>::assemble_filtered(const Eigen::VectorXd& x, EigenvalueFilter filter, Matrix* matrix,
+                                                double negative_share) const {
   matrix->assemble([&](int e, typename Matrix::Local* local) {
     const auto G = jacobian_map<D>(objective_.rest().Dm_inv[e]);
     const auto J = objective_.jacobian(x, e);
-    const auto H = filter == EigenvalueFilter::kExact      ? objective_.density().hessian(J)
-                   : filter == EigenvalueFilter::kAbsolute ? objective_.density().absolute_hessian(J)
-                                                           : objective_.density().projected_hessian(J);
+    using ElementHessian = decltype(objective_.density().hessian(J));
+    ElementHessian H;
+    if (filter == EigenvalueFilter::kExact)
+      H = objective_.density().hessian(J);
+    else if (filter == EigenvalueFilter::kAbsolute)
+      H = objective_.density().absolute_hessian(J);
+    else if (negative_share < 1)  // H + share N, N = clamped - exact: negative eigenvalues times 1 - share
+      H = (1 - negative_share) * objective_.density().hessian(J) +
+          negative_share * objective_.density().projected_hessian(J);
+    else
+      H = objective_.density().projected_hessian(J);
     *local = objective_.weights()[e] * G.transpose() * H * G;
   });
 }
 
 template <int D>
 bool NewtonPreconditioner<D>::reassemble_semidefinite(Matrix* matrix) {
-  if (last_filter_ != EigenvalueFilter::kExact) return false;
-  ++exact_fallbacks_;
-  exact_wait_ = exact_backoff_;
-  exact_backoff_ *= 2;
-  last_filter_ = EigenvalueFilter::kClamp;
-  assemble_filtered(assembled_x_, EigenvalueFilter::kClamp, matrix);
+  if (last_filter_ == EigenvalueFilter::kExact) {
+    ++exact_fallbacks_;
+    exact_wait_ = exact_backoff_;
+    exact_backoff_ *= 2;
+    last_filter_ = EigenvalueFilter::kClamp;
+    partial_ = true;
+  } else if (partial_ && negative_share_ < 1) {
+    ++partial_fallbacks_;
+    negative_share_ = std::min(1.0, 4 * negative_share_);
+  } else {
+    return false;  // the clamped Hessian: the shift is raised instead
+  }
+  partial_failed_ = true;
+  assemble_at_assembled_x(matrix);
   return true;
 }
 
@@ -162,6 +191,8 @@ std::string NewtonPreconditioner<D>::report() const {
   if (exact_assemblies_ > 0)
     line += "; exact Hessian at " + std::to_string(exact_assemblies_ - exact_fallbacks_) + " of " +
             std::to_string(exact_assemblies_) + " tries";
+  if (partial_fallbacks_ > 0)
+    line += ", its partly filtered fallback not positive definite at " + std::to_string(partial_fallbacks_);
   return line;
 }
 

@@ -30,12 +30,26 @@
 // moves along the rotations, which are projected out; the shift vanishes
 // with the gradient). When the
 // factorization finds the exact Hessian not positive definite, or its
-// direction is not a descent direction, the element Hessians are clamped
-// at that x instead, and the
-// exact one is tried again after 1, 2, 4, ... iterations (consecutive
-// failures double the wait, a success resets it), as factorization reuse
-// backs off. Only a factorization tells whether the Hessian is positive
-// definite: with multigrid or Jacobi CG (FactorOptions) kExact clamps.
+// direction is not a descent direction, the fallback at that x is the
+// exact Hessian plus a share mu of its negative part's magnitude,
+//   P = H + mu N = (1 - mu) H + mu H_clamped,  N = H_clamped - H >= 0,
+// each element's negative eigenvalues scaled by 1 - mu (mu = 1 is the
+// clamp); the exact one is tried again after 1, 2, 4, ... iterations
+// (consecutive failures double the wait, a success resets it), as
+// factorization reuse backs off, and the iterations between use the
+// fallback. mu starts at 1/16, is quadrupled while P does not factor
+// (each try costs a factorization; at most three: 1/16, 1/4, 1) and
+// quartered, down to 1/16, after a fallback that factored at its first
+// try: a Levenberg-Marquardt damping whose regularizer is the part of the
+// Hessian the clamp removes, not the identity. Why not the clamp at once:
+// where the exact Hessian is only slightly indefinite (a plateau or saddle
+// of a heavily compressed map), the clamp throws away every element's
+// negative curvature and P is much stiffer than H along the directions
+// that matter; on cow_closed cut to a disk the default's Newton phase
+// crept with unit steps for 384 iterations that way, and takes 33 with
+// the partial fallback (docs/performance.md). Only a factorization tells
+// whether the Hessian is positive definite: with multigrid or Jacobi CG
+// (FactorOptions) kExact clamps.
 #include <string>
 
 #include "framework/optimization/mesh_objective.h"
@@ -72,9 +86,16 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   // replaced by the clamped one (not positive definite).
   int exact_assemblies() const { return exact_assemblies_; }
   int exact_fallbacks() const { return exact_fallbacks_; }
+  // kExact's fallback (module comment): whether the last assembly was it,
+  // the share of the negative part it kept, and how often it was itself
+  // not positive definite (the share then quadruples, up to the clamp).
+  bool last_partly_filtered() const { return partial_; }
+  double negative_share() const { return negative_share_; }
+  int partial_fallbacks() const { return partial_fallbacks_; }
   std::string report() const override;
 
   static constexpr double adaptive_tolerance = 0.01;
+  static constexpr double kLeastNegativeShare = 1.0 / 16;
 
  private:
   using Matrix = typename FactoredPreconditioner<D>::Matrix;
@@ -83,10 +104,15 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   bool reassemble_semidefinite(Matrix* matrix) override;
   // kExact in 2D: adds to P's diagonal, on each chart's coordinates, twice
   // the Hessian's negative curvature along that chart's rotation (module comment).
-  void add_rotation_shifts(const OptimizationState& state, Matrix* matrix) const;
+  void add_rotation_shifts(const Eigen::VectorXd& x, const Eigen::VectorXd& gradient, Matrix* matrix) const;
   // Fills matrix with sum_e w_e G_e^T H_e G_e, H_e the element Hessian at x
   // filtered by `filter` (kClamp, kAbsolute or kExact).
-  void assemble_filtered(const Eigen::VectorXd& x, EigenvalueFilter filter, Matrix* matrix) const;
+  // negative_share < 1 with kClamp: kExact's fallback, the exact Hessian
+  // plus that share of its negative part's magnitude (module comment).
+  void assemble_filtered(const Eigen::VectorXd& x, EigenvalueFilter filter, Matrix* matrix,
+                         double negative_share = 1) const;
+  // P at assembled_x_ by last_filter_ (and the fallback's share).
+  void assemble_at_assembled_x(Matrix* matrix) const;
   // kAdaptive's choice at `state` (and remembers the state for the next).
   EigenvalueFilter adaptive_choice(const OptimizationState& state);
   // s^T H(x) s with the unfiltered Hessian, the constraints' term included.
@@ -98,8 +124,13 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   EigenvalueFilter last_filter_ = EigenvalueFilter::kClamp;
   int mirrored_assemblies_ = 0;
   int exact_assemblies_ = 0, exact_fallbacks_ = 0;
-  int exact_wait_ = 0, exact_backoff_ = 1;  // kExact: iterations to clamp before trying again
-  Eigen::VectorXd assembled_x_;             // kExact: where the last exact Hessian was assembled
+  int exact_wait_ = 0, exact_backoff_ = 1;            // kExact: iterations on the fallback before trying again
+  Eigen::VectorXd assembled_x_, assembled_gradient_;  // where P was last assembled
+  // kExact's fallback (module comment): whether the last assembly was it,
+  // whether it failed since, and the share of the negative part it keeps.
+  bool partial_ = false, partial_failed_ = false;
+  double negative_share_ = kLeastNegativeShare;
+  int partial_fallbacks_ = 0;
   Eigen::VectorXd previous_x_, previous_gradient_;
   double previous_energy_ = 0;
 };

@@ -178,8 +178,7 @@ TEST_CASE("on a long thin strip the AKVF direction is K^+ grad E in the softest 
   // A gradient with equal weight in every non-rigid eigen-direction.
   const Eigen::Index n = K.rows();
   const Eigen::VectorXd g = eig.eigenvectors().rightCols(n - 3) * Eigen::VectorXd::Ones(n - 3);
-  const Eigen::VectorXd reference =
-      eig.eigenvectors().rightCols(n - 3) * eig.eigenvalues().tail(n - 3).cwiseInverse();
+  const Eigen::VectorXd reference = eig.eigenvectors().rightCols(n - 3) * eig.eigenvalues().tail(n - 3).cwiseInverse();
   akvf::AkvfPreconditioner2D preconditioner(objective);
   Eigen::VectorXd d;
   preconditioner.update({x, g, 0.0, 1});
@@ -517,6 +516,52 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
     direction_and_matrix(objective, x, &exact, &P_exact);
     CHECK(exact.report().find("exact Hessian at 0 of 2 tries") != std::string::npos);
     CHECK(akvf::parse_eigenvalue_filter("exact") == akvf::EigenvalueFilter::kExact);
+  }
+  SUBCASE("a milder distortion: the fallback keeps part of the negative curvature, the least share that factors") {
+    akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
+    const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
+    const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.1, 8) * 0.9);
+    akvf::NewtonPreconditioner2D exact(objective, {}, akvf::default_newton_projection(2),
+                                       akvf::EigenvalueFilter::kExact);
+    akvf::NewtonPreconditioner2D clamped(objective);
+    Eigen::MatrixXd P, P_clamped;
+    direction_and_matrix(objective, x, &exact, &P);
+    direction_and_matrix(objective, x, &clamped, &P_clamped);
+    // The exact Hessian failed, so did 1/16 of its negative part; 1/4 factored.
+    CHECK(
+        exact.report().find("exact Hessian at 0 of 1 tries, its partly filtered fallback not positive definite at 1") !=
+        std::string::npos);
+    REQUIRE(exact.last_partly_filtered());
+    const double share = exact.negative_share();
+    CHECK(share == 0.25);
+    // P = (1 - share) H + share P_clamped, up to multiples of I (the
+    // rotation's and the Tikhonov shifts): the rest is parallel to v.
+    std::mt19937 rng(5);
+    std::normal_distribution<double> normal;
+    Eigen::VectorXd g_plus, g_minus;
+    for (int trial = 0; trial < 3; ++trial) {
+      Eigen::VectorXd v(x.size());
+      for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = normal(rng);
+      const double h = 1e-6;
+      objective.value_and_gradient(x + h * v, &g_plus);
+      objective.value_and_gradient(x - h * v, &g_minus);
+      const Eigen::VectorXd Hv = (g_plus - g_minus) / (2 * h);
+      const Eigen::VectorXd rest = P * v - (1 - share) * Hv - share * (P_clamped * v);
+      const double along = rest.dot(v) / v.squaredNorm();
+      CHECK(along >= 0);
+      CHECK((rest - along * v).norm() <= 1e-5 * Hv.norm());
+      CHECK((P * v - P_clamped * v).norm() > 1e-3 * Hv.norm());  // not the clamp
+    }
+    // While the exact Hessian waits, the share that served is kept; after a
+    // fallback that served at once, the next one keeps a quarter of it.
+    direction_and_matrix(objective, x, &exact, &P);
+    CHECK(exact.last_partly_filtered());
+    CHECK(exact.negative_share() == 0.25);
+    direction_and_matrix(objective, x, &exact, &P);
+    CHECK(
+        exact.report().find("exact Hessian at 0 of 2 tries, its partly filtered fallback not positive definite at 2") !=
+        std::string::npos);
+    CHECK(exact.negative_share() == 0.25);
   }
   SUBCASE("solved by CG, which cannot tell whether the Hessian is definite, the element Hessians are clamped") {
     akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
