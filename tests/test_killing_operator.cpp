@@ -440,6 +440,22 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
     CHECK(g.dot(d) > 0);
     return d;
   };
+  // H v by central differences of the gradient.
+  const auto hessian_times = [](const akvf::DistortionObjective2D& objective, const Eigen::VectorXd& x,
+                                const Eigen::VectorXd& v) {
+    Eigen::VectorXd g_plus, g_minus;
+    const double h = 1e-6;
+    objective.value_and_gradient(x + h * v, &g_plus);
+    objective.value_and_gradient(x - h * v, &g_minus);
+    return Eigen::VectorXd((g_plus - g_minus) / (2 * h));
+  };
+  // A bumpy disk's jittered map, shrunk: the smaller `scale`, the more
+  // compressed elements and the more indefinite the Hessian.
+  akvf::TriMesh bumpy = akvf::test::bumpy_disk(7, 7);
+  const akvf::DistortionObjective2D bumpy_objective = unit_area_objective(&bumpy);
+  const auto shrunk_map = [&](double jitter, double scale) {
+    return Eigen::VectorXd(akvf::stack_uv(akvf::test::jittered_uv(bumpy, jitter, 8) * scale));
+  };
   SUBCASE("compressed planar charts: elements indefinite, their sum definite but along each chart's rotation") {
     for (const int charts : {1, 2}) {
       CAPTURE(charts);
@@ -485,32 +501,32 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
       P_exact.diagonal().array() -= kShift * P_exact.diagonal().mean() / (1 + kShift);
       std::mt19937 rng(3);
       std::normal_distribution<double> normal;
-      Eigen::VectorXd v(x.size()), g_plus, g_minus;
+      Eigen::VectorXd v(x.size());
       for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = normal(rng);
-      const double h = 1e-6;
-      objective.value_and_gradient(x + h * v, &g_plus);
-      objective.value_and_gradient(x - h * v, &g_minus);
-      const Eigen::VectorXd Hv = (g_plus - g_minus) / (2 * h);
+      const Eigen::VectorXd Hv = hessian_times(objective, x, v);
       CHECK((P_exact * v - Hv).norm() <= 1e-6 * Hv.norm());
       // The clamp stiffens the compressed elements' twist: another matrix.
       CHECK((P_clamped * v - Hv).norm() > 1e-3 * Hv.norm());
     }
   }
-  SUBCASE("a distorted map: the Hessian is indefinite, so the clamped one is factored, and tried again later") {
-    akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
-    const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
-    const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.8);
+  SUBCASE(
+      "a distorted map: the Hessian is indefinite, so is H + 1/4 of its negative part: the clamped one is factored") {
+    const akvf::DistortionObjective2D& objective = bumpy_objective;
+    const Eigen::VectorXd x = shrunk_map(0.2, 0.8);
     akvf::NewtonPreconditioner2D exact(objective, {}, akvf::default_newton_projection(2),
                                        akvf::EigenvalueFilter::kExact);
     akvf::NewtonPreconditioner2D clamped(objective);
     Eigen::MatrixXd P_exact, P_clamped;
     const Eigen::VectorXd d_exact = direction_and_matrix(objective, x, &exact, &P_exact);
     const Eigen::VectorXd d_clamped = direction_and_matrix(objective, x, &clamped, &P_clamped);
-    CHECK(exact.report().find("exact Hessian at 0 of 1 tries") != std::string::npos);
+    CHECK(
+        exact.report().find("exact Hessian at 0 of 1 tries, its partly filtered fallback not positive definite at 2") !=
+        std::string::npos);
     CHECK(exact.last_filter() == akvf::EigenvalueFilter::kClamp);
+    CHECK(exact.negative_share() == 1);
     CHECK(P_exact == P_clamped);
     CHECK(d_exact == d_clamped);
-    // One iteration clamped, then the exact Hessian again.
+    // One iteration on the fallback, then the exact Hessian again.
     direction_and_matrix(objective, x, &exact, &P_exact);
     CHECK(exact.last_filter() == akvf::EigenvalueFilter::kClamp);
     direction_and_matrix(objective, x, &exact, &P_exact);
@@ -518,9 +534,8 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
     CHECK(akvf::parse_eigenvalue_filter("exact") == akvf::EigenvalueFilter::kExact);
   }
   SUBCASE("a milder distortion: the fallback keeps part of the negative curvature, the least share that factors") {
-    akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
-    const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
-    const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.1, 8) * 0.9);
+    const akvf::DistortionObjective2D& objective = bumpy_objective;
+    const Eigen::VectorXd x = shrunk_map(0.1, 0.9);
     akvf::NewtonPreconditioner2D exact(objective, {}, akvf::default_newton_projection(2),
                                        akvf::EigenvalueFilter::kExact);
     akvf::NewtonPreconditioner2D clamped(objective);
@@ -538,14 +553,10 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
     // rotation's and the Tikhonov shifts): the rest is parallel to v.
     std::mt19937 rng(5);
     std::normal_distribution<double> normal;
-    Eigen::VectorXd g_plus, g_minus;
     for (int trial = 0; trial < 3; ++trial) {
       Eigen::VectorXd v(x.size());
       for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = normal(rng);
-      const double h = 1e-6;
-      objective.value_and_gradient(x + h * v, &g_plus);
-      objective.value_and_gradient(x - h * v, &g_minus);
-      const Eigen::VectorXd Hv = (g_plus - g_minus) / (2 * h);
+      const Eigen::VectorXd Hv = hessian_times(objective, x, v);
       const Eigen::VectorXd rest = P * v - (1 - share) * Hv - share * (P_clamped * v);
       const double along = rest.dot(v) / v.squaredNorm();
       CHECK(along >= 0);
@@ -564,9 +575,8 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
     CHECK(exact.negative_share() == 0.25);
   }
   SUBCASE("solved by CG, which cannot tell whether the Hessian is definite, the element Hessians are clamped") {
-    akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
-    const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
-    const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.8);
+    const akvf::DistortionObjective2D& objective = bumpy_objective;
+    const Eigen::VectorXd x = shrunk_map(0.2, 0.8);
     akvf::FactorOptions by_cg;
     by_cg.cg_tolerance = 0.01;
     akvf::NewtonPreconditioner2D exact(objective, by_cg, akvf::default_newton_projection(2),
