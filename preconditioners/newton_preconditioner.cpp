@@ -110,17 +110,19 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
              this->solves_by_factorization();
   partial_failed_ = false;
   if (last_filter_ == EigenvalueFilter::kExact) ++exact_assemblies_;
-  assembled_x_ = state.x;
-  assembled_gradient_ = state.gradient;
-  assemble_at_assembled_x(matrix);
+  if (filter_ == EigenvalueFilter::kExact) {  // kept for a fallback at the same x
+    assembled_x_ = state.x;
+    assembled_gradient_ = state.gradient;
+  }
+  assemble_current(state.x, state.gradient, matrix);
 }
 
 template <int D>
-void NewtonPreconditioner<D>::assemble_at_assembled_x(Matrix* matrix) const {
+void NewtonPreconditioner<D>::assemble_current(const Eigen::VectorXd& x, const Eigen::VectorXd& gradient,
+                                               Matrix* matrix) const {
   const bool exact_based = last_filter_ == EigenvalueFilter::kExact || (partial_ && negative_share_ < 1);
-  assemble_filtered(assembled_x_, last_filter_, matrix, partial_ ? negative_share_ : 1.0);
-  if (exact_based && projection_ == MotionProjection::kRigidMotions && D == 2)
-    add_rotation_shifts(assembled_x_, assembled_gradient_, matrix);
+  assemble_filtered(x, last_filter_, matrix, partial_ ? negative_share_ : 1.0);
+  if (exact_based && projection_ == MotionProjection::kRigidMotions && D == 2) add_rotation_shifts(x, gradient, matrix);
 }
 
 template <int D>
@@ -181,7 +183,7 @@ bool NewtonPreconditioner<D>::reassemble_semidefinite(Matrix* matrix) {
     return false;  // the clamped Hessian: the shift is raised instead
   }
   partial_failed_ = true;
-  assemble_at_assembled_x(matrix);
+  assemble_current(assembled_x_, assembled_gradient_, matrix);
   return true;
 }
 

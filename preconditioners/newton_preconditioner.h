@@ -111,8 +111,9 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   // plus that share of its negative part's magnitude (module comment).
   void assemble_filtered(const Eigen::VectorXd& x, EigenvalueFilter filter, Matrix* matrix,
                          double negative_share = 1) const;
-  // P at assembled_x_ by last_filter_ (and the fallback's share).
-  void assemble_at_assembled_x(Matrix* matrix) const;
+  // P at x by last_filter_ (and the fallback's share), with the rotation
+  // shifts where it is based on the exact Hessian.
+  void assemble_current(const Eigen::VectorXd& x, const Eigen::VectorXd& gradient, Matrix* matrix) const;
   // kAdaptive's choice at `state` (and remembers the state for the next).
   EigenvalueFilter adaptive_choice(const OptimizationState& state);
   // s^T H(x) s with the unfiltered Hessian, the constraints' term included.
@@ -125,7 +126,7 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   int mirrored_assemblies_ = 0;
   int exact_assemblies_ = 0, exact_fallbacks_ = 0;
   int exact_wait_ = 0, exact_backoff_ = 1;            // kExact: iterations on the fallback before trying again
-  Eigen::VectorXd assembled_x_, assembled_gradient_;  // where P was last assembled
+  Eigen::VectorXd assembled_x_, assembled_gradient_;  // kExact: where P was last assembled
   // kExact's fallback (module comment): whether the last assembly was it,
   // whether it failed since, and the share of the negative part it keeps.
   bool partial_ = false, partial_failed_ = false;

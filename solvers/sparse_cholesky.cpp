@@ -312,24 +312,22 @@ bool start_metis_early(int blocks) { return blocks >= (1 << 17); }
 // `method` (CHOLMOD_AMD, CHOLMOD_METIS), postordered; its flop count in
 // *flops. Its own cholmod_common: two may run at the same time.
 std::vector<int> block_ordering(cholmod_sparse* A, int method, double* flops) {
-  cholmod_common common;
-  cholmod_start(&common);
+  struct Workspace {
+    cholmod_common common;
+    Workspace() { cholmod_start(&common); }
+    ~Workspace() { cholmod_finish(&common); }
+  } w;
+  cholmod_common& common = w.common;
   common.print = 0;
   common.nmethods = 1;
   common.method[0].ordering = method;
   common.postorder = 1;
   cholmod_factor* ordering = cholmod_analyze(A, &common);
-  std::vector<int> permutation;
-  if (ordering) {
-    const int* perm = static_cast<const int*>(ordering->Perm);
-    permutation.assign(perm, perm + A->nrow);
-    *flops = common.method[0].fl;
-    cholmod_free_factor(&ordering, &common);
-  }
-  const int status = common.status;
-  cholmod_finish(&common);
-  if (status < CHOLMOD_OK)
-    throw NumericalError("CHOLMOD symbolic analysis failed (status " + std::to_string(status) + ")");
+  check_status(common, "symbolic analysis");
+  const int* perm = static_cast<const int*>(ordering->Perm);
+  std::vector<int> permutation(perm, perm + A->nrow);
+  *flops = common.method[0].fl;
+  cholmod_free_factor(&ordering, &common);
   return permutation;
 }
 
@@ -477,16 +475,17 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
   const double expanded = static_cast<double>(block_size) * block_size * block_size;
   double amd_flops = 0, metis_flops = 0;
   std::vector<int> block_permutation, metis_permutation;
+  const auto order_by_amd = [&] { block_permutation = block_ordering(&A, CHOLMOD_AMD, &amd_flops); };
   const auto order_by_metis = [&] { metis_permutation = block_ordering(&A, CHOLMOD_METIS, &metis_flops); };
+  const auto metis_wanted = [&] { return m.always_try_metis || use_metis(expanded * amd_flops, block_start[blocks]); };
   if (!m.always_try_metis && start_metis_early(blocks)) {
-    tbb::parallel_invoke([&] { block_permutation = block_ordering(&A, CHOLMOD_AMD, &amd_flops); }, order_by_metis);
+    tbb::parallel_invoke(order_by_amd, order_by_metis);
   } else {
-    block_permutation = block_ordering(&A, CHOLMOD_AMD, &amd_flops);
-    if (m.always_try_metis || use_metis(expanded * amd_flops, block_start[blocks])) order_by_metis();
+    order_by_amd();
+    if (metis_wanted()) order_by_metis();
   }
   m.ordering = "amd";
-  if ((m.always_try_metis || use_metis(expanded * amd_flops, block_start[blocks])) && !metis_permutation.empty() &&
-      metis_flops < amd_flops) {
+  if (metis_wanted() && metis_flops < amd_flops) {  // metis_wanted(): METIS ran
     block_permutation.swap(metis_permutation);
     m.ordering = "metis";
   }
