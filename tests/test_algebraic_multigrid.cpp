@@ -38,7 +38,7 @@ Eigen::VectorXd random_vector(Eigen::Index n, unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("without hypre the multigrid path says what to install; with it a V-cycle is a symmetric contraction") {
+TEST_CASE("without hypre the multigrid path says what to install, with it a V-cycle is a symmetric contraction") {
   const akvf::ParamSetup setup = akvf::prepare_parameterization(akvf::test::bumpy_disk(30, 25), "bumpy", {});
   const Eigen::SparseMatrix<double> upper = killing_operator(setup);
   akvf::AlgebraicMultigrid multigrid;
@@ -173,7 +173,7 @@ TEST_CASE("3D deformation with --linear-solver amg: the Cholesky runs' energy, n
   }
 }
 
-TEST_CASE("--linear-solver: names checked; auto decides from the factor's size when multigrid is built in") {
+TEST_CASE("--linear-solver: names checked, auto decides from the factor's size when multigrid is built in") {
   CHECK(akvf::test::error_message([] { akvf::require_linear_solver("umfpack"); }) ==
         "unknown linear solver 'umfpack' (valid: auto, cholmod, amg)");
   CHECK(akvf::linear_solver_for("cholmod") == akvf::LinearSolver::kCholmod);

@@ -169,7 +169,7 @@ TEST_CASE("callbacks see every row and can stop the run") {
   CHECK(r.iterations() == 2);
 }
 
-TEST_CASE("akvf::deform lifts a tet grid without inverting a tet; the result is at the input's scale") {
+TEST_CASE("akvf::deform lifts a tet grid without inverting a tet, the result is at the input's scale") {
   akvf::TetMesh mesh = akvf::test::tet_grid(3);
   mesh.V *= 250;  // units of the user's choice
   akvf::PositionConstraints constraints;

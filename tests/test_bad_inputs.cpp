@@ -100,7 +100,7 @@ TEST_CASE("OBJ: the statements OBJ allows are skipped quietly, unknown ones with
   CHECK(warnings[1] == "line 1 of m.obj: unknown OBJ statement 'foo' ignored (2 lines)");
 }
 
-TEST_CASE("OBJ: a vertex takes x y z, a weight w, or a colour; other extra tokens are refused") {
+TEST_CASE("OBJ: a vertex takes x y z, a weight w, or a colour, other extra tokens are refused") {
   CHECK(obj("v 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 1 2 3\n").num_vertices() == 3);
   CHECK(obj("v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nf 1 2 3\n").num_vertices() == 3);
   CHECK(error_message([] { obj("v 0 0 0 junk\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"); }) ==
@@ -130,7 +130,7 @@ TEST_CASE("validation names vertices and faces as the file numbers them") {
         "first");
 }
 
-TEST_CASE("a tet mesh with an unreferenced vertex deforms with every factored method; the output keeps numbering") {
+TEST_CASE("a tet mesh with an unreferenced vertex deforms with every factored method, the output keeps numbering") {
   akvf::TetMesh mesh = akvf::test::tet_grid(2);
   const int extra = mesh.num_vertices();
   mesh.V.conservativeResize(extra + 1, 3);

@@ -105,7 +105,7 @@ TEST_CASE("help and list describe the commands") {
   CHECK(list.out.find("backtracking") != std::string::npos);
 }
 
-TEST_CASE("deform: bad constraints files exit 1 naming the line; outputs are not written") {
+TEST_CASE("deform: bad constraints files exit 1 naming the line, outputs are not written") {
   const fs::path dir = scratch_dir("deform");
   write_text(dir / "tet.mesh",
              "MeshVersionFormatted 1\nDimension 3\nVertices\n5\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n1 1 1 0\n"
@@ -141,7 +141,7 @@ TEST_CASE("deform: bad constraints files exit 1 naming the line; outputs are not
   fs::remove_all(dir);
 }
 
-TEST_CASE("plot draws trace files as SVG lines; a malformed trace names its line") {
+TEST_CASE("plot draws trace files as SVG lines, a malformed trace names its line") {
   const fs::path dir = scratch_dir("plot");
   write_text(dir / "a.csv", "iter,seconds,energy,status\n0,0,10,\n1,0.5,5,\n2,1.0,4.5,converged\n");
   write_text(dir / "bad.csv", "iter,seconds,energy,status\n0,0,10,\n1,x,5,\n");
@@ -314,7 +314,7 @@ TEST_CASE("--init file starts from the mesh file's texture coordinates, or says 
   fs::remove_all(dir);
 }
 
-TEST_CASE("--out writes UV.mtl and a checkerboard beside the OBJ, vt in the unit square; --texture none does not") {
+TEST_CASE("--out writes UV.mtl and a checkerboard beside the OBJ, vt in the unit square, --texture none does not") {
   const fs::path dir = scratch_dir("texture");
   akvf::test::write_obj(dir / "bar.obj", akvf::bent_bar(21, 5));
   REQUIRE(akvf_run({"param", (dir / "bar.obj").string(), "--out", (dir / "uv.obj").string(), "-q"}).code ==

@@ -148,7 +148,7 @@ TEST_CASE("3D: permuted, translated, rotated and scaled inputs give the same ene
   }
 }
 
-TEST_CASE("uniform scales from 1e-100 to 1e+100 give the energies and iterations of scale 1; beyond, a clear error") {
+TEST_CASE("uniform scales from 1e-100 to 1e+100 give the energies and iterations of scale 1, beyond, a clear error") {
   const akvf::TriMesh mesh = akvf::test::bumpy_disk(8, 8);
   akvf::ParamConfig config;
   const akvf::ParamSetup reference_setup = akvf::prepare_parameterization(mesh, "m", config);

@@ -270,7 +270,7 @@ TEST_CASE("with factorization reuse the direction solves K(x) d = g to the toler
   CHECK((akvf::rigid_motion_basis_2d(x2).transpose() * d).norm() <= 1e-10 * d.norm());
 }
 
-TEST_CASE("Newton, Laplacian and SLIM matrices are symmetric PSD with the expected null spaces; directions descend") {
+TEST_CASE("Newton, Laplacian and SLIM matrices are symmetric PSD with the expected null spaces, directions descend") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
   const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
   const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.8);

@@ -173,7 +173,7 @@ TEST_CASE("a failed line search ends the run with a status and the last valid it
   CHECK_FALSE(akvf::is_normal_termination(result.status));
 }
 
-TEST_CASE("a non-finite direction or gradient ends the run with a status naming it; the last finite iterate is kept") {
+TEST_CASE("a non-finite direction or gradient ends the run with a status naming it, the last finite iterate is kept") {
   ParamConfig config;
   const auto setup = akvf::prepare_parameterization(akvf::test::bumpy_disk(6, 6), "test", config);
   const akvf::BacktrackingLineSearch search;
@@ -246,7 +246,7 @@ TEST_CASE("the distortion objective names the first bad element of an iterate") 
         "triangle 0 " + vertices(0) + " (numbered from 0): inverted or collapsed (det = 0)");
 }
 
-TEST_CASE("callbacks can stop the run; iteration and time limits are statuses") {
+TEST_CASE("callbacks can stop the run, iteration and time limits are statuses") {
   ParamConfig config;
   config.optimizer.gradient_tolerance = 0;
   auto stop_at_3 = [](const akvf::IterationSummary& s, const Eigen::VectorXd&) {

@@ -118,7 +118,7 @@ std::string stl_error(const std::string& data) {
 
 }  // namespace
 
-TEST_CASE("PLY: ASCII, binary little and big endian give the same mesh; extra properties and elements are skipped") {
+TEST_CASE("PLY: ASCII, binary little and big endian give the same mesh, extra properties and elements are skipped") {
   const akvf::TriMesh mesh = akvf::test::bumpy_disk(6, 5);
   for (const char* format : {"ascii", "binary_little_endian", "binary_big_endian"}) {
     CAPTURE(format);

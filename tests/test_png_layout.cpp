@@ -70,7 +70,7 @@ TEST_CASE("a PNG layout: the requested size, each triangle in its distortion col
   fs::remove_all(dir);
 }
 
-TEST_CASE("param --png writes the layout at --png-size; bad sizes and extensions are usage errors") {
+TEST_CASE("param --png writes the layout at --png-size, bad sizes and extensions are usage errors") {
   const fs::path dir = akvf::test::scratch_dir("png_cli");
   akvf::test::write_obj(dir / "bar.obj", akvf::bent_bar(21, 5));
   const auto ok = akvf::test::run_cli(

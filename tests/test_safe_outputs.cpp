@@ -45,7 +45,7 @@ int temporaries_in(const fs::path& dir) {
 
 }  // namespace
 
-TEST_CASE("a symbolic link given as output stays a link; the file it names receives the content") {
+TEST_CASE("a symbolic link given as output stays a link, the file it names receives the content") {
   const fs::path dir = scratch("link");
   write_text(dir / "real.txt", "old");
   fs::create_symlink("real.txt", dir / "link.txt");

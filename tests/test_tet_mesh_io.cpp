@@ -68,7 +68,7 @@ TEST_CASE("MEDIT: malformed files name the line and the problem") {
         "line 3 of m.mesh: file ends after 1 of 1000000000000 vertices");
 }
 
-TEST_CASE("OBJ-like tets: `f a b c d`, 1-based; other corner counts are rejected") {
+TEST_CASE("OBJ-like tets: `f a b c d`, 1-based, other corner counts are rejected") {
   const TetMesh mesh = tet_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3 4\n");
   CHECK(mesh.num_tets() == 1);
   CHECK(mesh.T.row(0) == Eigen::RowVector4i(0, 1, 2, 3));

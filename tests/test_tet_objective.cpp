@@ -58,7 +58,7 @@ TEST_CASE("tet objective: the flip-free bound is tight and no step below it inve
   }
 }
 
-TEST_CASE("3D AKVF preconditioner: K + c I gives a descent direction; with rigid projection, none of it rigid") {
+TEST_CASE("3D AKVF preconditioner: K + c I gives a descent direction, with rigid projection, none of it rigid") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
   const akvf::DistortionObjective3D objective = cube_objective(mesh);
   const Eigen::VectorXd x = akvf::test::distorted_tet_positions(mesh, 5);
@@ -80,7 +80,7 @@ TEST_CASE("3D AKVF preconditioner: K + c I gives a descent direction; with rigid
   }
 }
 
-TEST_CASE("soft positional constraints add w |x_i - p_i|^2 with its gradient; bad constraints are rejected") {
+TEST_CASE("soft positional constraints add w |x_i - p_i|^2 with its gradient, bad constraints are rejected") {
   const akvf::TetMesh mesh = akvf::test::tet_grid(1);
   const akvf::DistortionObjective3D base = cube_objective(mesh);
   akvf::PositionConstraints constraints;
