@@ -176,11 +176,13 @@ TEST_CASE("a tiny manifest runs end to end, shards merged give the same results 
   }
   CHECK(compared == 6);
   // The merged table is the one run's, clock column aside (table.md has none).
-  CHECK(without_seconds(read_text(dir / "merged" / "table.md")) == without_seconds(read_text(dir / "all" / "table.md")));
+  CHECK(without_seconds(read_text(dir / "merged" / "table.md")) ==
+        without_seconds(read_text(dir / "all" / "table.md")));
   CHECK(table_without_clock(dir / "merged" / "table.csv") == table_without_clock(dir / "all" / "table.csv"));
   CHECK(table_without_clock(dir / "all" / "table.csv").find(",seconds,") == std::string::npos);
   if (akvf::AlgebraicMultigrid::available()) {  // the small mesh's cases were solved by multigrid
-    const auto merged = nlohmann::json::parse(read_text(dir / "merged" / "cases" / "bumpy-small--akvf" / "summary.json"));
+    const auto merged =
+        nlohmann::json::parse(read_text(dir / "merged" / "cases" / "bumpy-small--akvf" / "summary.json"));
     CHECK(merged["settings"]["linear_solver"] == "amg");
     CHECK(merged["linear_algebra"]["multigrid_setups"].get<int>() > 0);
     CHECK(merged["linear_algebra"]["factorizations"] == 0);
