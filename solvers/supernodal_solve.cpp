@@ -3,33 +3,15 @@
 #include <tbb/parallel_invoke.h>
 
 #include <cholmod.h>  // SuiteSparse_long
+#include <Eigen/Core>
 #include <algorithm>
-#include <cstddef>
 #include <numeric>
 
 namespace akvf {
 
 namespace {
 
-// y[i] -= a x[i], i < n.
-inline void subtract_scaled(double a, const double* __restrict x, double* __restrict y, int n) {
-  for (int i = 0; i < n; ++i) y[i] -= a * x[i];
-}
-
-// sum_i x[i] y[i], i < n, in four interleaved partial sums (so the compiler
-// can keep them in vector registers; the order is fixed, so is the result).
-inline double dot(const double* __restrict x, const double* __restrict y, int n) {
-  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-  int i = 0;
-  for (; i + 4 <= n; i += 4) {
-    s0 += x[i] * y[i];
-    s1 += x[i + 1] * y[i + 1];
-    s2 += x[i + 2] * y[i + 2];
-    s3 += x[i + 3] * y[i + 3];
-  }
-  for (; i < n; ++i) s0 += x[i] * y[i];
-  return (s0 + s2) + (s1 + s3);
-}
+using Block = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
 
 }  // namespace
 
@@ -60,59 +42,45 @@ SupernodalSolve<Index>::SupernodalSolve(const SupernodalStructure<Index>& struct
   for (auto& scratch : scratch_) scratch.resize(widest);
 }
 
-// L y = z over one group's supernodes (group 2 = the top). A supernode's
-// block is column-major with its diagonal triangle on top, so column j below
-// the diagonal, L(j+1.., j), is one contiguous run covering both the
-// triangle's rows and the rows below it: one pass subtract_scaled per
-// column over w = [y; updates of the rows below] (module comment).
+// L y = z over one group's supernodes (group 2 = the top).
 template <class Index>
 void SupernodalSolve<Index>::forward(const double* values, int group, double* z) {
   const std::vector<int>& order = group == kTop ? top_ : group_[group];
-  double* w = scratch_[group == kGroup1 ? 1 : 0].data();
+  std::vector<double>& scratch = scratch_[group == kGroup1 ? 1 : 0];
   for (int node : order) {
     const BlockShape b = block_shape(s_, node);
-    const double* L = values + s_.value_start[node];
-    double* y = z + b.first_column;
-    std::copy(y, y + b.columns, w);
-    std::fill(w + b.columns, w + b.rows, 0.0);
-    for (int j = 0; j < b.columns; ++j) {
-      const double* column = L + static_cast<std::size_t>(j) * b.rows;
-      w[j] /= column[j];
-      subtract_scaled(w[j], column + j + 1, w + j + 1, b.rows - j - 1);
-    }
-    std::copy(w, w + b.columns, y);
+    const Block L(values + s_.value_start[node], b.rows, b.columns, Eigen::OuterStride<>(b.rows));
+    Eigen::Map<Eigen::VectorXd> y(z + b.first_column, b.columns);
+    L.topRows(b.columns).triangularView<Eigen::Lower>().solveInPlace(y);
+    const int below_count = b.rows - b.columns;
     const Index* below = s_.pattern + s_.pattern_start[node] + b.columns;
-    const double* update = w + b.columns;  // minus L(below, :) y
-    for (int i = 0; i < b.rows - b.columns; ++i) {
+    Eigen::Map<Eigen::VectorXd> update(scratch.data(), below_count);
+    update.noalias() = L.bottomRows(below_count) * y;
+    for (int i = 0; i < below_count; ++i) {
       const Index row = below[i];
       if (group == kGroup1 && column_owner_[row] == kTop)
-        top_updates_[row] -= update[i];  // group 0 may be writing z[row] now
+        top_updates_[row] += update[i];  // group 0 may be writing z[row] now
       else
-        z[row] += update[i];
+        z[row] -= update[i];
     }
   }
 }
 
-// L^T x = y over supernodes `order`, last first: with w = [x; the known x
-// of the rows below], x_j = (w_j - L(j+1.., j) . w(j+1..)) / L(j, j) for j
-// from the last column down, one dot per contiguous column run.
+// L^T x = y over supernodes `order`, last first.
 template <class Index>
 void SupernodalSolve<Index>::backward(const double* values, const std::vector<int>& order, double* z,
                                       std::vector<double>* scratch) const {
-  double* w = scratch->data();
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     const int node = *it;
     const BlockShape b = block_shape(s_, node);
-    const double* L = values + s_.value_start[node];
-    double* x = z + b.first_column;
+    const Block L(values + s_.value_start[node], b.rows, b.columns, Eigen::OuterStride<>(b.rows));
+    Eigen::Map<Eigen::VectorXd> x(z + b.first_column, b.columns);
+    const int below_count = b.rows - b.columns;
     const Index* below = s_.pattern + s_.pattern_start[node] + b.columns;
-    std::copy(x, x + b.columns, w);
-    for (int i = 0; i < b.rows - b.columns; ++i) w[b.columns + i] = z[below[i]];
-    for (int j = b.columns - 1; j >= 0; --j) {
-      const double* column = L + static_cast<std::size_t>(j) * b.rows;
-      w[j] = (w[j] - dot(column + j + 1, w + j + 1, b.rows - j - 1)) / column[j];
-    }
-    std::copy(w, w + b.columns, x);
+    Eigen::Map<Eigen::VectorXd> known(scratch->data(), below_count);
+    for (int i = 0; i < below_count; ++i) known[i] = z[below[i]];
+    x.noalias() -= L.bottomRows(below_count).transpose() * known;
+    L.topRows(b.columns).triangularView<Eigen::Lower>().transpose().solveInPlace(x);
   }
 }
 

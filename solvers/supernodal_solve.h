@@ -4,14 +4,8 @@
 //
 // CHOLMOD's own solve calls BLAS dtrsv/dgemv per supernode, and OpenBLAS
 // takes a lock and a buffer at each call: with thousands of small supernodes
-// that overhead is most of the solve. Here each supernode's block is swept
-// column by column: column j below its diagonal entry is one contiguous run
-// through the diagonal triangle and the rows below, so the forward solve is
-// one scaled subtraction and the backward solve one dot product per column,
-// over a workspace holding the block's unknowns and its rows below (about
-// 1.2x faster than Eigen's triangular-solve and gemv kernels per supernode on
-// horse_b, `Solve/` in akvf_benchmarks; at 2.5 M faces both run at the memory
-// bandwidth, two passes over L). The supernodal elimination tree is split once, at analysis,
+// that overhead is most of the solve. Here the same arithmetic runs through
+// Eigen maps. The supernodal elimination tree is split once, at analysis,
 // into two groups of disjoint subtrees of similar work and the rest above
 // them (the top): the groups are solved concurrently (forward: groups, then
 // top; backward: top, then groups). Group 1 sends its updates of top rows
