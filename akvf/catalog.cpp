@@ -32,12 +32,14 @@ const FactorOptions& newton_phase_options(const PreconditionerSettings3D& settin
 SwitchRule akvf_switch_rule(const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
   SwitchRule rule = settings.akvf_newton_switch;
   rule.isometric_step = isometric_newton_step(objective.density(), objective.rest().total_area);
+  rule.energy_lower_bound = objective.lower_bound();
   return rule;
 }
 SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
   SwitchRule rule = settings.akvf_newton_switch;
   rule.isometric_step =
       settings.akvf.secant_scaling ? 1.0 : isometric_newton_step(objective.density(), objective.rest().total_volume);
+  rule.energy_lower_bound = objective.lower_bound();
   return rule;
 }
 

@@ -34,16 +34,21 @@ bool SwitchingPreconditioner::leave_first(const OptimizationState& state) {
   // More than Newton's step lowers the logarithm of an exponential energy (module comment).
   const bool beyond_newton = state.energy * std::exp(1.0) < previous_energy_;
   limited_steps_ = curvature_limited && !newton_like && !beyond_newton ? limited_steps_ + 1 : 0;
-  return limited_steps_ >= patience_;
+  // The bound set the step and E - E_lb kept more than stall_ratio of itself
+  // (NaN, so false, where E_lb is unknown).
+  const double gap_ratio = (state.energy - rule_.energy_lower_bound) / (previous_energy_ - rule_.energy_lower_bound);
+  const bool stalled = step > 0 && !curvature_limited && gap_ratio > rule_.stall_ratio;
+  stalled_steps_ = stalled ? stalled_steps_ + 1 : 0;
+  return limited_steps_ >= patience_ || stalled_steps_ >= patience_;
 }
 
 bool SwitchingPreconditioner::leave_second(const OptimizationState& state) {
   // The first trial min(1, 0.8 alpha_max) was below Newton's unit step and
-  // accepted at once: the flip-free bound set it; and the bound is closer
-  // than the step before's: the steps close in on a collapse (module comment).
+  // accepted at once: the flip-free bound set it; and the bound is less than
+  // half the step before's: the steps close in on a collapse (module comment).
   const double step = state.previous_step;
   const bool bound_limited = step > 0 && step < 1 && !state.previous_backtracked;
-  const bool closing_in = state.previous_max_step < previous_max_step_;
+  const bool closing_in = state.previous_max_step < rule_.closing_ratio * previous_max_step_;
   limited_steps_ = bound_limited && closing_in ? limited_steps_ + 1 : 0;
   return limited_steps_ >= rule_.patience;
 }
@@ -60,6 +65,7 @@ void SwitchingPreconditioner::switch_to(const Factory& make, int iteration) {
   current_ = std::move(next);
   switches_.push_back(iteration);
   limited_steps_ = 0;
+  stalled_steps_ = 0;
 }
 
 void SwitchingPreconditioner::update(const OptimizationState& state) {

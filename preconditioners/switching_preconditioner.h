@@ -42,6 +42,20 @@
 // than the per-element projected Hessian (docs/design.md, "The default
 // method").
 //
+// AKVF stalling under the bound: far from the minimum the flip-free bound
+// sets AKVF's steps, and on most meshes each of them removes a large share
+// of the energy's excess over its infimum E_lb (the density's lower bound:
+// energies are means over the rest measure). But K knows nothing of the energy: where a few
+// elements carry most of the gradient (slivers of the initial map), K^-1 g
+// drives them toward a collapse, alpha_max falls to 1e-5 of the direction,
+// and each step removes a few percent of E - E_lb (tricera_b subdivided
+// once: 80 such steps). Newton's direction weighs those elements by their
+// curvature. Its bound-set steps left at most 0.84 of E - E_lb at every
+// iteration of its far phase on the meshes measured (docs/design.md), so an
+// AKVF step that leaves more than `stall_ratio` (0.85) of it, although the
+// bound and not the curvature set it, is behind Newton's pace; `patience`
+// such steps in a row switch too.
+//
 // Back to the first: Newton's quadratic model has its minimizer at the unit
 // step. When the line search's first trial, 0.8 alpha_max, is below 1 and
 // accepted at once, the flip-free bound and not the curvature set Newton's
@@ -50,7 +64,12 @@
 // bound and still gain most: MIPS on camelhead), but when alpha_max is also
 // smaller than the step before's, the steps close in on a collapse: each
 // goes 0.8 of the way to it, and if the direction keeps pointing there the
-// bound shrinks geometrically and the run stalls. An energy without a
+// bound shrinks geometrically and the run stalls. Going 0.8 of the way
+// leaves 0.2 of it, so along a direction of about the same length the next
+// bound is about a fifth of the last; a bound that keeps more than
+// `closing_ratio` (half) of the last is not closing in (Newton's far phase
+// on tricera_b subdivided: 0.713, 0.710, 0.693, which sent the run back to
+// AKVF's stalled steps when any decrease counted). An energy without a
 // barrier does that: with ARAP on cow_b the default stalled at 0.1496 after
 // 37 iterations, alpha_max falling fivefold per step, where AKVF reaches
 // 0.01655 in 100 (docs/pairs.md). After `patience` such Newton steps in a
@@ -78,6 +97,14 @@ struct SwitchRule {
   // Newton-like, every curvature-set step counts.
   double isometric_step = std::numeric_limits<double>::infinity();
   double backtracking_factor = 0.5;  // rho of the line search
+  // The energy's infimum E_lb (Objective::lower_bound: the density's, as
+  // energies are means over the rest measure); -infinity if unknown: then
+  // no step counts as stalled.
+  double energy_lower_bound = -std::numeric_limits<double>::infinity();
+  // A step the bound set stalls when E - E_lb keeps more than this share.
+  double stall_ratio = 0.85;
+  // A bound below this share of the step before's is closing in.
+  double closing_ratio = 0.5;
 };
 
 class SwitchingPreconditioner final : public Preconditioner {
@@ -118,6 +145,7 @@ class SwitchingPreconditioner final : public Preconditioner {
   std::vector<int> switches_;
   int patience_;           // of the next switch to the second
   int limited_steps_ = 0;  // consecutive steps that count toward leaving the phase in use
+  int stalled_steps_ = 0;  // consecutive bound-set AKVF steps behind Newton's pace
   double previous_energy_ = std::numeric_limits<double>::quiet_NaN();  // at the last update
   double previous_max_step_ = 0;                                       // alpha_max of the step before the last
 };

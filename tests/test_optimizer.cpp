@@ -516,3 +516,49 @@ TEST_CASE("akvf-newton returns to AKVF after two Newton steps closing in on a co
   CHECK(p.report().find("from iteration 12 identity") != std::string::npos);
   CHECK(p.report().find("from iteration 16 identity") != std::string::npos);
 }
+
+// switching_preconditioner.h: bound-set AKVF steps that each leave more than
+// stall_ratio of the gap E - E_lb switch to Newton after `patience` of them;
+// a bound that keeps more than half the last is not closing in.
+TEST_CASE(
+    "akvf-newton switches after two bound-set steps that stall, and does not return on a bound that barely shrinks") {
+  akvf::SwitchRule rule;
+  rule.isometric_step = 0.25;
+  rule.energy_lower_bound = 4;  // symmetric Dirichlet
+  struct Step {
+    double energy, step, max_step;
+    bool backtracked;
+  };
+  auto switches_after = [&](double start, const std::vector<Step>& steps) {
+    akvf::SwitchingPreconditioner p(
+        "test", std::make_unique<akvf::IdentityPreconditioner>(),
+        [](akvf::Preconditioner&) { return std::make_unique<akvf::IdentityPreconditioner>(); }, rule,
+        [](akvf::Preconditioner&) { return std::make_unique<akvf::IdentityPreconditioner>(); });
+    const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
+    p.update({x, g, start, 1});
+    int k = 2;
+    for (const Step& s : steps) p.update({x, g, s.energy, k++, s.step, s.max_step, s.backtracked});
+    return p.switches();
+  };
+  auto bound = [](double energy, double max_step) { return Step{energy, 0.8 * max_step, max_step, false}; };
+  // tricera_b subdivided: 144 -> 72 (half the gap), then 72 -> 65 -> 62.5
+  // (ratios 0.90, 0.96): the second stalled step switches.
+  CHECK(switches_after(144, {bound(72, 4e-5), bound(65, 3e-5), bound(62.5, 1e-5)}) == std::vector<int>{4});
+  // horse_b: 1150 -> 385 -> 147 -> 110 -> 100 -> 19: never two in a row.
+  CHECK(switches_after(1150, {bound(385, 2e-5), bound(147, 2e-4), bound(110, 2e-4), bound(100, 7e-5), bound(19, 5e-3)})
+            .empty());
+  // A curvature-set step is the other rule's, however little it gains.
+  CHECK(switches_after(144, {{140, 1e-3, 1, true}, bound(139, 1e-5), {138, 1e-3, 1, true}}).empty());
+  // Without a known infimum no step stalls.
+  rule.energy_lower_bound = -std::numeric_limits<double>::infinity();
+  CHECK(switches_after(144, {bound(143, 1e-5), bound(142, 1e-5), bound(141, 1e-5)}).empty());
+  // In Newton's phase, bounds that shrink by less than half (0.713, 0.710,
+  // 0.693: Newton's far phase on tricera_b subdivided) do not send it back;
+  // one that falls fivefold twice does.
+  rule.energy_lower_bound = 4;
+  const Step stalled_1 = bound(130, 4e-5), stalled_2 = bound(120, 3e-5);  // ratios 0.90, 0.92
+  CHECK(switches_after(144, {stalled_1, stalled_2, bound(50, 0.713), bound(40, 0.710), bound(31, 0.693)}) ==
+        std::vector<int>{3});
+  CHECK(switches_after(144, {stalled_1, stalled_2, bound(50, 0.7), bound(45, 0.14), bound(44, 0.028)}) ==
+        std::vector<int>{3, 6});
+}
