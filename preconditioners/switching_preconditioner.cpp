@@ -34,10 +34,13 @@ bool SwitchingPreconditioner::leave_first(const OptimizationState& state) {
   // More than Newton's step lowers the logarithm of an exponential energy (module comment).
   const bool beyond_newton = state.energy * std::exp(1.0) < previous_energy_;
   limited_steps_ = curvature_limited && !newton_like && !beyond_newton ? limited_steps_ + 1 : 0;
-  // The bound set the step and E - E_lb kept more than stall_ratio of itself
-  // (NaN, so false, where E_lb is unknown).
+  // The bound set the step, far short of the model's (a step t along d
+  // gains 2 t c - (t c)^2 of the decrease of the quadratic model c K, less
+  // than half of it below t c = 1 - 1/sqrt(2)), and E - E_lb kept more than
+  // stall_ratio of itself (NaN, so false, where E_lb is unknown).
+  const bool barrier_limited = step < (1 - std::sqrt(0.5)) * rule_.isometric_step;
   const double gap_ratio = (state.energy - rule_.energy_lower_bound) / (previous_energy_ - rule_.energy_lower_bound);
-  const bool stalled = step > 0 && !curvature_limited && gap_ratio > rule_.stall_ratio;
+  const bool stalled = step > 0 && !curvature_limited && barrier_limited && gap_ratio > rule_.stall_ratio;
   stalled_steps_ = stalled ? stalled_steps_ + 1 : 0;
   return limited_steps_ >= patience_ || stalled_steps_ >= patience_;
 }
