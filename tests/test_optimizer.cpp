@@ -547,6 +547,10 @@ TEST_CASE(
   // horse_b: 1150 -> 385 -> 147 -> 110 -> 100 -> 19: never two in a row.
   CHECK(switches_after(1150, {bound(385, 2e-5), bound(147, 2e-4), bound(110, 2e-4), bound(100, 7e-5), bound(19, 5e-3)})
             .empty());
+  // horse_b near its minimum (E* = 4.089): bound-set steps that keep 0.98
+  // and 0.99 of E - 4, but the bound (0.26, 0.24) let them reach more than
+  // half the model's decrease (t / (1/c) above 1 - 1/sqrt(2)): not stalled.
+  CHECK(switches_after(4.1289, {bound(4.0928, 0.26), bound(4.0906, 0.24), bound(4.0899, 0.18)}).empty());
   // A curvature-set step is the other rule's, however little it gains.
   CHECK(switches_after(144, {{140, 1e-3, 1, true}, bound(139, 1e-5), {138, 1e-3, 1, true}}).empty());
   // Without a known infimum no step stalls.
