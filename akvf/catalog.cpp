@@ -125,7 +125,8 @@ PreconditionerRegistry3D& mutable_preconditioners_3d() {
           });
     r.add("akvf-newton",
           "AKVF while the flip-free bound sets the step, then Newton (the exact Hessian while it is positive "
-          "definite, else projected) once the curvature does, and AKVF again if Newton's steps close in on a "
+          "definite, else projected) once the curvature does or AKVF's bound-held steps stall, and AKVF again if "
+          "Newton's steps close in on a "
           "collapse (preconditioners/switching_preconditioner.h)",
           [](const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
             return akvf_then_newton<3, AkvfPreconditioner3D>(objective, settings);
@@ -165,7 +166,8 @@ PreconditionerRegistry2D& mutable_preconditioners_2d() {
           });
     r.add("akvf-newton",
           "AKVF while the flip-free bound sets the step, then Newton (the exact Hessian while it is positive "
-          "definite, else projected) once the curvature does, and AKVF again if Newton's steps close in on a "
+          "definite, else projected) once the curvature does or AKVF's bound-held steps stall, and AKVF again if "
+          "Newton's steps close in on a "
           "collapse (preconditioners/switching_preconditioner.h)",
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return akvf_then_newton<2, AkvfPreconditioner2D>(objective, settings);
