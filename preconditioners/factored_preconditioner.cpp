@@ -27,26 +27,32 @@ double physical_memory_bytes() {
 template <int D>
 FactoredPreconditioner<D>::FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options)
     : FactoredPreconditioner(objective.elements(), objective.num_vertices(),
-                             with_added_diagonal(std::move(options), objective.added_hessian_diagonal()), nullptr) {}
+                             with_added_diagonal(std::move(options), objective.added_hessian_diagonal()),
+                             Matrix(objective.elements(), objective.num_vertices())) {}
 
 template <int D>
 FactoredPreconditioner<D>::FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options,
                                                   const Matrix& same_elements)
     : FactoredPreconditioner(objective.elements(), objective.num_vertices(),
                              with_added_diagonal(std::move(options), objective.added_hessian_diagonal()),
-                             &same_elements) {}
+                             Matrix::with_pattern_of(same_elements)) {}
+
+template <int D>
+FactoredPreconditioner<D>::FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options,
+                                                  Matrix&& matrix)
+    : FactoredPreconditioner(objective.elements(), objective.num_vertices(),
+                             with_added_diagonal(std::move(options), objective.added_hessian_diagonal()),
+                             std::move(matrix)) {}
 
 template <int D>
 FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices,
                                                   FactorOptions options)
-    : FactoredPreconditioner(elements, num_vertices, std::move(options), nullptr) {}
+    : FactoredPreconditioner(elements, num_vertices, std::move(options), Matrix(elements, num_vertices)) {}
 
 template <int D>
 FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices,
-                                                  FactorOptions options, const Matrix* same_elements)
-    : options_(options),
-      matrix_(same_elements ? Matrix::with_pattern_of(*same_elements) : Matrix(elements, num_vertices)),
-      relative_shift_(options_.tikhonov) {
+                                                  FactorOptions options, Matrix matrix)
+    : options_(options), matrix_(std::move(matrix)), relative_shift_(options_.tikhonov) {
   if (!(options_.tikhonov > 0)) throw OptionsError("Tikhonov shift must be > 0");
   if (!(options_.max_tikhonov >= options_.tikhonov))
     throw OptionsError("the largest Tikhonov shift must be >= the Tikhonov shift");
@@ -59,8 +65,7 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
   if (options_.reuse_max_cg < 1) throw OptionsError("factorization reuse needs at least one CG iteration");
   if (!(options_.auto_factor_bytes >= 0)) throw OptionsError("the automatic solver choice's factor limit must be >= 0");
   // Nothing to choose without multigrid, or with the Jacobi CG solve.
-  if (options_.linear_solver == LinearSolver::kAuto &&
-      (!AlgebraicMultigrid::available() || options_.cg_tolerance > 0))
+  if (options_.linear_solver == LinearSolver::kAuto && (!AlgebraicMultigrid::available() || options_.cg_tolerance > 0))
     options_.linear_solver = LinearSolver::kCholmod;
   if (options_.linear_solver == LinearSolver::kAmg || options_.linear_solver == LinearSolver::kAuto) {
     AlgebraicMultigrid::require_available();
@@ -99,14 +104,13 @@ std::string FactoredPreconditioner<D>::report() const {
                      std::to_string(statistics_.cg_iterations) + " CG iterations)";
   // Only the large meshes' ordering is worth a word (sparse_cholesky.cpp, use_metis).
   if (cholesky_.ordering() == "metis") line += ", METIS ordering";
-  if (shift_increases_ > 0)
-    line += "; " + std::to_string(shift_increases_) + " retried with a 100x larger shift";
+  if (shift_increases_ > 0) line += "; " + std::to_string(shift_increases_) + " retried with a 100x larger shift";
   return line;
 }
 
 template <int D>
 void FactoredPreconditioner<D>::take_over_factorization(FactoredPreconditioner& previous) {
-  if (factored_ || previous.matrix_.upper().nonZeros() != matrix_.upper().nonZeros())
+  if (factored_ || !matrix_.same_pattern(previous.matrix_))
     throw NumericalError("take_over_factorization: before the first update, from a matrix of the same pattern");
   if (options_.linear_solver == LinearSolver::kAuto && previous.options_.linear_solver != LinearSolver::kAuto)
     options_.linear_solver = previous.options_.linear_solver;

@@ -92,11 +92,11 @@ struct FactorOptions {
   // measured 22-25 V-cycles on K of horse_b and horse_b x16, and a CG
   // iteration is a cycle plus a product with P.
   int amg_setup_cycles = 20;
-  double tikhonov = 1e-12;     // shift relative to mean(diag P) (module comment)
-  double max_tikhonov = 1e-4;  // largest relative shift the retries reach
+  double tikhonov = 1e-12;           // shift relative to mean(diag P) (module comment)
+  double max_tikhonov = 1e-4;        // largest relative shift the retries reach
   double iterative_tikhonov = 1e-8;  // the relative shift of the multigrid and Jacobi CG solves
-  double absolute_shift = 0;   // added to the relative shift: c of K + c I (§6.2 uses 1e-4)
-  double reuse_tolerance = 0;  // tau; 0 factors at every update
+  double absolute_shift = 0;         // added to the relative shift: c of K + c I (§6.2 uses 1e-4)
+  double reuse_tolerance = 0;        // tau; 0 factors at every update
   int reuse_max_cg = 8;
   // > 0: never factor; solve (P + shift) d = g by Jacobi-preconditioned
   // conjugate gradients to this relative residual (§6.2 uses 1 %), at most
@@ -136,6 +136,11 @@ class FactoredPreconditioner : public Preconditioner {
   // sparsity pattern (built with its matrix as `same_elements`). akvf-newton
   // hands AKVF's over at the switch, where AKVF is released.
   void take_over_factorization(FactoredPreconditioner& previous);
+  // For a preconditioner about to be released: its matrix's storage, for a
+  // successor on the same elements (ElementMatrix::taking_storage_of; this
+  // one keeps no values and must not be updated again). Call before the
+  // successor's take_over_factorization.
+  Matrix hand_over_matrix() { return Matrix::taking_storage_of(&matrix_); }
   PreconditionerStatistics statistics() const final { return statistics_; }
 
  protected:
@@ -148,6 +153,8 @@ class FactoredPreconditioner : public Preconditioner {
   // The same, with P on the sparsity pattern of `same_elements`, a matrix
   // already built on the objective's elements (shared, not rebuilt).
   FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options, const Matrix& same_elements);
+  // The same with `matrix`, on the objective's elements (hand_over_matrix).
+  FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options, Matrix&& matrix);
 
   // True if P's systems are solved by a CHOLMOD factorization (not by
   // multigrid or Jacobi CG): the factorization tells whether P is positive
@@ -175,8 +182,7 @@ class FactoredPreconditioner : public Preconditioner {
   virtual bool reassemble_semidefinite(Matrix*) { return false; }
 
  private:
-  FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices, FactorOptions options,
-                         const Matrix* same_elements);
+  FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices, FactorOptions options, Matrix matrix);
   void analyze();
   // Adds the Tikhonov shift and the extra diagonal to the assembled P.
   void add_shift();
@@ -212,11 +218,11 @@ class FactoredPreconditioner : public Preconditioner {
   std::shared_ptr<const std::vector<std::vector<int>>> component_vertices_;
   ComponentMotions null_basis_;           // at the current x
   ComponentMotions factored_null_basis_;  // at the last factorization
-  bool factored_ = false;  // a factor exists (from any earlier update)
+  bool factored_ = false;                 // a factor exists (from any earlier update)
   bool factor_is_current_ = false;
   int skip_reuse_ = 0;
   int failure_backoff_ = 1;
-  double relative_shift_;   // eps / mean(diag P): tikhonov, raised by retries
+  double relative_shift_;    // eps / mean(diag P): tikhonov, raised by retries
   int shift_increases_ = 0;  // factorizations retried with a larger shift
   FactorStatistics statistics_;
 };

@@ -60,6 +60,15 @@ NewtonPreconditioner<D>::NewtonPreconditioner(const MeshObjective<D>& objective,
       filter_(filter) {}
 
 template <int D>
+NewtonPreconditioner<D>::NewtonPreconditioner(const MeshObjective<D>& objective, ElementMatrix<D, D + 1>&& matrix,
+                                              FactorOptions options, MotionProjection projection,
+                                              EigenvalueFilter filter)
+    : FactoredPreconditioner<D>(objective, std::move(options), std::move(matrix)),
+      objective_(objective),
+      projection_(projection),
+      filter_(filter) {}
+
+template <int D>
 double NewtonPreconditioner<D>::exact_curvature(const Eigen::VectorXd& x, const Eigen::VectorXd& s) const {
   double curvature = 0;
   for (int e = 0; e < objective_.weights().size(); ++e) {

@@ -77,6 +77,9 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   // over AKVF's at the switch).
   NewtonPreconditioner(const MeshObjective<D>& objective, const ElementMatrix<D, D + 1>& same_elements,
                        FactorOptions options, MotionProjection projection, EigenvalueFilter filter);
+  // The same on `matrix`'s storage (FactoredPreconditioner::hand_over_matrix).
+  NewtonPreconditioner(const MeshObjective<D>& objective, ElementMatrix<D, D + 1>&& matrix, FactorOptions options,
+                       MotionProjection projection, EigenvalueFilter filter);
   std::string name() const override { return "newton"; }
   // The filter the last assembly used (kClamp, kAbsolute or kExact), and
   // how many assemblies mirrored.

@@ -69,3 +69,33 @@ TEST_CASE("element matrices: the pattern and the sums are those of one triplet p
     check_against_reference<2, 3>(grid.F, static_cast<int>(grid.V.rows()));
   }
 }
+
+// akvf-newton's switch: Newton's matrix takes AKVF's storage instead of a
+// copy (taking_storage_of), and moving a matrix moves its storage (Eigen
+// 3.4's SparseMatrix would copy it).
+TEST_CASE("element matrices: a matrix on another's storage and a moved matrix keep the pattern and the bits") {
+  const akvf::TriMesh grid = akvf::test::grid_disk(9, 7, 0.2, 3);
+  const int num_vertices = static_cast<int>(grid.V.rows());
+  const auto fill = [](int e, akvf::ElementMatrix2D::Local* M) { local_matrix<2, 3>(e, M); };
+  akvf::ElementMatrix2D donor(grid.F, num_vertices);
+  donor.assemble(fill);
+  const Eigen::SparseMatrix<double> reference = donor.upper();
+  const double* storage = donor.upper().valuePtr();
+
+  akvf::ElementMatrix2D taken = akvf::ElementMatrix2D::taking_storage_of(&donor);
+  CHECK(taken.upper().valuePtr() == storage);  // no new allocation
+  CHECK(donor.upper().nonZeros() == 0);        // the donor keeps no values
+  CHECK(taken.same_pattern(donor));            // but still names the pattern
+  CHECK(taken.upper().nonZeros() == reference.nonZeros());
+  CHECK(taken.upper().norm() == 0);  // values zeroed
+  taken.assemble(fill);
+  CHECK((taken.upper() - reference).norm() == 0);
+
+  akvf::ElementMatrix2D moved(std::move(taken));
+  CHECK(moved.upper().valuePtr() == storage);
+  CHECK((moved.upper() - reference).norm() == 0);
+  const akvf::ElementMatrix2D copy = akvf::ElementMatrix2D::with_pattern_of(moved);
+  CHECK(copy.upper().valuePtr() != storage);
+  CHECK(copy.same_pattern(moved));
+  CHECK(copy.upper().norm() == 0);
+}

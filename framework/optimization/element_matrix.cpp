@@ -140,14 +140,45 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
 }
 
 template <int D, int N>
-ElementMatrix<D, N>::ElementMatrix(std::shared_ptr<const Pattern> pattern, Eigen::SparseMatrix<double> upper)
-    : pattern_(std::move(pattern)), upper_(std::move(upper)) {}
+ElementMatrix<D, N>::ElementMatrix(std::shared_ptr<const Pattern> pattern) : pattern_(std::move(pattern)) {}
+
+template <int D, int N>
+ElementMatrix<D, N>::ElementMatrix(ElementMatrix&& other) noexcept
+    : pattern_(std::move(other.pattern_)),
+      element_buffer_(std::move(other.element_buffer_)),
+      mean_diagonal_(other.mean_diagonal_) {
+  upper_.swap(other.upper_);
+}
+
+template <int D, int N>
+ElementMatrix<D, N>& ElementMatrix<D, N>::operator=(ElementMatrix&& other) noexcept {
+  pattern_ = std::move(other.pattern_);
+  upper_.swap(other.upper_);
+  element_buffer_.swap(other.element_buffer_);
+  mean_diagonal_ = other.mean_diagonal_;
+  return *this;
+}
 
 template <int D, int N>
 ElementMatrix<D, N> ElementMatrix<D, N>::with_pattern_of(const ElementMatrix& other) {
-  Eigen::SparseMatrix<double> upper = other.upper_;
-  std::fill(upper.valuePtr(), upper.valuePtr() + upper.nonZeros(), 0.0);
-  return ElementMatrix(other.pattern_, std::move(upper));
+  ElementMatrix matrix(other.pattern_);
+  matrix.upper_ = other.upper_;
+  std::fill(matrix.upper_.valuePtr(), matrix.upper_.valuePtr() + matrix.upper_.nonZeros(), 0.0);
+  return matrix;
+}
+
+template <int D, int N>
+ElementMatrix<D, N> ElementMatrix<D, N>::taking_storage_of(ElementMatrix* donor) {
+  ElementMatrix matrix(donor->pattern_);
+  matrix.upper_.swap(donor->upper_);
+  std::fill(matrix.upper_.valuePtr(), matrix.upper_.valuePtr() + matrix.upper_.nonZeros(), 0.0);
+  return matrix;
+}
+
+template <int D, int N>
+bool ElementMatrix<D, N>::same_pattern(const ElementMatrix& other) const {
+  return pattern_ == other.pattern_ ||
+         (upper_.rows() == other.upper_.rows() && upper_.nonZeros() == other.upper_.nonZeros());
 }
 
 template <int D, int N>
