@@ -45,16 +45,19 @@
 // AKVF stalling under the bound: far from the minimum the flip-free bound
 // sets AKVF's steps, and on most meshes each of them removes a large share
 // of the energy's excess over its infimum E_lb (the density's lower bound:
-// energies are means over the rest measure). But K knows nothing of the energy: where a few
-// elements carry most of the gradient (slivers of the initial map), K^-1 g
-// drives them toward a collapse, alpha_max falls to 1e-5 of the direction,
-// and each step removes a few percent of E - E_lb (tricera_b subdivided
-// once: 80 such steps). Newton's direction weighs those elements by their
-// curvature. Its bound-set steps left at most 0.84 of E - E_lb at every
-// iteration of its far phase on the meshes measured (docs/design.md), so an
-// AKVF step that leaves more than `stall_ratio` (0.85) of it, although the
-// bound and not the curvature set it, is behind Newton's pace; `patience`
-// such steps in a row switch too.
+// energies are means over the rest measure). But K knows nothing of the
+// energy: where a few elements carry most of the gradient (slivers of the
+// initial map), K^-1 g drives them toward a collapse, alpha_max falls to
+// 1e-5 of the direction, and each step removes a few percent of E - E_lb
+// (tricera_b subdivided once: 80 such steps). Newton's direction weighs
+// those elements by their curvature. Its bound-set steps left at most 0.84
+// of E - E_lb at every iteration of its far phase on the meshes measured
+// (docs/design.md), so an AKVF step that leaves more than `stall_ratio`
+// (0.85) of it, although the bound and not the curvature set it, is behind
+// Newton's pace, if the bound also held it below half of the decrease of
+// AKVF's quadratic model c K (t c < 1 - 1/sqrt(2)): near the minimum E_lb
+// lies below E* and every method's ratio tends to 1. `patience` such steps
+// in a row switch too.
 //
 // Back to the first: Newton's quadratic model has its minimizer at the unit
 // step. When the line search's first trial, 0.8 alpha_max, is below 1 and
