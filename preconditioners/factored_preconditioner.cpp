@@ -33,9 +33,7 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const MeshObjective<D>& object
 template <int D>
 FactoredPreconditioner<D>::FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options,
                                                   const Matrix& same_elements)
-    : FactoredPreconditioner(objective.elements(), objective.num_vertices(),
-                             with_added_diagonal(std::move(options), objective.added_hessian_diagonal()),
-                             Matrix::with_pattern_of(same_elements)) {}
+    : FactoredPreconditioner(objective, std::move(options), Matrix::with_pattern_of(same_elements)) {}
 
 template <int D>
 FactoredPreconditioner<D>::FactoredPreconditioner(const MeshObjective<D>& objective, FactorOptions options,

@@ -54,10 +54,8 @@ template <int D>
 NewtonPreconditioner<D>::NewtonPreconditioner(const MeshObjective<D>& objective,
                                               const ElementMatrix<D, D + 1>& same_elements, FactorOptions options,
                                               MotionProjection projection, EigenvalueFilter filter)
-    : FactoredPreconditioner<D>(objective, std::move(options), same_elements),
-      objective_(objective),
-      projection_(projection),
-      filter_(filter) {}
+    : NewtonPreconditioner(objective, ElementMatrix<D, D + 1>::with_pattern_of(same_elements), std::move(options),
+                           projection, filter) {}
 
 template <int D>
 NewtonPreconditioner<D>::NewtonPreconditioner(const MeshObjective<D>& objective, ElementMatrix<D, D + 1>&& matrix,

@@ -10,8 +10,9 @@
 // and edge) is built once from the elements, through the vertex graph (each
 // vertex's sorted neighbors, found by counting: no triplet per local slot,
 // which took 3.4 GB at 10 M triangles), and may be shared by another
-// matrix on the same elements (with_pattern_of: akvf-newton's Newton phase
-// takes AKVF's at the switch instead of building it again). Each local
+// matrix on the same elements (with_pattern_of; taking_storage_of, with the
+// values' storage too: akvf-newton's Newton phase takes AKVF's at the switch
+// instead of building or copying it). Each local
 // matrix's upper triangle, D N (D N + 1) / 2 numbers, goes to the global upper triangle;
 // assemble() computes the local matrices in parallel and gathers every
 // nonzero from its contributions in a fixed order (increasing element), so
