@@ -177,6 +177,17 @@ void SupernodalFactorization<Index>::factor_supernode(int s, int worker, const L
 }
 
 template <class Index>
+void SupernodalFactorization<Index>::factor_unless_stopped(int s, int worker, const LowerTriangle& A, double* values) {
+  if (stopped_.load(std::memory_order_relaxed)) return;
+  try {
+    factor_supernode(s, worker, A, values);
+  } catch (...) {
+    stopped_.store(true, std::memory_order_relaxed);
+    throw;
+  }
+}
+
+template <class Index>
 void SupernodalFactorization<Index>::factor_top(int s, const LowerTriangle& A, double* values) {
   // Branches of the top are disjoint: they run concurrently (a supernode
   // needs only its descendants, all finished before it starts).
@@ -185,23 +196,24 @@ void SupernodalFactorization<Index>::factor_top(int s, const LowerTriangle& A, d
     factor_top(children.front(), A, values);
   else if (children.size() > 1)
     tbb::parallel_for_each(children.begin(), children.end(), [&](int child) { factor_top(child, A, values); });
-  factor_supernode(s, tbb::this_task_arena::current_thread_index(), A, values);
+  factor_unless_stopped(s, tbb::this_task_arena::current_thread_index(), A, values);
 }
 
 template <class Index>
 void SupernodalFactorization<Index>::factorize(const LowerTriangle& A, double* values) {
   if (A.n != s_.columns()) throw NumericalError("SupernodalFactorization: the matrix does not fit the analysis");
   for (auto& head : head_) head.assign(static_cast<std::size_t>(s_.supernodes), -1);
+  stopped_.store(false);
   // Two workers, so that each has its own lists and workspace (the arena's
   // thread index names the worker).
   tbb::task_arena arena(2);
   arena.execute([&] {
     tbb::parallel_invoke(
         [&] {
-          for (int s : group_[0]) factor_supernode(s, 0, A, values);
+          for (int s : group_[0]) factor_unless_stopped(s, 0, A, values);
         },
         [&] {
-          for (int s : group_[1]) factor_supernode(s, 1, A, values);
+          for (int s : group_[1]) factor_unless_stopped(s, 1, A, values);
         });
     tbb::parallel_for_each(top_roots_.begin(), top_roots_.end(), [&](int root) { factor_top(root, A, values); });
   });

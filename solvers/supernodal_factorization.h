@@ -25,6 +25,7 @@
 // update's rows, or the rows of its triangular solve) changes the shapes of
 // the BLAS calls, and with them OpenBLAS's kernels and the rounding; it was
 // measured and left out (docs/performance.md).
+#include <atomic>
 #include <vector>
 
 #include "solvers/supernodal_tree.h"
@@ -79,6 +80,12 @@ class SupernodalFactorization {
   };
 
   void factor_supernode(int s, int worker, const LowerTriangle& A, double* values);
+  // factor_supernode, unless a worker met a non-positive pivot: then the
+  // other stops at its next supernode, so that a matrix that is not
+  // positive definite (projected Newton's exact Hessian far from the
+  // minimum) costs the work up to its first bad pivot, not a whole
+  // factorization (the group without the pivot used to run to its end).
+  void factor_unless_stopped(int s, int worker, const LowerTriangle& A, double* values);
   // s's branch of the top, then s.
   void factor_top(int s, const LowerTriangle& A, double* values);
   void assemble(int s, const LowerTriangle& A, const std::vector<int>& local_row, double* values) const;
@@ -104,6 +111,7 @@ class SupernodalFactorization {
   std::vector<int> head_[2], next_;
   std::vector<Key> key_;
   Workspace workspace_[2];
+  std::atomic<bool> stopped_{false};  // a worker met a non-positive pivot in this factorization
 };
 
 }  // namespace akvf
