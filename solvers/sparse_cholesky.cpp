@@ -15,7 +15,6 @@
 #include <tbb/parallel_invoke.h>
 
 #include "framework/process/error.h"
-#include "solvers/block_ordering.h"
 #include "solvers/supernodal_factorization.h"
 #include "solvers/supernodal_solve.h"
 
@@ -298,9 +297,7 @@ bool use_metis(double amd_flops, double graph_nonzeros) { return amd_flops > 700
 // is needed (use_metis), on the core that AMD's ordering leaves idle. A
 // needless METIS run delays the analysis by METIS's time minus AMD's (about
 // 4x AMD's on the meshes measured); a needed one saves AMD's (horse_b x64:
-// AMD 1.15 s, METIS 7 s on one core). There METIS's two halves are
-// ordered at once (block_ordering.h, nested_dissection_two_cores: horse_b
-// x64's analysis 6.9 -> 5.6 s). So it pays only where METIS is almost always
+// 1.3 s of 8.5 s, METIS 7 s). So it pays only where METIS is almost always
 // needed: on large meshes. AMD's fill on a mesh-like (planar) graph grows
 // faster than nested dissection's O(n log n) (Lipton, Rose and Tarjan), so
 // its flops per nonzero, which use_metis compares, grow with the mesh; every
@@ -309,7 +306,36 @@ bool use_metis(double amd_flops, double graph_nonzeros) { return amd_flops > 700
 // (horse_b, 2e4 vertices) does not. The first power of two above the
 // paper's meshes by a margin: 2^17 blocks. Either way the ordering kept is
 // the one use_metis chooses: only the timing depends on this guess.
+// (Two METIS orderings must not run at once, e.g. of the two halves left by
+// a top separator: METIS draws from libc's rand(), one state for the
+// process, so concurrent calls interleave their draws and the ordering, and
+// with it the factor's rounding, changes from run to run. Measured on
+// 2026-11-25: horse_b x16's factor had 39.92 M, 39.99 M and 39.93 M entries
+// in three runs.)
 bool start_metis_early(int blocks) { return blocks >= (1 << 17); }
+
+// A fill-reducing ordering of the symmetric pattern A (upper triangle) by
+// `method` (CHOLMOD_AMD, CHOLMOD_METIS), postordered; its flop count in
+// *flops. Its own cholmod_common: two may run at the same time.
+std::vector<int> block_ordering(cholmod_sparse* A, int method, double* flops) {
+  struct Workspace {
+    cholmod_common common;
+    Workspace() { cholmod_start(&common); }
+    ~Workspace() { cholmod_finish(&common); }
+  } w;
+  cholmod_common& common = w.common;
+  common.print = 0;
+  common.nmethods = 1;
+  common.method[0].ordering = method;
+  common.postorder = 1;
+  cholmod_factor* ordering = cholmod_analyze(A, &common);
+  check_status(common, "symbolic analysis");
+  const int* perm = static_cast<const int*>(ordering->Perm);
+  std::vector<int> permutation(perm, perm + A->nrow);
+  *flops = common.method[0].fl;
+  cholmod_free_factor(&ordering, &common);
+  return permutation;
+}
 
 }  // namespace
 
@@ -447,7 +473,7 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
   //    as on the scalar graph, at a fraction of the analysis time. AMD, and
   //    METIS's nested dissection as well where it can pay (`use_metis`),
   //    whichever needs fewer flops, postordered. On large graphs the two
-  //    run at the same time, METIS's on two cores (`start_metis_early`).
+  //    run at the same time (`start_metis_early`).
   std::vector<int> block_start, block_row;
   m.block_pattern(upper, block_size, &block_start, &block_row);
   const int blocks = n / block_size;
@@ -459,7 +485,7 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
   const auto order_by_metis = [&] { metis_permutation = block_ordering(&A, CHOLMOD_METIS, &metis_flops); };
   const auto metis_wanted = [&] { return m.always_try_metis || use_metis(expanded * amd_flops, block_start[blocks]); };
   if (!m.always_try_metis && start_metis_early(blocks)) {
-    metis_permutation = nested_dissection_two_cores(&A, &metis_flops, order_by_amd);
+    tbb::parallel_invoke(order_by_amd, order_by_metis);
   } else {
     order_by_amd();
     if (metis_wanted()) order_by_metis();
