@@ -50,6 +50,12 @@ struct PreconditionerSettings2D {
     for (FactorOptions* options : {&akvf.factor, &newton, &newton_phase, &laplacian, &slim})
       options->linear_solver = solver;
   }
+  // Every factored preconditioner's analysis eliminates the vertices in
+  // `ordering` (the mesh's, computed once; null: each orders its own).
+  void share_vertex_ordering(const std::shared_ptr<const BlockOrdering>& ordering) {
+    for (FactorOptions* options : {&akvf.factor, &newton, &newton_phase, &laplacian, &slim})
+      options->vertex_ordering = ordering;
+  }
 };
 
 using PreconditionerRegistry2D = Registry<Preconditioner, const MeshObjective2D&, const PreconditionerSettings2D&>;

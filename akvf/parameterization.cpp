@@ -6,6 +6,7 @@
 #include "akvf/catalog.h"
 #include "akvf/threads.h"
 #include "framework/mesh/chart_layout.h"
+#include "framework/mesh/vertex_graph.h"
 #include "framework/process/error.h"
 #include "solvers/lbfgs_solver.h"
 #include "solvers/sparse_cholesky.h"
@@ -38,9 +39,24 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
 // takes 10.3 s instead of 19.3 s (docs/performance.md).
 constexpr int kCholmodTutteVertices = 100000;
 
-SpdSolver tutte_solver(const TriMesh& mesh) {
-  if (mesh.num_vertices() < kCholmodTutteVertices) return {};
-  return solve_positive_definite;
+// On those meshes the vertex graph is ordered once, as the optimizer's
+// matrices (2 x 2 blocks per vertex) need it, and the Tutte system (the
+// interior vertices) is ordered by its restriction: one ordering of the mesh
+// instead of one for the Tutte system and another for the optimizer (horse_b
+// x64: METIS takes about 7 s of each). Null below.
+std::shared_ptr<const BlockOrdering> mesh_vertex_ordering(const TriMesh& mesh) {
+  if (mesh.num_vertices() < kCholmodTutteVertices) return nullptr;
+  return std::make_shared<const BlockOrdering>(
+      fill_reducing_ordering(upper_vertex_graph(mesh.F, mesh.num_vertices()), 2));
+}
+
+SpdSolver tutte_solver(const std::shared_ptr<const BlockOrdering>& ordering) {
+  if (!ordering) return {};
+  return [ordering](const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, const std::vector<int>& vertices,
+                    Eigen::MatrixXd* X) {
+    const BlockOrdering restricted{restricted_order(*ordering, vertices), ordering->method};
+    return solve_positive_definite(A, B, X, &restricted);
+  };
 }
 }  // namespace
 
@@ -81,8 +97,9 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
           "Python uv0=)");
     setup.x0 = start_from_map(setup, config.start_uv, name + ": the texture coordinates", true, &setup.warnings);
   } else {
+    setup.vertex_ordering = mesh_vertex_ordering(normalized);
     Eigen::MatrixXd UV = tutte_embedding_charts(normalized, setup.disk.boundary_loops, setup.disk.face_chart,
-                                                config.init, &setup.warnings, tutte_solver(normalized));
+                                                config.init, &setup.warnings, tutte_solver(setup.vertex_ordering));
     if (config.optimize_flaps) setup.flaps_moved = optimize_flaps(normalized, &UV);
     setup.x0 = stack_uv(UV);
   }
@@ -126,6 +143,7 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
   }
   PreconditionerSettings2D settings = config.preconditioner_settings;
   settings.set_linear_solver(linear_solver_for(config.linear_solver));
+  settings.share_vertex_ordering(setup.vertex_ordering);
   settings.akvf_newton_switch.backtracking_factor = config.line_search_settings.rho;
   auto preconditioner = preconditioners_2d().create(config.preconditioner, *setup.objective, settings);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);

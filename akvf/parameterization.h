@@ -54,6 +54,10 @@ struct ParamSetup {
   std::shared_ptr<DistortionObjective2D> objective;  // on the normalized mesh
   Eigen::VectorXd x0;                                // initial map, interleaved, area-1 units
   int flaps_moved = 0;
+  // The fill-reducing ordering of the mesh's vertex graph, when the Tutte
+  // start needed one (large meshes, akvf/parameterization.cpp): the
+  // optimizer's matrices are analyzed with it too. Null otherwise.
+  std::shared_ptr<const BlockOrdering> vertex_ordering;
   // The warm start's run when the energy is infinite at the initial map
   // (empty trace otherwise); x0 is its end point when it succeeded.
   OptimizerResult warm_start;

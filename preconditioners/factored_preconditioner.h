@@ -110,6 +110,10 @@ struct FactorOptions {
   // Set: analyses of sparsity patterns are taken from and added to it, so
   // repeated solves on one mesh analyze once (symbolic_analysis_cache.h).
   std::shared_ptr<SymbolicAnalysisCache> analysis_cache;
+  // Set: the fill-reducing ordering of the mesh's vertices (computed once
+  // for the mesh's matrices, solvers/fill_reducing_ordering.h), which the
+  // analyses use instead of ordering P's pattern themselves.
+  std::shared_ptr<const BlockOrdering> vertex_ordering;
 };
 
 // Default options with an absolute Tikhonov shift c (P + c I).

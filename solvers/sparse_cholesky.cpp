@@ -12,9 +12,9 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include "framework/process/error.h"
+#include "solvers/fill_reducing_ordering.h"
 #include "solvers/supernodal_factorization.h"
 #include "solvers/supernodal_solve.h"
 
@@ -278,65 +278,6 @@ class CholmodFactor final : public PermutedFactor {
   bool own_factored_ = false;
 };
 
-// Whether to compute METIS's nested dissection besides AMD. On large meshes
-// it needs far fewer flops (horse_b subdivided to 2.55 M unknowns: 69
-// GFlop instead of 159, a factor with 195 M entries instead of 259 M), but
-// its analysis costs about 0.7 us per nonzero of the block graph on this
-// machine (horse_b: 79 ms against AMD's 19 ms), more than a factorization of
-// the small meshes, where AMD's ordering is as good or better (horse_b: 110
-// MFlop with AMD, 130 with METIS). So it is tried when one factorization
-// with AMD's ordering, at about 1e10 flop/s, would take longer than the
-// analysis: AMD's flops per block-graph nonzero above 0.7e-6 x 1e10 = 7000.
-// (`amd_flops` are the expanded matrix's: block_size^3 times the graph's.)
-// CHOLMOD's own rule tries METIS only above 500 flops per factor nonzero,
-// a rule for scalar matrices that the block graph, with b^3 / b^2 = b times
-// fewer flops per nonzero than the matrix factored, stays below.
-bool use_metis(double amd_flops, double graph_nonzeros) { return amd_flops > 7000 * graph_nonzeros; }
-
-// Whether to start METIS's ordering before AMD's result decides whether it
-// is needed (use_metis), on the core that AMD's ordering leaves idle. A
-// needless METIS run delays the analysis by METIS's time minus AMD's (about
-// 4x AMD's on the meshes measured); a needed one saves AMD's (horse_b x64:
-// 1.3 s of 8.5 s, METIS 7 s). So it pays only where METIS is almost always
-// needed: on large meshes. AMD's fill on a mesh-like (planar) graph grows
-// faster than nested dissection's O(n log n) (Lipton, Rose and Tarjan), so
-// its flops per nonzero, which use_metis compares, grow with the mesh; every
-// mesh measured here from 1.8e5 vertices on (camelhead and horse_b
-// subdivided, up to 5.1e6 vertices) needed METIS, the largest paper mesh
-// (horse_b, 2e4 vertices) does not. The first power of two above the
-// paper's meshes by a margin: 2^17 blocks. Either way the ordering kept is
-// the one use_metis chooses: only the timing depends on this guess.
-// (Two METIS orderings must not run at once, e.g. of the two halves left by
-// a top separator: METIS draws from libc's rand(), one state for the
-// process, so concurrent calls interleave their draws and the ordering, and
-// with it the factor's rounding, changes from run to run. Measured on
-// 2026-11-25: horse_b x16's factor had 39.92 M, 39.99 M and 39.93 M entries
-// in three runs.)
-bool start_metis_early(int blocks) { return blocks >= (1 << 17); }
-
-// A fill-reducing ordering of the symmetric pattern A (upper triangle) by
-// `method` (CHOLMOD_AMD, CHOLMOD_METIS), postordered; its flop count in
-// *flops. Its own cholmod_common: two may run at the same time.
-std::vector<int> block_ordering(cholmod_sparse* A, int method, double* flops) {
-  struct Workspace {
-    cholmod_common common;
-    Workspace() { cholmod_start(&common); }
-    ~Workspace() { cholmod_finish(&common); }
-  } w;
-  cholmod_common& common = w.common;
-  common.print = 0;
-  common.nmethods = 1;
-  common.method[0].ordering = method;
-  common.postorder = 1;
-  cholmod_factor* ordering = cholmod_analyze(A, &common);
-  check_status(common, "symbolic analysis");
-  const int* perm = static_cast<const int*>(ordering->Perm);
-  std::vector<int> permutation(perm, perm + A->nrow);
-  *flops = common.method[0].fl;
-  cholmod_free_factor(&ordering, &common);
-  return permutation;
-}
-
 }  // namespace
 
 struct SparseCholesky::Impl {
@@ -350,28 +291,33 @@ struct SparseCholesky::Impl {
 
   // The upper-triangular pattern of the graph whose nodes are the blocks of
   // block_size consecutive unknowns (block size 1: the pattern of `upper`).
-  static void block_pattern(const Eigen::SparseMatrix<double>& upper, int block_size, std::vector<int>* column_start,
-                            std::vector<int>* row) {
+  static UpperVertexGraph block_graph(const Eigen::SparseMatrix<double>& upper, int block_size) {
     const int blocks = static_cast<int>(upper.rows()) / block_size;
     const int* start = upper.outerIndexPtr();
     const int* rows = upper.innerIndexPtr();
-    column_start->assign(1, 0);
-    row->clear();
+    UpperVertexGraph graph;
+    std::vector<int>& column_start = graph.column_start;
+    std::vector<int>& row = graph.row;
+    column_start.assign(1, 0);
     std::vector<int> last_seen(blocks, -1);
     for (int J = 0; J < blocks; ++J) {
-      const std::size_t first = row->size();
+      const std::size_t first = row.size();
       for (int j = J * block_size; j < (J + 1) * block_size; ++j)
         for (int k = start[j]; k < start[j + 1]; ++k) {
           const int I = rows[k] / block_size;
           if (I <= J && last_seen[I] != J) {
             last_seen[I] = J;
-            row->push_back(I);
+            row.push_back(I);
           }
         }
-      std::sort(row->begin() + static_cast<std::ptrdiff_t>(first), row->end());
-      column_start->push_back(static_cast<int>(row->size()));
+      std::sort(row.begin() + static_cast<std::ptrdiff_t>(first), row.end());
+      column_start.push_back(static_cast<int>(row.size()));
     }
+    return graph;
   }
+
+  // Steps 2 and 3 of analyze() with the blocks' ordering found.
+  void analyze_in_order(const Eigen::SparseMatrix<double>& upper, int block_size, BlockOrdering block_ordering);
 
   // The lower triangle of P A P^T from the pattern of `upper`.
   static std::shared_ptr<const PermutedPattern> permuted_lower(const Eigen::SparseMatrix<double>& upper,
@@ -459,57 +405,59 @@ void SparseCholesky::always_try_metis(bool on) { impl_->always_try_metis = on; }
 
 void SparseCholesky::use_cholmod_factorization(bool on) { impl_->by_cholmod = on; }
 
-void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block_size) {
+namespace {
+
+void check_analyzable(const Eigen::SparseMatrix<double>& upper, int block_size) {
   if (!upper.isCompressed() || upper.rows() != upper.cols())
     throw NumericalError("SparseCholesky: matrix must be square and compressed");
   if (block_size < 1 || upper.rows() % block_size != 0)
     throw NumericalError("SparseCholesky: block size must divide the matrix size");
+}
+
+}  // namespace
+
+void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block_size) {
+  check_analyzable(upper, block_size);
   Impl& m = *impl_;
   m.factor.reset();
-  const int n = static_cast<int>(upper.rows());
 
   // 1. The fill-reducing ordering, found on the graph of the blocks
   //    (vertices) and expanded to their unknowns: the same elimination order
-  //    as on the scalar graph, at a fraction of the analysis time. AMD, and
-  //    METIS's nested dissection as well where it can pay (`use_metis`),
-  //    whichever needs fewer flops, postordered. On large graphs the two
-  //    run at the same time (`start_metis_early`).
-  std::vector<int> block_start, block_row;
-  m.block_pattern(upper, block_size, &block_start, &block_row);
+  //    as on the scalar graph, at a fraction of the analysis time
+  //    (solvers/fill_reducing_ordering.h).
+  m.analyze_in_order(upper, block_size,
+                     fill_reducing_ordering(Impl::block_graph(upper, block_size), block_size, m.always_try_metis));
+}
+
+void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block_size, const BlockOrdering& order) {
+  check_analyzable(upper, block_size);
+  Impl& m = *impl_;
+  m.factor.reset();
+  m.analyze_in_order(upper, block_size, postordered(Impl::block_graph(upper, block_size), order));
+}
+
+void SparseCholesky::Impl::analyze_in_order(const Eigen::SparseMatrix<double>& upper, int block_size,
+                                            BlockOrdering block_ordering) {
+  const int n = static_cast<int>(upper.rows());
   const int blocks = n / block_size;
-  cholmod_sparse A = sparse_view<int>(blocks, block_start.data(), block_row.data(), nullptr, 1);
-  const double expanded = static_cast<double>(block_size) * block_size * block_size;
-  double amd_flops = 0, metis_flops = 0;
-  std::vector<int> block_permutation, metis_permutation;
-  const auto order_by_amd = [&] { block_permutation = block_ordering(&A, CHOLMOD_AMD, &amd_flops); };
-  const auto order_by_metis = [&] { metis_permutation = block_ordering(&A, CHOLMOD_METIS, &metis_flops); };
-  const auto metis_wanted = [&] { return m.always_try_metis || use_metis(expanded * amd_flops, block_start[blocks]); };
-  if (!m.always_try_metis && start_metis_early(blocks)) {
-    tbb::parallel_invoke(order_by_amd, order_by_metis);
-  } else {
-    order_by_amd();
-    if (metis_wanted()) order_by_metis();
-  }
-  m.ordering = "amd";
-  if (metis_wanted() && metis_flops < amd_flops) {  // metis_wanted(): METIS ran
-    block_permutation.swap(metis_permutation);
-    m.ordering = "metis";
-  }
+  ordering = block_ordering.method;
   std::vector<int> permutation(n);
   for (int a = 0; a < blocks; ++a)
-    for (int c = 0; c < block_size; ++c) permutation[a * block_size + c] = block_permutation[a] * block_size + c;
+    for (int c = 0; c < block_size; ++c)
+      permutation[a * block_size + c] = block_ordering.permutation[a] * block_size + c;
+  block_ordering = {};
 
   // 2. The permuted matrix, analyzed again in its natural order (the
   //    postorder is already part of the permutation), with CHOLMOD's int
   //    indices while the factor's entries fit them and its 64-bit ones
   //    (cholmod_l_*) from 2^31 entries on (the same arithmetic: same bits).
-  m.pattern = Impl::permuted_lower(upper, std::move(permutation));
-  if (!m.wide_indices) {
-    m.factor = std::make_unique<CholmodFactor<int>>();
-    if (m.factor->analyze(m.pattern)) return;
+  pattern = permuted_lower(upper, std::move(permutation));
+  if (!wide_indices) {
+    factor = std::make_unique<CholmodFactor<int>>();
+    if (factor->analyze(pattern)) return;
   }
-  m.factor = std::make_unique<CholmodFactor<Long>>();
-  if (!m.factor->analyze(m.pattern))
+  factor = std::make_unique<CholmodFactor<Long>>();
+  if (!factor->analyze(pattern))
     throw NumericalError("CHOLMOD symbolic analysis failed: the factor is too large even for 64-bit indices");
 }
 
@@ -531,10 +479,12 @@ void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& upper) {
   m.factor->factorize(upper.valuePtr(), m.by_cholmod);
 }
 
-bool solve_positive_definite(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd* X) {
+bool solve_positive_definite(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd* X,
+                             const BlockOrdering* order) {
   Eigen::SparseMatrix<double> upper = A.triangularView<Eigen::Upper>();
   upper.makeCompressed();
   SparseCholesky cholesky;
+  if (order) cholesky.analyze(upper, 1, *order);
   try {
     cholesky.factorize(upper);
   } catch (const NotPositiveDefinite&) {

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "framework/process/error.h"
+#include "solvers/fill_reducing_ordering.h"
 
 namespace akvf {
 
@@ -35,6 +36,13 @@ class SparseCholesky {
   // (the coordinates of a vertex) that share their couplings; the ordering is
   // then found on the graph of the groups, which is b^2 times smaller.
   void analyze(const Eigen::SparseMatrix<double>& upper, int block_size = 1);
+  // The same with the blocks' elimination order given instead of computed:
+  // `order` permutes the blocks (of this pattern's block graph), is
+  // postordered here, and is best a fill-reducing ordering of a graph that
+  // contains this one (solvers/fill_reducing_ordering.h: a mesh's vertex
+  // graph, ordered once for the matrices on it). For the ordering
+  // analyze(upper, block_size) would compute, the analysis is the same.
+  void analyze(const Eigen::SparseMatrix<double>& upper, int block_size, const BlockOrdering& order);
   // Takes over the analysis of `other` (analyzed, not yet factored): what
   // analyze() would compute for its pattern, without the ordering work
   // (solvers/symbolic_analysis_cache.h).
@@ -90,7 +98,9 @@ class SparseCholesky {
 // X = A^-1 B for a sparse symmetric positive definite A (both triangles
 // stored): one analysis, one factorization and a solve per column of B.
 // Returns false if A is not (numerically) positive definite.
-bool solve_positive_definite(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd* X);
+// `order`, if given: the elimination order of A's rows (analyze's).
+bool solve_positive_definite(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd* X,
+                             const BlockOrdering* order = nullptr);
 
 // "MAJOR.MINOR.PATCH" of the CHOLMOD the project was built against.
 std::string cholmod_version();

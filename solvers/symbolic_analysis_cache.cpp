@@ -18,7 +18,7 @@ void SymbolicAnalysisCache::forget(const Eigen::SparseMatrix<double>& upper, int
 }
 
 bool SymbolicAnalysisCache::analyze(const Eigen::SparseMatrix<double>& upper, int block_size,
-                                    SparseCholesky* cholesky) {
+                                    SparseCholesky* cholesky, const BlockOrdering* order) {
   const std::lock_guard<std::mutex> lock(mutex_);
   const int* start = upper.outerIndexPtr();
   const int* row = upper.innerIndexPtr();
@@ -29,7 +29,10 @@ bool SymbolicAnalysisCache::analyze(const Eigen::SparseMatrix<double>& upper, in
       return false;
     }
   }
-  cholesky->analyze(upper, block_size);
+  if (order)
+    cholesky->analyze(upper, block_size, *order);
+  else
+    cholesky->analyze(upper, block_size);
   Entry entry;
   entry.column_start.assign(start, start + n + 1);
   entry.row.assign(row, row + upper.nonZeros());

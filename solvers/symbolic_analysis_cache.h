@@ -18,9 +18,11 @@ namespace akvf {
 class SymbolicAnalysisCache {
  public:
   // Gives `cholesky` the analysis of the pattern of `upper` with the given
-  // block size: a copy of the cached one, or a new one (then cached).
+  // block size: a copy of the cached one, or a new one (then cached; with
+  // the blocks' elimination order `order` if given, SparseCholesky::analyze).
   // Returns true if it was computed.
-  bool analyze(const Eigen::SparseMatrix<double>& upper, int block_size, SparseCholesky* cholesky);
+  bool analyze(const Eigen::SparseMatrix<double>& upper, int block_size, SparseCholesky* cholesky,
+               const BlockOrdering* order = nullptr);
   // Drops the analysis of that pattern, if kept (a factor that will not be built).
   void forget(const Eigen::SparseMatrix<double>& upper, int block_size);
 

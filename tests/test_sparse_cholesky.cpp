@@ -192,7 +192,7 @@ TEST_CASE("METIS's nested dissection, where it is tried, solves the same system 
 
 TEST_CASE("on a large graph AMD's and METIS's orderings run at once and the same one is kept") {
   // 363 x 363 vertices: above the size where METIS starts beside AMD
-  // (sparse_cholesky.cpp, start_metis_early); always_try_metis computes
+  // (fill_reducing_ordering.cpp, start_metis_early); always_try_metis computes
   // the two one after the other and keeps the one with fewer flops, as the
   // size rule does here.
   const akvf::ElementMatrix2D K = shifted_killing(363);

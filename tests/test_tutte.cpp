@@ -30,13 +30,19 @@ TEST_CASE("a given solver gives the Tutte map Eigen's gives, and one that declin
   const auto tutte = [&](akvf::TutteWeights weights, const akvf::SpdSolver& solver) {
     return akvf::tutte_embedding(mesh, disk.boundary_loops[0], weights, &warnings, solver);
   };
-  const akvf::SpdSolver declines = [](const Eigen::SparseMatrix<double>&, const Eigen::MatrixXd&, Eigen::MatrixXd*) {
-    return false;
-  };
+  const akvf::SpdSolver declines = [](const Eigen::SparseMatrix<double>&, const Eigen::MatrixXd&,
+                                      const std::vector<int>&, Eigen::MatrixXd*) { return false; };
+  // The unknowns are the interior vertices, in increasing order.
+  std::vector<int> interior;
+  std::vector<bool> on_boundary(mesh.num_vertices(), false);
+  for (int v : disk.boundary_loops[0]) on_boundary[v] = true;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (!on_boundary[v]) interior.push_back(v);
   int calls = 0;
   const akvf::SpdSolver cholmod_solver = [&](const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B,
-                                             Eigen::MatrixXd* X) {
+                                             const std::vector<int>& vertices, Eigen::MatrixXd* X) {
     ++calls;
+    CHECK(vertices == interior);
     return akvf::solve_positive_definite(A, B, X);
   };
   for (auto weights : {akvf::TutteWeights::kUniform, akvf::TutteWeights::kCotangent}) {

@@ -44,7 +44,16 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
       chart.F.row(row) = mesh.F.row(faces[c][row]).unaryExpr([&](int v) { return local[v]; });
     std::vector<int> loop(boundary_loops[c].size());
     std::transform(boundary_loops[c].begin(), boundary_loops[c].end(), loop.begin(), [&](int v) { return local[v]; });
-    const Eigen::MatrixXd chart_uv = tutte_embedding(chart, loop, weights, warnings, solver);
+    // The solver sees the whole mesh's vertices (an ordering may be of those).
+    const SpdSolver chart_solver = !solver ? SpdSolver{}
+                                           : [&](const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B,
+                                                 const std::vector<int>& chart_vertices, Eigen::MatrixXd* X) {
+                                               std::vector<int> mesh_vertices(chart_vertices.size());
+                                               for (std::size_t i = 0; i < chart_vertices.size(); ++i)
+                                                 mesh_vertices[i] = vertices[c][chart_vertices[i]];
+                                               return solver(A, B, mesh_vertices, X);
+                                             };
+    const Eigen::MatrixXd chart_uv = tutte_embedding(chart, loop, weights, warnings, chart_solver);
     for (std::size_t i = 0; i < vertices[c].size(); ++i) UV.row(vertices[c][i]) = chart_uv.row(i);
   }
   pack_charts(mesh.F, face_chart, charts, &UV);

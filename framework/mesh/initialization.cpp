@@ -40,7 +40,7 @@ Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, T
   for (std::size_t i = 0; i < loop.size(); ++i)
     arc[i + 1] = arc[i] + (mesh.V.row(loop[(i + 1) % loop.size()]) - mesh.V.row(loop[i])).norm();
   const double radius = std::sqrt(surface_area(mesh) / std::numbers::pi);
-  std::vector<int> interior_index(n, 0);
+  std::vector<int> interior_index(n, 0), interior_vertex;
   for (std::size_t i = 0; i < loop.size(); ++i) {
     const double angle = 2 * std::numbers::pi * arc[i] / arc.back();
     UV.row(loop[i]) << radius * std::cos(angle), radius * std::sin(angle);
@@ -48,7 +48,10 @@ Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, T
   }
   int m = 0;
   for (int v = 0; v < n; ++v)
-    if (interior_index[v] == 0) interior_index[v] = m++;
+    if (interior_index[v] == 0) {
+      interior_index[v] = m++;
+      interior_vertex.push_back(v);
+    }
   *ok = true;
   if (m == 0) return UV;
 
@@ -68,7 +71,7 @@ Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, T
   Eigen::SparseMatrix<double> L(m, m);
   L.setFromTriplets(lhs.begin(), lhs.end());
   Eigen::MatrixXd interior;
-  if (!solver || !solver(L, rhs, &interior)) {
+  if (!solver || !solver(L, rhs, interior_vertex, &interior)) {
     // Also for cotangent weights whose system is not positive definite: a
     // nonsingular one still has an L D L^T (whose map is checked for folds).
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(L);

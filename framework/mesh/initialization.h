@@ -13,13 +13,15 @@ namespace akvf {
 
 enum class TutteWeights { kUniform, kCotangent };
 
-// Solves A X = B for a sparse symmetric A (both triangles stored); returns
-// false when it cannot (A not positive definite), and the Tutte solve then
-// falls back to Eigen's simplicial L D L^T, the framework's own solver. The
-// library passes CHOLMOD's supernodal Cholesky on large meshes
-// (akvf/parameterization.cpp says from where).
-using SpdSolver =
-    std::function<bool(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd* X)>;
+// Solves A X = B for a sparse symmetric A (both triangles stored), whose
+// row i is the mesh's vertex vertices[i] (so that a solver may order A by an
+// ordering of the mesh's vertex graph); returns false when it cannot (A not
+// positive definite), and the Tutte solve then falls back to Eigen's
+// simplicial L D L^T, the framework's own solver. The library passes
+// CHOLMOD's supernodal Cholesky on large meshes (akvf/parameterization.cpp
+// says from where).
+using SpdSolver = std::function<bool(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B,
+                                     const std::vector<int>& vertices, Eigen::MatrixXd* X)>;
 
 // Tutte embedding: the boundary loop on a circle of the mesh's area, spaced by
 // 3D arc length, and each interior vertex at the weighted average of its

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "framework/mesh/vertex_graph.h"
+
 namespace akvf {
 
 namespace {
@@ -27,32 +29,13 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
 
   // The vertex graph's upper triangle: for each vertex v the vertices u <= v
   // that share an element with it (v itself last), in increasing order.
-  // Built by counting, without a triplet per local slot (those took 3.4 GB
-  // at 10 M triangles; docs/performance.md, "Memory at scale").
-  std::vector<long> listed_start(num_vertices + 1, 0);
-  const auto for_each_pair = [&](int e, auto&& visit) {  // visit(u, v) for u <= v
-    for (int j = 0; j < N; ++j)
-      for (int i = 0; i < N; ++i)
-        if (elements(e, i) < elements(e, j) || i == j) visit(elements(e, i), elements(e, j));
-  };
-  for (int e = 0; e < ne; ++e) for_each_pair(e, [&](int, int v) { ++listed_start[v + 1]; });
-  for (int v = 0; v < num_vertices; ++v) listed_start[v + 1] += listed_start[v];
-  std::vector<int> listed(listed_start[num_vertices]);
-  {
-    std::vector<long> fill(listed_start.begin(), listed_start.end() - 1);
-    for (int e = 0; e < ne; ++e) for_each_pair(e, [&](int u, int v) { listed[fill[v]++] = u; });
-  }
-  std::vector<int> neighbors_of(num_vertices, 0);  // distinct neighbors u <= v
-  parallel_for_index(num_vertices, 4096, [&](int v) {
-    const auto begin = listed.begin() + listed_start[v], end = listed.begin() + listed_start[v + 1];
-    std::sort(begin, end);
-    neighbors_of[v] = static_cast<int>(std::unique(begin, end) - begin);
-  });
+  UpperVertexGraph graph = upper_vertex_graph(elements, num_vertices);
+  const auto neighbors_of = [&](int v) { return graph.column_start[v + 1] - graph.column_start[v]; };
   // Column D v + c holds the D rows of each neighbor u < v, then D v + 0..c.
   std::vector<int> outer(n + 1, 0);
   for (int v = 0; v < num_vertices; ++v)
     for (int c = 0; c < D; ++c)
-      outer[D * v + c + 1] = outer[D * v + c] + (neighbors_of[v] > 0 ? D * (neighbors_of[v] - 1) + c + 1 : 0);
+      outer[D * v + c + 1] = outer[D * v + c] + (neighbors_of(v) > 0 ? D * (neighbors_of(v) - 1) + c + 1 : 0);
   upper_.resize(n, n);
   upper_.resizeNonZeros(outer[n]);
   std::copy(outer.begin(), outer.end(), upper_.outerIndexPtr());
@@ -61,8 +44,8 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
   parallel_for_index(num_vertices, 4096, [&](int v) {
     for (int c = 0; c < D; ++c) {
       int* row = rows + outer[D * v + c];
-      for (int k = 0; k < neighbors_of[v]; ++k) {
-        const int u = listed[listed_start[v] + k];
+      for (int k = 0; k < neighbors_of(v); ++k) {
+        const int u = graph.row[graph.column_start[v] + k];
         for (int r = 0; r < (u < v ? D : c + 1); ++r) *row++ = D * u + r;
       }
     }
@@ -78,12 +61,12 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
       for (int i = 0; i <= j; ++i) {
         const int low = std::min(dof(i), dof(j)), high = std::max(dof(i), dof(j));
         const int v = high / D;
-        const int* first = listed.data() + listed_start[v];
-        const int k = static_cast<int>(std::lower_bound(first, first + neighbors_of[v], low / D) - first);
+        const int* first = graph.row.data() + graph.column_start[v];
+        const int k = static_cast<int>(std::lower_bound(first, first + neighbors_of(v), low / D) - first);
         *entry++ = outer[high] + D * k + low % D;
       }
   });
-  std::vector<int>().swap(listed);
+  graph = {};
   // Invert it: for each nonzero, its contributing slots in increasing order
   // (so each sum has a fixed order whatever the thread count) ...
   const int nnz = static_cast<int>(upper_.nonZeros());

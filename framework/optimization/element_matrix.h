@@ -7,7 +7,7 @@
 // the SLIM proxy and the Laplacian all have this form.
 //
 // The sparsity pattern (the upper triangle of D x D blocks for each vertex
-// and edge) is built once from the elements, through the vertex graph (each
+// and edge) is built once from the elements, through the vertex graph (framework/mesh/vertex_graph.h: each
 // vertex's sorted neighbors, found by counting: no triplet per local slot,
 // which took 3.4 GB at 10 M triangles), and may be shared by another
 // matrix on the same elements (with_pattern_of; taking_storage_of, with the
