@@ -48,11 +48,15 @@ SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const Precondition
 // takes over the other's symbolic analysis and factor memory at a switch,
 // where the other is released, so a switch costs no setup the pure methods
 // do not pay before their start, and no second analysis or factor is kept.
+// Both phases give up a failed factorization reuse after one CG iteration
+// (factored_preconditioner.h, reuse_check_from).
 template <int D, class Akvf, class Settings>
 std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objective, const Settings& settings) {
-  const FactorOptions newton = newton_phase_options(settings);
+  FactorOptions newton = newton_phase_options(settings);
+  newton.reuse_check_from = 1;
   const EigenvalueFilter filter = settings.newton_phase_filter;
-  const auto akvf_options = settings.akvf;
+  auto akvf_options = settings.akvf;
+  akvf_options.factor.reuse_check_from = 1;
   auto factored = [](Preconditioner& current) -> FactoredPreconditioner<D>& {
     return dynamic_cast<FactoredPreconditioner<D>&>(current);
   };

@@ -61,6 +61,7 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
   if (!(options_.cg_tolerance >= 0 && options_.cg_tolerance < 1)) throw OptionsError("CG tolerance must be in [0, 1)");
   if (options_.cg_max_iterations < 1) throw OptionsError("CG needs at least one iteration");
   if (options_.reuse_max_cg < 1) throw OptionsError("factorization reuse needs at least one CG iteration");
+  if (options_.reuse_check_from < 1) throw OptionsError("a reuse attempt can be checked from CG iteration 1 on");
   if (!(options_.auto_factor_bytes >= 0)) throw OptionsError("the automatic solver choice's factor limit must be >= 0");
   // Nothing to choose without multigrid, or with the Jacobi CG solve.
   if (options_.linear_solver == LinearSolver::kAuto && (!AlgebraicMultigrid::available() || options_.cg_tolerance > 0))
@@ -249,7 +250,8 @@ void FactoredPreconditioner<D>::apply(const Eigen::VectorXd& gradient, Eigen::Ve
 template <int D>
 bool FactoredPreconditioner<D>::solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d) {
   const auto inverse = [this](const Eigen::VectorXd& r, Eigen::VectorXd* z) { cholesky_.solve(r, z); };
-  return projected_cg(g, factored_null_basis_, inverse, options_.reuse_tolerance, options_.reuse_max_cg, true, d)
+  return projected_cg(g, factored_null_basis_, inverse, options_.reuse_tolerance, options_.reuse_max_cg,
+                      options_.reuse_check_from, d)
       .converged;
 }
 
@@ -263,7 +265,7 @@ void FactoredPreconditioner<D>::solve_by_multigrid(const Eigen::VectorXd& g, Eig
                            ? options_.amg_max_cg
                            : std::min(options_.amg_max_cg, fresh_multigrid_iterations_ + options_.amg_setup_cycles);
     const CgOutcome reused =
-        projected_cg(g, multigrid_null_basis_, inverse, options_.amg_tolerance, budget, !is_constant(), d);
+        projected_cg(g, multigrid_null_basis_, inverse, options_.amg_tolerance, budget, is_constant() ? 0 : 2, d);
     if (reused.converged || is_constant()) {
       ++statistics_.reused_solves;
       return;
@@ -273,13 +275,13 @@ void FactoredPreconditioner<D>::solve_by_multigrid(const Eigen::VectorXd& g, Eig
   multigrid_null_basis_ = null_basis_;
   ++statistics_.multigrid_setups;
   fresh_multigrid_iterations_ =
-      projected_cg(g, multigrid_null_basis_, inverse, options_.amg_tolerance, options_.amg_max_cg, false, d).iterations;
+      projected_cg(g, multigrid_null_basis_, inverse, options_.amg_tolerance, options_.amg_max_cg, 0, d).iterations;
 }
 
 template <int D>
 typename FactoredPreconditioner<D>::CgOutcome FactoredPreconditioner<D>::projected_cg(
     const Eigen::VectorXd& g, const ComponentMotions& built_null_basis, const Inverse& inverse, double tolerance,
-    int max_iterations, bool give_up_early, Eigen::VectorXd* d) {
+    int max_iterations, int give_up_from, Eigen::VectorXd* d) {
   // CG on A = P(x) + eps I restricted to the complement of the current null
   // space N, with the symmetric PSD preconditioner
   //   M^-1 = P_N P_N' Minv P_N' P_N,
@@ -322,7 +324,7 @@ typename FactoredPreconditioner<D>::CgOutcome FactoredPreconditioner<D>::project
     }
     // Give up early when the mean contraction so far, continued to the last
     // allowed iteration, would still miss the target by a wide margin.
-    if (give_up_early && k >= 2 && k < max_iterations) {
+    if (give_up_from > 0 && k >= give_up_from && k < max_iterations) {
       const double rate = std::pow(residual / initial_residual, 1.0 / k);
       if (residual * std::pow(rate, max_iterations - k) > 3 * target) break;
     }

@@ -41,7 +41,16 @@
 // further attempts for 1, 2, 4, ... iterations after consecutive failures.
 // An attempt is abandoned as soon as its mean residual contraction, continued
 // to max_cg, would miss tau by more than 3x (that saves most of the cost of
-// a failed attempt; on horse_b it turns 1.05 s into 1.0 s).
+// a failed attempt; on horse_b it turns 1.05 s into 1.0 s), checked from CG
+// iteration reuse_check_from on. From the second by default; akvf-newton
+// checks from the first: an earlier factor that serves is close to an exact
+// inverse, and its first iteration already contracts the residual by about
+// what the tolerance asks of every iteration, while one that fails mostly
+// leaves it where it was (at 1.27 M vertices a CG iteration costs a fifth of
+// a factorization; docs/performance.md, "A failed reuse gives up after one
+// CG iteration"). The paper's AKVF keeps the second: on camelhead one of
+// its reuses contracts less at first and converges, and checking from the
+// first took it from 82 to 86 iterations.
 //
 // Algebraic multigrid (linear_solver = kAmg). Instead of a factorization,
 // hypre's BoomerAMG builds a hierarchy of P(x) (solvers/algebraic_multigrid.h)
@@ -98,6 +107,7 @@ struct FactorOptions {
   double absolute_shift = 0;         // added to the relative shift: c of K + c I (§6.2 uses 1e-4)
   double reuse_tolerance = 0;        // tau; 0 factors at every update
   int reuse_max_cg = 8;
+  int reuse_check_from = 2;  // the first CG iteration at which a reuse may be abandoned (module comment)
   // > 0: never factor; solve (P + shift) d = g by Jacobi-preconditioned
   // conjugate gradients to this relative residual (§6.2 uses 1 %), at most
   // cg_max_iterations iterations (the last iterate is still a descent direction).
@@ -201,15 +211,16 @@ class FactoredPreconditioner : public Preconditioner {
   // CG on (P(x) + shift) d = g in the complement of the current null space,
   // preconditioned by `inverse` (an older factor or hierarchy, built when
   // the null space was `built_null_basis`), to tolerance * |g| within
-  // max_iterations; with give_up_early it stops once its mean contraction
-  // would miss the tolerance by more than 3x. d is the last iterate.
+  // max_iterations; from iteration give_up_from on (0: never) it stops once
+  // its mean contraction would miss the tolerance by more than 3x. d is the
+  // last iterate.
   struct CgOutcome {
     bool converged = false;
     int iterations = 0;
   };
   using Inverse = std::function<void(const Eigen::VectorXd&, Eigen::VectorXd*)>;
   CgOutcome projected_cg(const Eigen::VectorXd& g, const ComponentMotions& built_null_basis, const Inverse& inverse,
-                         double tolerance, int max_iterations, bool give_up_early, Eigen::VectorXd* d);
+                         double tolerance, int max_iterations, int give_up_from, Eigen::VectorXd* d);
 
   FactorOptions options_;
   Matrix matrix_;
