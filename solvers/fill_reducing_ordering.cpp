@@ -117,7 +117,12 @@ BlockOrdering postordered(const UpperVertexGraph& graph, const BlockOrdering& or
 
 std::vector<int> restricted_order(const BlockOrdering& ordering, const std::vector<int>& subset) {
   std::vector<int> index(ordering.permutation.size(), -1);
-  for (std::size_t i = 0; i < subset.size(); ++i) index.at(subset[i]) = static_cast<int>(i);
+  for (std::size_t i = 0; i < subset.size(); ++i) {
+    if (subset[i] < 0 || subset[i] >= static_cast<int>(index.size()) || index[subset[i]] >= 0)
+      throw NumericalError("restricted_order: the subset lists block " + std::to_string(subset[i]) +
+                           " twice or outside the ordering's " + std::to_string(index.size()));
+    index[subset[i]] = static_cast<int>(i);
+  }
   std::vector<int> order;
   order.reserve(subset.size());
   for (int block : ordering.permutation)

@@ -316,7 +316,8 @@ struct SparseCholesky::Impl {
     return graph;
   }
 
-  // Steps 2 and 3 of analyze() with the blocks' ordering found.
+  // The rest of analyze() once the blocks' ordering is known: its expansion
+  // to the unknowns, the permuted lower triangle, CHOLMOD's analysis of it.
   void analyze_in_order(const Eigen::SparseMatrix<double>& upper, int block_size, BlockOrdering block_ordering);
 
   // The lower triangle of P A P^T from the pattern of `upper`.
@@ -422,9 +423,9 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block
   m.factor.reset();
 
   // 1. The fill-reducing ordering, found on the graph of the blocks
-  //    (vertices) and expanded to their unknowns: the same elimination order
-  //    as on the scalar graph, at a fraction of the analysis time
-  //    (solvers/fill_reducing_ordering.h).
+  //    (vertices) and expanded to their unknowns (analyze_in_order): the same
+  //    elimination order as on the scalar graph, at a fraction of the
+  //    analysis time (solvers/fill_reducing_ordering.h).
   m.analyze_in_order(upper, block_size,
                      fill_reducing_ordering(Impl::block_graph(upper, block_size), block_size, m.always_try_metis));
 }

@@ -270,6 +270,42 @@ TEST_CASE("with factorization reuse the direction solves K(x) d = g to the toler
   CHECK((akvf::rigid_motion_basis_2d(x2).transpose() * d).norm() <= 1e-10 * d.norm());
 }
 
+TEST_CASE("a reuse whose first CG iteration barely contracts is given up there when checked from the first") {
+  // x2 far from x1 (u scaled by 1 + 200 v^2: no triangle inverts), so the
+  // factor of K(x1) is a poor preconditioner for K(x2).
+  akvf::TriMesh normalized = akvf::test::bumpy_disk(8, 8);
+  const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
+  const Eigen::VectorXd x1 = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 4) * 0.9);
+  Eigen::MatrixXd stretched = akvf::test::jittered_uv(normalized, 0.2, 4) * 0.9;
+  stretched.col(0).array() *= 1 + 200 * stretched.col(1).array().square();
+  const Eigen::VectorXd x2 = akvf::stack_uv(stretched);
+  Eigen::VectorXd directions[2];
+  int cg_iterations[2] = {0, 0};
+  for (const int check_from : {1, 2}) {
+    CAPTURE(check_from);
+    akvf::AkvfOptions2D options;
+    options.factor.reuse_tolerance = 0.03;
+    options.factor.reuse_check_from = check_from;
+    akvf::AkvfPreconditioner2D preconditioner(objective, options);
+    Eigen::VectorXd g, d;
+    objective.value_and_gradient(x1, &g);
+    preconditioner.update({x1, g, 0.0, 1});
+    preconditioner.apply(g, &d);
+    objective.value_and_gradient(x2, &g);
+    preconditioner.update({x2, g, 0.0, 2});
+    preconditioner.apply(g, &directions[check_from - 1]);
+    CHECK(preconditioner.statistics().factorizations == 2);  // the reuse failed: factored at x2
+    CHECK(preconditioner.statistics().reused_solves == 0);
+    cg_iterations[check_from - 1] = preconditioner.statistics().cg_iterations;
+  }
+  CHECK(cg_iterations[0] == 1);
+  CHECK(cg_iterations[1] >= 2);
+  CHECK(directions[0] == directions[1]);  // both from the factor at x2
+  akvf::AkvfOptions2D invalid;
+  invalid.factor.reuse_check_from = 0;
+  CHECK_THROWS_AS(akvf::AkvfPreconditioner2D(objective, invalid), akvf::OptionsError);
+}
+
 TEST_CASE("Newton, Laplacian and SLIM matrices are symmetric PSD with the expected null spaces, directions descend") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
   const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);

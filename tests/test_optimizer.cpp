@@ -318,6 +318,22 @@ TEST_CASE("runs are bitwise deterministic for 1 and 2 threads") {
   for (const auto& x : results) CHECK(x == results.front());
 }
 
+TEST_CASE("from 100 K vertices the setup orders the vertex graph once, and the run with it has the iterates of its own") {
+  ParamConfig config;
+  config.optimizer.max_iterations = 2;
+  CHECK_FALSE(akvf::prepare_parameterization(akvf::test::grid_disk(20, 20, 0.2, 3), "small", config).vertex_ordering);
+  const akvf::TriMesh mesh = akvf::test::grid_disk(317, 317, 0.2, 3);  // 100 489 vertices
+  akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "grid", config);
+  REQUIRE(setup.vertex_ordering);
+  CHECK(setup.vertex_ordering->permutation.size() == static_cast<std::size_t>(setup.objective->num_vertices()));
+  const akvf::ParamRun shared = akvf::run_parameterization(setup, config);
+  setup.vertex_ordering.reset();  // the preconditioner orders K itself
+  const akvf::ParamRun own = akvf::run_parameterization(setup, config);
+  CHECK(shared.result.trace.size() == 3);
+  CHECK(shared.result.x == own.result.x);
+  CHECK(shared.preconditioner_statistics.symbolic_analyses == 1);
+}
+
 TEST_CASE("L-BFGS through Ceres decreases the energy without inverting, with our trace and statuses") {
   ParamConfig config;
   config.preconditioner = "lbfgs";
