@@ -247,6 +247,22 @@ TEST_CASE("a matrix rounding or a slight indefiniteness keeps from factoring is 
   CHECK_THROWS_AS(refused.update({x, g, 0.0, 1}), akvf::NotPositiveDefinite);
 }
 
+namespace {
+
+// The preconditioner updated and applied at x1, then at x2: g and d at x2.
+void direction_after(const akvf::DistortionObjective2D& objective, const Eigen::VectorXd& x1,
+                     const Eigen::VectorXd& x2, akvf::Preconditioner* preconditioner, Eigen::VectorXd* g,
+                     Eigen::VectorXd* d) {
+  objective.value_and_gradient(x1, g);
+  preconditioner->update({x1, *g, 0.0, 1});
+  preconditioner->apply(*g, d);
+  objective.value_and_gradient(x2, g);
+  preconditioner->update({x2, *g, 0.0, 2});
+  preconditioner->apply(*g, d);
+}
+
+}  // namespace
+
 TEST_CASE("with factorization reuse the direction solves K(x) d = g to the tolerance") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(8, 8);
   const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
@@ -256,12 +272,7 @@ TEST_CASE("with factorization reuse the direction solves K(x) d = g to the toler
   options.factor.reuse_tolerance = 0.01;
   akvf::AkvfPreconditioner2D preconditioner(objective, options);
   Eigen::VectorXd g, d;
-  objective.value_and_gradient(x1, &g);
-  preconditioner.update({x1, g, 0.0, 1});
-  preconditioner.apply(g, &d);
-  objective.value_and_gradient(x2, &g);
-  preconditioner.update({x2, g, 0.0, 2});
-  preconditioner.apply(g, &d);
+  direction_after(objective, x1, x2, &preconditioner, &g, &d);
   CHECK(preconditioner.statistics().factorizations == 1);
   CHECK(preconditioner.statistics().reused_solves == 1);
   const Eigen::MatrixXd K = dense_killing(objective.elements(), x2, objective.rest().area, true);
@@ -287,13 +298,8 @@ TEST_CASE("a reuse whose first CG iteration barely contracts is given up there w
     options.factor.reuse_tolerance = 0.03;
     options.factor.reuse_check_from = check_from;
     akvf::AkvfPreconditioner2D preconditioner(objective, options);
-    Eigen::VectorXd g, d;
-    objective.value_and_gradient(x1, &g);
-    preconditioner.update({x1, g, 0.0, 1});
-    preconditioner.apply(g, &d);
-    objective.value_and_gradient(x2, &g);
-    preconditioner.update({x2, g, 0.0, 2});
-    preconditioner.apply(g, &directions[check_from - 1]);
+    Eigen::VectorXd g;
+    direction_after(objective, x1, x2, &preconditioner, &g, &directions[check_from - 1]);
     CHECK(preconditioner.statistics().factorizations == 2);  // the reuse failed: factored at x2
     CHECK(preconditioner.statistics().reused_solves == 0);
     cg_iterations[check_from - 1] = preconditioner.statistics().cg_iterations;
