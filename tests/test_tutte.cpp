@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "framework/mesh/chart_layout.h"
 #include "framework/mesh/initialization.h"
 #include "framework/mesh/mesh_validation.h"
 #include "framework/mesh/rest_geometry.h"
@@ -53,6 +54,41 @@ TEST_CASE("a given solver gives the Tutte map Eigen's gives, and one that declin
     CHECK((cholmod - eigen).cwiseAbs().maxCoeff() <= 1e-12 * eigen.cwiseAbs().maxCoeff());
     CHECK(tutte(weights, declines) == eigen);
   }
+}
+
+TEST_CASE("per-chart Tutte systems name their unknowns by the whole mesh's vertices") {
+  // Two disks side by side in one mesh, one chart each; the second's
+  // vertices numbered after the first's.
+  const akvf::TriMesh first = akvf::test::bumpy_disk(6, 5), second = akvf::test::bumpy_disk(5, 7);
+  const int n1 = first.num_vertices();
+  akvf::TriMesh mesh;
+  mesh.V.resize(n1 + second.num_vertices(), 3);
+  mesh.V << first.V, second.V;
+  mesh.F.resize(first.num_faces() + second.num_faces(), 3);
+  mesh.F << first.F, (second.F.array() + n1).matrix();
+  std::vector<int> face_chart(mesh.num_faces(), 1);
+  std::fill(face_chart.begin(), face_chart.begin() + first.num_faces(), 0);
+  std::vector<std::vector<int>> loops = {akvf::prepare_disk_mesh(first, "first").boundary_loops[0],
+                                         akvf::prepare_disk_mesh(second, "second").boundary_loops[0]};
+  for (int& v : loops[1]) v += n1;
+  std::vector<std::vector<int>> expected(2);
+  for (int c = 0; c < 2; ++c) {
+    std::vector<bool> on_loop(mesh.num_vertices(), false);
+    for (int v : loops[c]) on_loop[v] = true;
+    for (int v = c == 0 ? 0 : n1; v < (c == 0 ? n1 : mesh.num_vertices()); ++v)
+      if (!on_loop[v]) expected[c].push_back(v);
+  }
+  std::vector<std::vector<int>> seen;
+  const akvf::SpdSolver recording = [&](const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B,
+                                        const std::vector<int>& vertices, Eigen::MatrixXd* X) {
+    seen.push_back(vertices);
+    return akvf::solve_positive_definite(A, B, X);
+  };
+  akvf::Warnings warnings;
+  const Eigen::MatrixXd UV =
+      akvf::tutte_embedding_charts(mesh, loops, face_chart, akvf::TutteWeights::kUniform, &warnings, recording);
+  CHECK(seen == expected);
+  CHECK(akvf::count_inverted_triangles(mesh.F, UV) == 0);
 }
 
 TEST_CASE("cotangent Tutte falls back to uniform weights when it would fold") {
