@@ -178,13 +178,8 @@ template <int D>
 void FactoredPreconditioner<D>::analyze() {
   if (cholesky_.analyzed()) return;
   const BlockOrdering* order = options_.vertex_ordering.get();
-  bool computed = true;
-  if (options_.analysis_cache)
-    computed = options_.analysis_cache->analyze(matrix_.upper(), D, &cholesky_, order);
-  else if (order)
-    cholesky_.analyze(matrix_.upper(), D, *order);
-  else
-    cholesky_.analyze(matrix_.upper(), D);
+  const bool computed = options_.analysis_cache ? options_.analysis_cache->analyze(matrix_.upper(), D, &cholesky_, order)
+                                                : (cholesky_.analyze(matrix_.upper(), D, order), true);
   if (computed) ++statistics_.symbolic_analyses;
 }
 

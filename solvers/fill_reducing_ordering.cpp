@@ -91,7 +91,7 @@ BlockOrdering fill_reducing_ordering(const UpperVertexGraph& graph, int block_si
   const int blocks = graph.num_vertices();
   const double expanded = static_cast<double>(block_size) * block_size * block_size;
   double amd_flops = 0, metis_flops = 0;
-  BlockOrdering amd{{}, "amd"}, metis{{}, "metis"};
+  BlockOrdering amd{{}, "amd", true}, metis{{}, "metis", true};
   const auto order_by_amd = [&] { amd.permutation = block_ordering(graph, CHOLMOD_AMD, nullptr, &amd_flops); };
   const auto order_by_metis = [&] { metis.permutation = block_ordering(graph, CHOLMOD_METIS, nullptr, &metis_flops); };
   const auto metis_wanted = [&] {
@@ -112,7 +112,7 @@ BlockOrdering postordered(const UpperVertexGraph& graph, const BlockOrdering& or
     throw NumericalError("postordered: the order has " + std::to_string(order.permutation.size()) +
                          " blocks, the graph " + std::to_string(graph.num_vertices()));
   double flops = 0;
-  return {block_ordering(graph, CHOLMOD_GIVEN, &order.permutation, &flops), order.method};
+  return {block_ordering(graph, CHOLMOD_GIVEN, &order.permutation, &flops), order.method, true};
 }
 
 std::vector<int> restricted_order(const BlockOrdering& ordering, const std::vector<int>& subset) {

@@ -20,6 +20,10 @@ namespace akvf {
 struct BlockOrdering {
   std::vector<int> permutation;  // the a-th block eliminated is block permutation[a]
   std::string method;            // "amd" or "metis"
+  // Postordered for the graph it was computed on (fill_reducing_ordering,
+  // postordered): SparseCholesky::analyze then takes it as it is, so give it
+  // only for a matrix on that graph. False: analyze postorders it first.
+  bool postordered = false;
 };
 
 // The ordering SparseCholesky::analyze computes for a matrix whose blocks of

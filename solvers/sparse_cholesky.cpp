@@ -318,7 +318,7 @@ struct SparseCholesky::Impl {
 
   // The rest of analyze() once the blocks' ordering is known: its expansion
   // to the unknowns, the permuted lower triangle, CHOLMOD's analysis of it.
-  void analyze_in_order(const Eigen::SparseMatrix<double>& upper, int block_size, BlockOrdering block_ordering);
+  void analyze_in_order(const Eigen::SparseMatrix<double>& upper, int block_size, const BlockOrdering& block_ordering);
 
   // The lower triangle of P A P^T from the pattern of `upper`.
   static std::shared_ptr<const PermutedPattern> permuted_lower(const Eigen::SparseMatrix<double>& upper,
@@ -417,28 +417,31 @@ void check_analyzable(const Eigen::SparseMatrix<double>& upper, int block_size) 
 
 }  // namespace
 
-void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block_size) {
+void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block_size, const BlockOrdering* order) {
   check_analyzable(upper, block_size);
   Impl& m = *impl_;
   m.factor.reset();
+  const int blocks = static_cast<int>(upper.rows()) / block_size;
+  if (order && static_cast<int>(order->permutation.size()) != blocks)
+    throw NumericalError("SparseCholesky: the given ordering has " + std::to_string(order->permutation.size()) +
+                         " blocks, the matrix " + std::to_string(blocks));
 
   // 1. The fill-reducing ordering, found on the graph of the blocks
   //    (vertices) and expanded to their unknowns (analyze_in_order): the same
   //    elimination order as on the scalar graph, at a fraction of the
-  //    analysis time (solvers/fill_reducing_ordering.h).
-  m.analyze_in_order(upper, block_size,
-                     fill_reducing_ordering(Impl::block_graph(upper, block_size), block_size, m.always_try_metis));
-}
-
-void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& upper, int block_size, const BlockOrdering& order) {
-  check_analyzable(upper, block_size);
-  Impl& m = *impl_;
-  m.factor.reset();
-  m.analyze_in_order(upper, block_size, postordered(Impl::block_graph(upper, block_size), order));
+  //    analysis time (solvers/fill_reducing_ordering.h). A given one is
+  //    postordered on that graph unless it already is.
+  if (order && order->postordered)
+    m.analyze_in_order(upper, block_size, *order);
+  else if (order)
+    m.analyze_in_order(upper, block_size, postordered(Impl::block_graph(upper, block_size), *order));
+  else
+    m.analyze_in_order(upper, block_size,
+                       fill_reducing_ordering(Impl::block_graph(upper, block_size), block_size, m.always_try_metis));
 }
 
 void SparseCholesky::Impl::analyze_in_order(const Eigen::SparseMatrix<double>& upper, int block_size,
-                                            BlockOrdering block_ordering) {
+                                            const BlockOrdering& block_ordering) {
   const int n = static_cast<int>(upper.rows());
   const int blocks = n / block_size;
   ordering = block_ordering.method;
@@ -446,7 +449,6 @@ void SparseCholesky::Impl::analyze_in_order(const Eigen::SparseMatrix<double>& u
   for (int a = 0; a < blocks; ++a)
     for (int c = 0; c < block_size; ++c)
       permutation[a * block_size + c] = block_ordering.permutation[a] * block_size + c;
-  block_ordering = {};
 
   // 2. The permuted matrix, analyzed again in its natural order (the
   //    postorder is already part of the permutation), with CHOLMOD's int
@@ -485,7 +487,7 @@ bool solve_positive_definite(const Eigen::SparseMatrix<double>& A, const Eigen::
   Eigen::SparseMatrix<double> upper = A.triangularView<Eigen::Upper>();
   upper.makeCompressed();
   SparseCholesky cholesky;
-  if (order) cholesky.analyze(upper, 1, *order);
+  cholesky.analyze(upper, 1, order);
   try {
     cholesky.factorize(upper);
   } catch (const NotPositiveDefinite&) {

@@ -35,14 +35,14 @@ class SparseCholesky {
   // With block_size b > 1 the unknowns come in groups of b consecutive ones
   // (the coordinates of a vertex) that share their couplings; the ordering is
   // then found on the graph of the groups, which is b^2 times smaller.
-  void analyze(const Eigen::SparseMatrix<double>& upper, int block_size = 1);
-  // The same with the blocks' elimination order given instead of computed:
-  // `order` permutes the blocks (of this pattern's block graph), is
-  // postordered here, and is best a fill-reducing ordering of a graph that
-  // contains this one (solvers/fill_reducing_ordering.h: a mesh's vertex
-  // graph, ordered once for the matrices on it). For the ordering
-  // analyze(upper, block_size) would compute, the analysis is the same.
-  void analyze(const Eigen::SparseMatrix<double>& upper, int block_size, const BlockOrdering& order);
+  // With `order` the blocks' elimination order is given instead of
+  // computed: a permutation of the blocks, postordered here unless it says
+  // it is (BlockOrdering::postordered), best a fill-reducing ordering of a
+  // graph that contains this pattern's block graph
+  // (solvers/fill_reducing_ordering.h: a mesh's vertex graph, ordered once
+  // for the matrices on it). Given the ordering analyze(upper, block_size)
+  // would compute, the analysis is the same.
+  void analyze(const Eigen::SparseMatrix<double>& upper, int block_size = 1, const BlockOrdering* order = nullptr);
   // Takes over the analysis of `other` (analyzed, not yet factored): what
   // analyze() would compute for its pattern, without the ordering work
   // (solvers/symbolic_analysis_cache.h).

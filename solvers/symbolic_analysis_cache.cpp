@@ -29,10 +29,7 @@ bool SymbolicAnalysisCache::analyze(const Eigen::SparseMatrix<double>& upper, in
       return false;
     }
   }
-  if (order)
-    cholesky->analyze(upper, block_size, *order);
-  else
-    cholesky->analyze(upper, block_size);
+  cholesky->analyze(upper, block_size, order);
   Entry entry;
   entry.column_start.assign(start, start + n + 1);
   entry.row.assign(row, row + upper.nonZeros());

@@ -18,8 +18,8 @@ namespace akvf {
 class SymbolicAnalysisCache {
  public:
   // Gives `cholesky` the analysis of the pattern of `upper` with the given
-  // block size: a copy of the cached one, or a new one (then cached; with
-  // the blocks' elimination order `order` if given, SparseCholesky::analyze).
+  // block size: a copy of the cached one, or a new one (then cached;
+  // `order` as for SparseCholesky::analyze).
   // Returns true if it was computed.
   bool analyze(const Eigen::SparseMatrix<double>& upper, int block_size, SparseCholesky* cholesky,
                const BlockOrdering* order = nullptr);
