@@ -1,13 +1,12 @@
 #include "preconditioners/factored_preconditioner.h"
 
-#include <unistd.h>
-
 #include <Eigen/IterativeLinearSolvers>
 #include <algorithm>
 #include <cmath>
 
 #include "framework/mesh/mesh_topology.h"
 #include "framework/process/error.h"
+#include "framework/process/physical_memory.h"
 
 namespace akvf {
 
@@ -16,10 +15,6 @@ namespace {
 FactorOptions with_added_diagonal(FactorOptions options, const Eigen::VectorXd& added) {
   if (options.extra_diagonal.size() == 0) options.extra_diagonal = added;
   return options;
-}
-
-double physical_memory_bytes() {
-  return static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
 }
 
 }  // namespace

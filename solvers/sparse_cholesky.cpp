@@ -14,6 +14,7 @@
 #include <tbb/parallel_for.h>
 
 #include "framework/process/error.h"
+#include "framework/process/physical_memory.h"
 #include "solvers/fill_reducing_ordering.h"
 #include "solvers/supernodal_factorization.h"
 #include "solvers/supernodal_solve.h"
@@ -117,18 +118,49 @@ class PermutedFactor {
 
 namespace {
 
+// Our analysis settings (CholmodFactor's `cholmod_defaults` false), measured
+// with `akvf_benchmarks --benchmark_filter='^(NumericFactorization|Solve)/'`
+// (docs/performance.md, "Every factor supernodal, its small supernodes
+// merged more"):
+// - Every factor is supernodal, so that SupernodalFactorization (two cores)
+//   computes it. CHOLMOD factors a matrix simplicially (L D L^T, one core)
+//   below 40 flops per factor entry, where its one-core supernodal code pays
+//   more in per-supernode overhead than it gains (hilbert_b's K, 21).
+// - Supernodes are merged with twice CHOLMOD's column limits (nrelax 8, 32,
+//   96 for its 4, 16, 48; the zero-fraction limits zrelax unchanged): fewer,
+//   larger dense blocks for explicit zeros. On the paper's meshes the
+//   factorization takes 20-35 % less time with it (hilbert_b 10.4 -> 7.3 ms,
+//   horse_b 16.1 -> 12.4 ms), at 635 K faces 12 % less (0.43 -> 0.38 s), with
+//   28-55 % more stored values; three or four times the limits were slower.
+// - At 2.5 M faces it bought nothing (factorization 4 % faster, solves 8 %
+//   slower) for 250 MiB more, and at 10 M faces the factor is most of the
+//   memory: a factor whose relaxed form would store more than kRelaxedShare
+//   of the machine's memory is analyzed again with CHOLMOD's limits.
+constexpr std::size_t kRelaxedColumnLimits[3] = {8, 32, 96};
+constexpr double kRelaxedShare = 1.0 / 16;  // 1.5 GiB of this machine's 24 GiB
+
 template <class Index>
 class CholmodFactor final : public PermutedFactor {
   using Api = Cholmod<Index>;
 
  public:
-  CholmodFactor() {
+  // cholmod_defaults: CHOLMOD's own choice of simplicial or supernodal and
+  // its own amalgamation (the unit of docs/performance.md's speed table);
+  // otherwise ours (above).
+  // relaxed_limit_bytes: the largest relaxed factor kept (0: kRelaxedShare
+  // of the memory).
+  CholmodFactor(bool cholmod_defaults, double relaxed_limit_bytes)
+      : relaxed_(!cholmod_defaults),
+        relaxed_limit_bytes_(relaxed_limit_bytes > 0 ? relaxed_limit_bytes : kRelaxedShare * physical_memory_bytes()) {
     Api::start(&common_);
     common_.print = 0;  // errors are reported through exceptions, not stderr
     // The matrix comes permuted and postordered (SparseCholesky::analyze).
     common_.nmethods = 1;
     common_.method[0].ordering = CHOLMOD_NATURAL;
     common_.postorder = 0;
+    if (cholmod_defaults) return;
+    common_.supernodal = CHOLMOD_SUPERNODAL;
+    std::copy(std::begin(kRelaxedColumnLimits), std::end(kRelaxedColumnLimits), common_.nrelax);
   }
   ~CholmodFactor() override {
     Api::free_factor(&factor_, &common_);
@@ -145,13 +177,22 @@ class CholmodFactor final : public PermutedFactor {
     factor_ = Api::analyze(&B, &common_);
     if (common_.status == CHOLMOD_TOO_LARGE) return false;
     check_status(common_, "symbolic analysis of the permuted matrix");
+    if (relaxed_ && bytes() > relaxed_limit_bytes_) {
+      relaxed_ = false;
+      const cholmod_common defaults = cholmod_defaults();
+      std::copy(std::begin(defaults.nrelax), std::end(defaults.nrelax), common_.nrelax);
+      Api::free_factor(&factor_, &common_);
+      factor_ = Api::analyze(&B, &common_);
+      check_status(common_, "symbolic analysis of the permuted matrix");
+    }
     nonzeros = common_.lnz;
     flops = common_.fl;
     return true;
   }
 
   std::unique_ptr<PermutedFactor> copy_analysis() const override {
-    auto copy = std::make_unique<CholmodFactor<Index>>();
+    auto copy = std::make_unique<CholmodFactor<Index>>(false, relaxed_limit_bytes_);
+    copy->relaxed_ = relaxed_;
     copy->pattern_ = pattern_;
     copy->column_start_ = column_start_;
     copy->row_ = row_;
@@ -263,7 +304,17 @@ class CholmodFactor final : public PermutedFactor {
     return *parallel_factorization_;
   }
 
+  // CHOLMOD's default settings, as cholmod_start sets them.
+  static cholmod_common cholmod_defaults() {
+    cholmod_common defaults;
+    Api::start(&defaults);
+    Api::finish(&defaults);
+    return defaults;
+  }
+
   cholmod_common common_;
+  bool relaxed_;  // analyzed with kRelaxedColumnLimits
+  double relaxed_limit_bytes_;
   cholmod_factor* factor_ = nullptr;
   std::shared_ptr<const PermutedPattern> pattern_;
   std::shared_ptr<std::vector<Index>> column_start_, row_;  // 64-bit copies (long only)
@@ -284,10 +335,12 @@ struct SparseCholesky::Impl {
   std::shared_ptr<const PermutedPattern> pattern;
   std::unique_ptr<PermutedFactor> factor;
   std::vector<double> permuted_rhs;
-  bool wide_indices = false;      // tests: 64-bit indices from the start
-  bool by_cholmod = false;        // tests, benchmarks: CHOLMOD's own numeric factorization
-  bool always_try_metis = false;  // tests: METIS's ordering besides AMD's at any size
-  std::string ordering;           // of the last analysis: "amd" or "metis"
+  bool wide_indices = false;       // tests: 64-bit indices from the start
+  bool by_cholmod = false;         // tests, benchmarks: CHOLMOD's own numeric factorization
+  bool cholmod_defaults = false;   // benchmarks: and CHOLMOD's own analysis settings
+  double relaxed_limit_bytes = 0;  // tests: the largest relaxed factor (0: kRelaxedShare of the memory)
+  bool always_try_metis = false;   // tests: METIS's ordering besides AMD's at any size
+  std::string ordering;            // of the last analysis: "amd" or "metis"
 
   // The upper-triangular pattern of the graph whose nodes are the blocks of
   // block_size consecutive unknowns (block size 1: the pattern of `upper`).
@@ -406,6 +459,13 @@ void SparseCholesky::always_try_metis(bool on) { impl_->always_try_metis = on; }
 
 void SparseCholesky::use_cholmod_factorization(bool on) { impl_->by_cholmod = on; }
 
+void SparseCholesky::limit_relaxed_factor(double bytes) { impl_->relaxed_limit_bytes = bytes; }
+
+void SparseCholesky::use_cholmod_alone(bool on) {
+  impl_->by_cholmod = on;
+  impl_->cholmod_defaults = on;
+}
+
 namespace {
 
 void check_analyzable(const Eigen::SparseMatrix<double>& upper, int block_size) {
@@ -456,10 +516,10 @@ void SparseCholesky::Impl::analyze_in_order(const Eigen::SparseMatrix<double>& u
   //    (cholmod_l_*) from 2^31 entries on (the same arithmetic: same bits).
   pattern = permuted_lower(upper, std::move(permutation));
   if (!wide_indices) {
-    factor = std::make_unique<CholmodFactor<int>>();
+    factor = std::make_unique<CholmodFactor<int>>(cholmod_defaults, relaxed_limit_bytes);
     if (factor->analyze(pattern)) return;
   }
-  factor = std::make_unique<CholmodFactor<Long>>();
+  factor = std::make_unique<CholmodFactor<Long>>(cholmod_defaults, relaxed_limit_bytes);
   if (!factor->analyze(pattern))
     throw NumericalError("CHOLMOD symbolic analysis failed: the factor is too large even for 64-bit indices");
 }

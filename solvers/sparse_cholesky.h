@@ -1,6 +1,8 @@
 #pragma once
 // Sparse Cholesky factorization of a symmetric positive definite matrix with
-// CHOLMOD (supernodal where it pays), hidden behind a small class. The
+// CHOLMOD's analysis (always supernodal, small supernodes merged more than
+// its defaults: sparse_cholesky.cpp says why) and our two-core numeric
+// factorization, hidden behind a small class. The
 // symbolic analysis (fill-reducing ordering, elimination tree) is done once
 // for a sparsity pattern; each factorize() is numeric only (§5.2). CHOLMOD's
 // 32-bit integers serve while the factor has fewer than 2^31 entries; past
@@ -48,7 +50,8 @@ class SparseCholesky {
   // (solvers/symbolic_analysis_cache.h).
   void copy_analysis(const SparseCholesky& other);
   // Numeric factorization A = L L^T: a supernodal factor on two cores
-  // (solvers/supernodal_factorization.h), a simplicial one by CHOLMOD.
+  // (solvers/supernodal_factorization.h), a simplicial one (only with
+  // use_cholmod_alone) by CHOLMOD.
   // Throws NotPositiveDefinite if A is not (numerically) positive
   // definite, NumericalError on other failures.
   void factorize(const Eigen::SparseMatrix<double>& upper);
@@ -56,8 +59,8 @@ class SparseCholesky {
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd* x);
 
   bool analyzed() const;
-  // True if CHOLMOD chose the supernodal factorization (solved by our own
-  // supernodal triangular solves), false for its simplicial one.
+  // True for a supernodal factor (solved by our own supernodal triangular
+  // solves), false for CHOLMOD's simplicial one (only with use_cholmod_alone).
   bool supernodal() const;
   // Nonzeros of the factor L after the last analyze().
   double factor_nonzeros() const;
@@ -85,6 +88,15 @@ class SparseCholesky {
   // factorization (one core) instead of SupernodalFactorization (two cores,
   // the same bits; solvers/supernodal_factorization.h).
   void use_cholmod_factorization(bool on);
+  // Benchmarks: CHOLMOD alone, as it factors with its default settings:
+  // simplicial L D L^T (one core) below its supernodal switch, its own
+  // amalgamation, its own numeric factorization (the speed table's unit).
+  // Set before analyze().
+  void use_cholmod_alone(bool on);
+  // Tests: the largest factor (bytes) analyzed with the relaxed amalgamation;
+  // a larger one is analyzed again with CHOLMOD's (default: 1/16 of the
+  // physical memory, sparse_cholesky.cpp). Set before analyze().
+  void limit_relaxed_factor(double bytes);
   // Share of the supernodal factor's entries whose triangular solves run on
   // one core (the top of the elimination tree; the rest is split between two
   // cores, see solvers/supernodal_solve.h). 1 for a simplicial factor.

@@ -25,8 +25,9 @@ akvf::ElementMatrix2D shifted_killing(int nx) {
   return K;
 }
 
-double relative_residual(const akvf::ElementMatrix2D& K, int block_size, bool* supernodal) {
+double relative_residual(const akvf::ElementMatrix2D& K, int block_size, bool cholmod_alone, bool* supernodal) {
   akvf::SparseCholesky cholesky;
+  cholesky.use_cholmod_alone(cholmod_alone);
   cholesky.analyze(K.upper(), block_size);
   cholesky.factorize(K.upper());
   *supernodal = cholesky.supernodal();
@@ -42,41 +43,71 @@ double relative_residual(const akvf::ElementMatrix2D& K, int block_size, bool* s
 TEST_CASE("supernodal and simplicial factors solve to machine precision, ordered by vertex or by unknown") {
   for (const int nx : {6, 70}) {
     const akvf::ElementMatrix2D K = shifted_killing(nx);
-    for (const int block_size : {1, 2}) {
-      CAPTURE(nx);
-      CAPTURE(block_size);
-      bool supernodal = false;
-      CHECK(relative_residual(K, block_size, &supernodal) <= 1e-10);
-      CHECK(supernodal == (nx == 70));  // the large grid must exercise our supernodal solve
-    }
+    for (const int block_size : {1, 2})
+      for (const bool cholmod_alone : {false, true}) {
+        CAPTURE(nx);
+        CAPTURE(block_size);
+        CAPTURE(cholmod_alone);
+        bool supernodal = false;
+        CHECK(relative_residual(K, block_size, cholmod_alone, &supernodal) <= 1e-10);
+        // Ours is always supernodal; CHOLMOD alone factors the small grid
+        // simplicially (below its supernodal switch).
+        CHECK(supernodal == (!cholmod_alone || nx == 70));
+      }
   }
 }
 
-TEST_CASE("an indefinite matrix is refused by the simplicial (L D L^T) and the supernodal factorization alike") {
-  for (const int nx : {6, 70}) {
-    CAPTURE(nx);
-    // K + 1e-3 mean(diag K) I minus a little more than that shift: its lowest
-    // eigenvalue (a rigid motion's) is about -1e-5 mean(diag K).
-    akvf::ElementMatrix2D K = shifted_killing(nx);
-    K.add_to_diagonal(-1.01e-3 * K.mean_diagonal() / 1.001);
+TEST_CASE("small supernodes are merged more than CHOLMOD's defaults, unless the factor would be too large") {
+  const akvf::ElementMatrix2D K = shifted_killing(70);
+  const auto factor_bytes = [&](bool cholmod_alone, double limit) {
     akvf::SparseCholesky cholesky;
+    cholesky.use_cholmod_alone(cholmod_alone);
+    if (limit > 0) cholesky.limit_relaxed_factor(limit);
     cholesky.analyze(K.upper(), 2);
-    CHECK_THROWS_AS(cholesky.factorize(K.upper()), akvf::NotPositiveDefinite);
-    CHECK(cholesky.supernodal() == (nx == 70));
-    if (nx == 70) {  // the two-core factorization leaves no factor to solve with
-      Eigen::VectorXd x;
-      CHECK_THROWS_AS(cholesky.solve(Eigen::VectorXd::Ones(K.upper().rows()), &x), akvf::NumericalError);
-    }
-    // A failed factorization stops both cores; the next one on the same
-    // analysis runs in full.
-    K.add_to_diagonal(1.01e-3 * K.mean_diagonal() / 1.001);
-    cholesky.factorize(K.upper());
+    REQUIRE(cholesky.supernodal());
+    cholesky.factorize(K.upper());  // and it solves
     const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), -1.0, 2.0).array().sin();
     Eigen::VectorXd x;
     cholesky.solve(b, &x);
     const Eigen::SparseMatrix<double> A = K.upper().selfadjointView<Eigen::Upper>();
-    CHECK((A * x - b).norm() <= 1e-9 * b.norm());
-  }
+    CHECK((A * x - b).norm() <= 1e-10 * b.norm());
+    return cholesky.factor_bytes();
+  };
+  const double cholmods = factor_bytes(true, 0), relaxed = factor_bytes(false, 0);
+  CHECK(relaxed > 1.1 * cholmods);  // explicit zeros for fewer, larger blocks
+  // Above the limit the analysis is redone with CHOLMOD's amalgamation.
+  CHECK(factor_bytes(false, 0.5 * (cholmods + relaxed)) == cholmods);
+  CHECK(factor_bytes(false, relaxed) == relaxed);
+}
+
+TEST_CASE("an indefinite matrix is refused by the simplicial (L D L^T) and the supernodal factorization alike") {
+  for (const int nx : {6, 70})
+    for (const bool cholmod_alone : {false, true}) {
+      CAPTURE(nx);
+      CAPTURE(cholmod_alone);
+      // K + 1e-3 mean(diag K) I minus a little more than that shift: its lowest
+      // eigenvalue (a rigid motion's) is about -1e-5 mean(diag K).
+      akvf::ElementMatrix2D K = shifted_killing(nx);
+      K.add_to_diagonal(-1.01e-3 * K.mean_diagonal() / 1.001);
+      akvf::SparseCholesky cholesky;
+      cholesky.use_cholmod_alone(cholmod_alone);
+      cholesky.analyze(K.upper(), 2);
+      CHECK_THROWS_AS(cholesky.factorize(K.upper()), akvf::NotPositiveDefinite);
+      CHECK(cholesky.supernodal() == (!cholmod_alone || nx == 70));
+      if (!cholmod_alone) {  // the two-core factorization leaves no factor to solve with
+        Eigen::VectorXd x;
+        CHECK_THROWS_AS(cholesky.solve(Eigen::VectorXd::Ones(K.upper().rows()), &x), akvf::NumericalError);
+      }
+      // A failed factorization stops both cores; the next one on the same
+      // analysis runs in full.
+      K.add_to_diagonal(1.01e-3 * K.mean_diagonal() / 1.001);
+      cholesky.factorize(K.upper());
+      const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), -1.0, 2.0).array().sin();
+      Eigen::VectorXd x;
+      cholesky.solve(b, &x);
+      const Eigen::SparseMatrix<double> A = K.upper().selfadjointView<Eigen::Upper>();
+      CHECK((A * x - b).norm() <= 1e-9 * b.norm());
+    }
 }
 
 TEST_CASE("a block size that does not divide the matrix is refused") {

@@ -100,16 +100,19 @@ akvf::ElementMatrix2D shifted_killing_operator(const Fixture& f) {
   return K;
 }
 
-// by_cholmod: CHOLMOD's own numeric factorization (one core) instead of
-// ours (solvers/supernodal_factorization.h: two cores, the same bits).
+// by_cholmod: CHOLMOD alone (its default analysis settings and its own
+// one-core numeric factorization) instead of ours (every factor supernodal,
+// small supernodes merged more, solvers/supernodal_factorization.h on two
+// cores).
 void BM_NumericFactorization(benchmark::State& state, const std::string& mesh, int subdivide, bool by_cholmod) {
   REQUIRE_FIXTURE(state, mesh, subdivide);
   const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
   akvf::SparseCholesky cholesky;
-  cholesky.use_cholmod_factorization(by_cholmod);
+  cholesky.use_cholmod_alone(by_cholmod);
   cholesky.analyze(K.upper(), 2);
   for (auto _ : state) cholesky.factorize(K.upper());
   state.counters["nnz(L)"] = cholesky.factor_nonzeros();
+  state.counters["MiB(L)"] = cholesky.factor_bytes() / (1 << 20);
   state.counters["flops"] = benchmark::Counter(cholesky.factor_flops(), benchmark::Counter::kIsIterationInvariantRate);
 }
 

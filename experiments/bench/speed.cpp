@@ -13,7 +13,9 @@
 // The unit: K (Eq. 5, area-scaled) at the initial map in 2D, K (Eq. 9-10) +
 // 1e-4 I at the rest shape in 3D, analyzed once, then the median of 5
 // numeric factorizations: ours (two cores, what the runs use), and
-// CHOLMOD's own (one core), the unit issue 14's targets were first set in.
+// CHOLMOD alone (its default analysis, simplicial below its supernodal
+// switch, its one-core factorization), the unit issue 14's targets were
+// first set in.
 // Prints a Markdown table (docs/performance.md).
 //
 // Usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim] [--repeat N] [--only 2d|3d]
@@ -55,7 +57,7 @@ struct Unit {
 template <int D>
 double factorization_seconds(const akvf::ElementMatrix<D, D + 1>& matrix, bool by_cholmod) {
   akvf::SparseCholesky cholesky;
-  cholesky.use_cholmod_factorization(by_cholmod);
+  cholesky.use_cholmod_alone(by_cholmod);
   cholesky.analyze(matrix.upper(), D);
   std::vector<double> seconds;
   for (int i = 0; i < 5; ++i) {

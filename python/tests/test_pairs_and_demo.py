@@ -36,7 +36,10 @@ def test_the_demo_bar_reaches_the_lower_bound_as_the_demo_does(program, tmp_path
     subprocess.run([program, "demo", "--out-dir", str(tmp_path), "-q"], check=True, capture_output=True)
     trace = (tmp_path / "demo_trace.csv").read_text().splitlines()
     assert r.iterations == int(trace[-1].split(",")[0])
-    assert r.energy == pytest.approx(float(trace[-1].split(",")[2]), rel=1e-12)
+    # NumPy's sin and cos differ from the C library's in the last bit at most
+    # of the vertices, so the two runs agree to the converged gradient's
+    # square (|g| < 1e-5 here), not bitwise.
+    assert r.energy == pytest.approx(float(trace[-1].split(",")[2]), rel=1e-9)
 
 
 @pytest.mark.parametrize("energy", [name for name, _ in akvf.energies()])
