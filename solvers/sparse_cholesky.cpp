@@ -118,39 +118,40 @@ class PermutedFactor {
 
 namespace {
 
-// Our analysis settings (CholmodFactor's `cholmod_defaults` false), measured
-// with `akvf_benchmarks --benchmark_filter='^(NumericFactorization|Solve)/'`
-// (docs/performance.md, "Every factor supernodal, its small supernodes
-// merged more"):
-// - Every factor is supernodal, so that SupernodalFactorization (two cores)
-//   computes it. CHOLMOD factors a matrix simplicially (L D L^T, one core)
-//   below 40 flops per factor entry, where its one-core supernodal code pays
-//   more in per-supernode overhead than it gains (hilbert_b's K, 21).
-// - Supernodes are merged with twice CHOLMOD's column limits (nrelax 8, 32,
-//   96 for its 4, 16, 48; the zero-fraction limits zrelax unchanged): fewer,
-//   larger dense blocks for explicit zeros. On the paper's meshes the
-//   factorization takes 20-35 % less time with it (hilbert_b 10.4 -> 7.3 ms,
-//   horse_b 16.1 -> 12.4 ms), at 635 K faces 12 % less (0.43 -> 0.38 s), with
-//   28-55 % more stored values; three or four times the limits were slower.
-// - At 2.5 M faces it bought nothing (factorization 4 % faster, solves 8 %
-//   slower) for 250 MiB more, and at 10 M faces the factor is most of the
-//   memory: a factor whose relaxed form would store more than kRelaxedShare
-//   of the machine's memory is analyzed again with CHOLMOD's limits.
+// Our analysis (CholmodFactor's `cholmod_defaults` false) differs from
+// CHOLMOD's where CHOLMOD would factor simplicially: below 40 flops per
+// factor entry (its supernodal switch; hilbert_b's K has 21) it computes
+// L D L^T column by column on one core, because there the supernodes are too
+// small to pay for their overhead. There we analyze again, supernodal, with
+// twice CHOLMOD's column limits for merging supernodes (nrelax 8, 32, 96
+// for its 4, 16, 48; the zero-fraction limits zrelax unchanged): fewer,
+// larger dense blocks, some explicit zeros in them, factored by
+// SupernodalFactorization on two cores. Measured with `akvf_benchmarks
+// --benchmark_filter='^(NumericFactorization|Solve)/'` (docs/performance.md,
+// "Small factors supernodal"): hilbert_b 10.4 -> 7.3 ms, cow_b 2.7 -> 1.4
+// ms; supernodal with CHOLMOD's own limits was no faster on hilbert_b (11.1
+// ms), and three or four times its limits were slower than twice.
+// Above the switch CHOLMOD's analysis is kept: the relaxed merging made
+// horse_b's factorization 23 % faster but its solves 7-15 % slower, and
+// whole runs, which make several solves per factorization (reuse), were
+// within the noise; at 2.5 M faces it bought nothing for 250 MiB more.
+// A relaxed factor that would store more than kRelaxedShare of the
+// machine's memory (a long, thin matrix's, say) is analyzed a third time,
+// with CHOLMOD's limits.
 constexpr std::size_t kRelaxedColumnLimits[3] = {8, 32, 96};
-constexpr double kRelaxedShare = 1.0 / 16;  // 1.5 GiB of this machine's 24 GiB
+constexpr double kRelaxedShare = 1.0 / 16;
 
 template <class Index>
 class CholmodFactor final : public PermutedFactor {
   using Api = Cholmod<Index>;
 
  public:
-  // cholmod_defaults: CHOLMOD's own choice of simplicial or supernodal and
-  // its own amalgamation (the unit of docs/performance.md's speed table);
-  // otherwise ours (above).
+  // cholmod_defaults: CHOLMOD's analysis as it is (the unit of
+  // docs/performance.md's speed table); otherwise ours (above).
   // relaxed_limit_bytes: the largest relaxed factor kept (0: kRelaxedShare
   // of the memory).
   CholmodFactor(bool cholmod_defaults, double relaxed_limit_bytes)
-      : relaxed_(!cholmod_defaults),
+      : ours_(!cholmod_defaults),
         relaxed_limit_bytes_(relaxed_limit_bytes > 0 ? relaxed_limit_bytes : kRelaxedShare * physical_memory_bytes()) {
     Api::start(&common_);
     common_.print = 0;  // errors are reported through exceptions, not stderr
@@ -158,9 +159,6 @@ class CholmodFactor final : public PermutedFactor {
     common_.nmethods = 1;
     common_.method[0].ordering = CHOLMOD_NATURAL;
     common_.postorder = 0;
-    if (cholmod_defaults) return;
-    common_.supernodal = CHOLMOD_SUPERNODAL;
-    std::copy(std::begin(kRelaxedColumnLimits), std::end(kRelaxedColumnLimits), common_.nrelax);
   }
   ~CholmodFactor() override {
     Api::free_factor(&factor_, &common_);
@@ -174,16 +172,17 @@ class CholmodFactor final : public PermutedFactor {
   bool analyze(const std::shared_ptr<const PermutedPattern>& pattern) override {
     set_pattern(pattern);
     cholmod_sparse B = lower(nullptr);
-    factor_ = Api::analyze(&B, &common_);
-    if (common_.status == CHOLMOD_TOO_LARGE) return false;
-    check_status(common_, "symbolic analysis of the permuted matrix");
-    if (relaxed_ && bytes() > relaxed_limit_bytes_) {
-      relaxed_ = false;
-      const cholmod_common defaults = cholmod_defaults();
-      std::copy(std::begin(defaults.nrelax), std::end(defaults.nrelax), common_.nrelax);
-      Api::free_factor(&factor_, &common_);
-      factor_ = Api::analyze(&B, &common_);
-      check_status(common_, "symbolic analysis of the permuted matrix");
+    if (!analyze_lower(&B)) return false;
+    if (ours_ && !factor_->is_super) {  // below CHOLMOD's supernodal switch
+      std::size_t cholmod_limits[3];
+      std::copy(std::begin(common_.nrelax), std::end(common_.nrelax), cholmod_limits);
+      common_.supernodal = CHOLMOD_SUPERNODAL;
+      std::copy(std::begin(kRelaxedColumnLimits), std::end(kRelaxedColumnLimits), common_.nrelax);
+      if (!analyze_lower(&B)) return false;
+      if (bytes() > relaxed_limit_bytes_) {
+        std::copy(std::begin(cholmod_limits), std::end(cholmod_limits), common_.nrelax);
+        if (!analyze_lower(&B)) return false;
+      }
     }
     nonzeros = common_.lnz;
     flops = common_.fl;
@@ -191,8 +190,7 @@ class CholmodFactor final : public PermutedFactor {
   }
 
   std::unique_ptr<PermutedFactor> copy_analysis() const override {
-    auto copy = std::make_unique<CholmodFactor<Index>>(false, relaxed_limit_bytes_);
-    copy->relaxed_ = relaxed_;
+    auto copy = std::make_unique<CholmodFactor<Index>>(!ours_, relaxed_limit_bytes_);
     copy->pattern_ = pattern_;
     copy->column_start_ = column_start_;
     copy->row_ = row_;
@@ -304,16 +302,18 @@ class CholmodFactor final : public PermutedFactor {
     return *parallel_factorization_;
   }
 
-  // CHOLMOD's default settings, as cholmod_start sets them.
-  static cholmod_common cholmod_defaults() {
-    cholmod_common defaults;
-    Api::start(&defaults);
-    Api::finish(&defaults);
-    return defaults;
+  // CHOLMOD's analysis of the permuted lower triangle B with the settings in
+  // common_ (replacing any earlier one); false if too large for Index.
+  bool analyze_lower(cholmod_sparse* B) {
+    Api::free_factor(&factor_, &common_);
+    factor_ = Api::analyze(B, &common_);
+    if (common_.status == CHOLMOD_TOO_LARGE) return false;
+    check_status(common_, "symbolic analysis of the permuted matrix");
+    return true;
   }
 
   cholmod_common common_;
-  bool relaxed_;  // analyzed with kRelaxedColumnLimits
+  bool ours_;  // our analysis settings rather than CHOLMOD's (above)
   double relaxed_limit_bytes_;
   cholmod_factor* factor_ = nullptr;
   std::shared_ptr<const PermutedPattern> pattern_;

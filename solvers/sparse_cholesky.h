@@ -1,8 +1,9 @@
 #pragma once
 // Sparse Cholesky factorization of a symmetric positive definite matrix with
-// CHOLMOD's analysis (always supernodal, small supernodes merged more than
-// its defaults: sparse_cholesky.cpp says why) and our two-core numeric
-// factorization, hidden behind a small class. The
+// CHOLMOD's analysis (supernodal, with small supernodes merged more than
+// CHOLMOD does where it would factor simplicially: sparse_cholesky.cpp says
+// why) and our two-core numeric factorization, hidden behind a small class.
+// The
 // symbolic analysis (fill-reducing ordering, elimination tree) is done once
 // for a sparsity pattern; each factorize() is numeric only (§5.2). CHOLMOD's
 // 32-bit integers serve while the factor has fewer than 2^31 entries; past
@@ -93,9 +94,10 @@ class SparseCholesky {
   // amalgamation, its own numeric factorization (the speed table's unit).
   // Set before analyze().
   void use_cholmod_alone(bool on);
-  // Tests: the largest factor (bytes) analyzed with the relaxed amalgamation;
-  // a larger one is analyzed again with CHOLMOD's (default: 1/16 of the
-  // physical memory, sparse_cholesky.cpp). Set before analyze().
+  // Tests: the largest factor (bytes) kept with our more relaxed merging of
+  // supernodes; a larger one is analyzed again with CHOLMOD's limits
+  // (default: 1/16 of the physical memory, sparse_cholesky.cpp). Set before
+  // analyze().
   void limit_relaxed_factor(double bytes);
   // Share of the supernodal factor's entries whose triangular solves run on
   // one core (the top of the elimination tree; the rest is split between two
