@@ -13,12 +13,6 @@ namespace akvf {
 
 namespace {
 
-std::string number_text(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
-
 // "NAME must be > 0, found -1"; NAME is how the caller names the option
 // ("exponent", "option --exponent", or nothing where the place is named).
 [[noreturn]] void out_of_range(const std::string& name, const std::string& rule, double found) {

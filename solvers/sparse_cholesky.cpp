@@ -128,8 +128,8 @@ namespace {
 // larger dense blocks, some explicit zeros in them, factored by
 // SupernodalFactorization on two cores. Measured with `akvf_benchmarks
 // --benchmark_filter='^(NumericFactorization|Solve)/'` (docs/performance.md,
-// "Small factors supernodal"): hilbert_b 10.4 -> 7.3 ms, cow_b 2.7 -> 1.4
-// ms; supernodal with CHOLMOD's own limits was no faster on hilbert_b (11.1
+// "Small factors supernodal"): hilbert_b 10.4 -> 7.3-7.8 ms, cow_b 2.7 ->
+// 1.4-1.7 ms; supernodal with CHOLMOD's own limits was no faster on hilbert_b (11.1
 // ms), and three or four times its limits were slower than twice.
 // Above the switch CHOLMOD's analysis is kept: the relaxed merging made
 // horse_b's factorization 23 % faster but its solves 7-15 % slower, and

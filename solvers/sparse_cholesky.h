@@ -3,9 +3,8 @@
 // CHOLMOD's analysis (supernodal, with small supernodes merged more than
 // CHOLMOD does where it would factor simplicially: sparse_cholesky.cpp says
 // why) and our two-core numeric factorization, hidden behind a small class.
-// The
-// symbolic analysis (fill-reducing ordering, elimination tree) is done once
-// for a sparsity pattern; each factorize() is numeric only (§5.2). CHOLMOD's
+// The symbolic analysis (fill-reducing ordering, elimination tree) is done
+// once for a sparsity pattern; each factorize() is numeric only (§5.2). CHOLMOD's
 // 32-bit integers serve while the factor has fewer than 2^31 entries; past
 // that (CHOLMOD reports its analysis too large for them) the analysis is
 // redone with its 64-bit interface (cholmod_l_*): the same arithmetic.

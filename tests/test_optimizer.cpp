@@ -217,6 +217,23 @@ TEST_CASE("an element inverted by rounding within the flip-free bound ends the r
   CHECK(result.trace.size() == 1);
 }
 
+TEST_CASE("a stall says after how many iterations and below which relative decrease, as a readable number") {
+  ParamConfig config;
+  config.optimizer.stall_tolerance = 1e6;  // every decrease counts as a stall
+  config.optimizer.stall_iterations = 3;
+  config.optimizer.gradient_tolerance = 0;
+  const auto setup = akvf::prepare_parameterization(akvf::test::bumpy_disk(6, 6), "test", config);
+  const akvf::BacktrackingLineSearch search;
+  akvf::AkvfPreconditioner2D akvf_preconditioner(*setup.objective);
+  const auto result = akvf::minimize(*setup.objective, akvf_preconditioner, search, setup.x0, config.optimizer);
+  CHECK(result.status == TerminationStatus::kStalled);
+  CHECK(result.message == "energy decreased by less than 1e+06 (relative) for 3 iterations");
+  CHECK(result.trace.size() == 4);
+  // The default tolerance, 1e-13, printed by std::to_string was "0.000000".
+  CHECK(akvf::number_text(1e-13) == "1e-13");
+  CHECK(akvf::number_text(0.001) == "0.001");
+}
+
 TEST_CASE("the distortion objective names the first bad element of an iterate") {
   ParamConfig config;
   const auto setup = akvf::prepare_parameterization(akvf::test::bumpy_disk(6, 6), "test", config);

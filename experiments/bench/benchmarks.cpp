@@ -278,9 +278,10 @@ void register_all() {
                                  eigensolver)
         ->Unit(benchmark::kMillisecond);
   }
-  // The paper's meshes whose K CHOLMOD factors simplicially (L D L^T on one
-  // core, below its supernodal switch): the factorization and solve there
-  // (docs/performance.md, "The small meshes' factorizations could be ours too").
+  // The paper's meshes whose K CHOLMOD alone would factor simplicially (L D
+  // L^T on one core, below its supernodal switch), which SparseCholesky
+  // analyzes again as supernodal with more merging: the factorization and
+  // solve there (docs/performance.md, "Small factors supernodal").
   for (const std::string mesh : {"hilbert_b.obj", "camel_b.obj", "cow_b.obj", "tricera_b.obj"}) {
     benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh, 0, false)
         ->Unit(benchmark::kMillisecond);

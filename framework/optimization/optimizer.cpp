@@ -204,7 +204,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
                              : 0;
     if (stalled_iterations >= options.stall_iterations)
       return finish(TerminationStatus::kStalled, "energy decreased by less than " +
-                                                     std::to_string(options.stall_tolerance) + " (relative) for " +
+                                                     number_text(options.stall_tolerance) + " (relative) for " +
                                                      std::to_string(options.stall_iterations) + " iterations");
   }
 }

@@ -1,5 +1,7 @@
 #include "framework/process/error.h"
 
+#include <sstream>
+
 namespace akvf {
 
 namespace {
@@ -11,5 +13,11 @@ std::string locate(const std::string& file, long line, const std::string& proble
 
 InputError::InputError(const std::string& file, long line, const std::string& problem)
     : Error(locate(file, line, problem)) {}
+
+std::string number_text(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
 
 }  // namespace akvf

@@ -46,4 +46,8 @@ class OutputError : public Error {
   using Error::Error;
 };
 
+// A number as messages print it: six significant digits, exponent where
+// needed ("0.001", "1e-13"; std::to_string would print "0.000000").
+std::string number_text(double value);
+
 }  // namespace akvf
