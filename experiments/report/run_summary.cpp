@@ -8,11 +8,8 @@
 #include <thread>
 
 #include "framework/process/output_file.h"
+#include "git_version.h"  // AKVF_VERSION: `git describe` at build time (experiments/CMakeLists.txt)
 #include "solvers/sparse_cholesky.h"
-
-#ifndef AKVF_VERSION
-#define AKVF_VERSION "unknown"
-#endif
 
 namespace akvf {
 
