@@ -173,9 +173,13 @@ template <int D>
 void FactoredPreconditioner<D>::analyze() {
   if (cholesky_.analyzed()) return;
   const BlockOrdering* order = options_.vertex_ordering.get();
-  const bool computed = options_.analysis_cache ? options_.analysis_cache->analyze(matrix_.upper(), D, &cholesky_, order)
-                                                : (cholesky_.analyze(matrix_.upper(), D, order), true);
-  if (computed) ++statistics_.symbolic_analyses;
+  if (options_.analysis_cache) {
+    // The cache says whether it computed the analysis or copied a kept one.
+    if (options_.analysis_cache->analyze(matrix_.upper(), D, &cholesky_, order)) ++statistics_.symbolic_analyses;
+    return;
+  }
+  cholesky_.analyze(matrix_.upper(), D, order);
+  ++statistics_.symbolic_analyses;
 }
 
 template <int D>
