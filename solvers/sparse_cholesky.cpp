@@ -104,7 +104,7 @@ class PermutedFactor {
   virtual std::unique_ptr<PermutedFactor> copy_analysis() const = 0;
   // upper_values: the upper input's nonzeros (PermutedPattern::source
   // maps them to the lower triangle). A supernodal factor is computed by
-  // SupernodalFactorization (two cores, CHOLMOD's bits) unless `by_cholmod`.
+  // SupernodalFactorization (two cores) unless `by_cholmod`.
   virtual void factorize(const double* upper_values, bool by_cholmod) = 0;
   // z = (L L^T)^-1 z in the permuted numbering.
   virtual void solve(double* z) = 0;

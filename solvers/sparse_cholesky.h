@@ -86,7 +86,7 @@ class SparseCholesky {
   void always_try_metis(bool on);
   // Tests and benchmarks: supernodal factors by CHOLMOD's own numeric
   // factorization (one core) instead of SupernodalFactorization (two cores,
-  // the same bits; solvers/supernodal_factorization.h).
+  // the same factor to rounding; solvers/supernodal_factorization.h).
   void use_cholmod_factorization(bool on);
   // Benchmarks: CHOLMOD alone, as it factors with its default settings:
   // simplicial L D L^T (one core) below its supernodal switch, its own

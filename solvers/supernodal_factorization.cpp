@@ -9,20 +9,8 @@
 #include <string>
 #include <utility>
 
+#include "solvers/dense_block_kernels.h"
 #include "solvers/sparse_cholesky.h"
-
-// BLAS and LAPACK (Fortran interface, 32-bit integers: Debian's OpenBLAS and
-// reference BLAS, the ones CHOLMOD calls).
-extern "C" {
-void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
-            const int* lda, const double* beta, double* c, const int* ldc);
-void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k, const double* alpha,
-            const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
-            const int* ldc);
-void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
-            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
-void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
-}
 
 namespace akvf {
 
@@ -116,13 +104,9 @@ void SupernodalFactorization<Index>::apply_update(const Descendant& d, int s, Wo
   if (w->update.size() < static_cast<std::size_t>(m) * columns) w->update.resize(static_cast<std::size_t>(m) * columns);
   double* C = w->update.data();
 
-  // C = L_d(rows, :) L_d(rows inside s, :)^T, lower part: dsyrk on the rows
-  // inside s, dgemm below them (CHOLMOD's calls, with its arguments).
+  // C = L_d(rows, :) L_d(rows inside s, :)^T, lower part.
   const double* Ld = values + s_.value_start[d.node] + (d.first - s_.pattern_start[d.node]);
-  const int ld = db.rows, k = db.columns, below = m - columns;
-  const double one = 1, zero = 0;
-  dsyrk_("L", "N", &columns, &k, &one, Ld, &ld, &zero, C, &m);
-  if (below > 0) dgemm_("N", "T", &below, &columns, &k, &one, Ld + columns, &ld, Ld, &ld, &zero, C + columns, &m);
+  block_update(m, columns, db.columns, Ld, db.rows, C);
 
   double* block = values + s_.value_start[s];
   for (int j = 0; j < columns; ++j) {
@@ -133,24 +117,12 @@ void SupernodalFactorization<Index>::apply_update(const Descendant& d, int s, Wo
 }
 
 template <class Index>
-void SupernodalFactorization<Index>::factor_diagonal(int s, double* values) const {
+void SupernodalFactorization<Index>::factor_block(int s, double* values) const {
   const BlockShape b = block_shape(s_, s);
-  int info = 0;
-  dpotrf_("L", &b.columns, values + s_.value_start[s], &b.rows, &info);
-  if (info > 0)
+  const int bad = block_cholesky(b.rows, b.columns, values + s_.value_start[s]);
+  if (bad >= 0)
     throw NotPositiveDefinite("matrix is not positive definite (non-positive pivot at column " +
-                              std::to_string(b.first_column + info - 1) + ")");
-  if (info < 0) throw NumericalError("dpotrf rejected argument " + std::to_string(-info));
-}
-
-template <class Index>
-void SupernodalFactorization<Index>::solve_below(int s, double* values) const {
-  const BlockShape b = block_shape(s_, s);
-  const int below = b.rows - b.columns;
-  if (below <= 0) return;
-  const double one = 1;
-  double* block = values + s_.value_start[s];
-  dtrsm_("R", "L", "T", "N", &below, &b.columns, &one, block, &b.rows, block + b.columns, &b.rows);
+                              std::to_string(b.first_column + bad) + ")");
 }
 
 template <class Index>
@@ -171,8 +143,7 @@ void SupernodalFactorization<Index>::factor_supernode(int s, int worker, const L
   for (const Descendant& d : w.descendants) apply_update(d, s, &w, values);
   advance(s, worker);
   const Key key{s, static_cast<int>(w.descendants.size())};  // s links after its descendants
-  factor_diagonal(s, values);
-  solve_below(s, values);
+  factor_block(s, values);
   link(s, first_row + b.columns, worker, key);
 }
 

@@ -6,11 +6,12 @@
 // and Rajamanickam 2008, as in cholmod_super_numeric): for each supernode s
 // in order, its block is set to A's columns, every earlier supernode d whose
 // rows reach s's columns subtracts its update L_d(rows >= s, :) L_d(rows in
-// s, :)^T (BLAS dsyrk and dgemm into a buffer, scattered into s's block),
-// then the diagonal block is factored (LAPACK dpotrf) and the rows below it
-// solved (BLAS dtrsm). CHOLMOD 3 runs that loop on one core; on this 2-core
-// machine its factorization of a large mesh's K used one core
-// (docs/performance.md). Here the same calls run on two:
+// s, :)^T (into a buffer, scattered into s's block), then the diagonal
+// block is factored and the rows below it solved (dense_block_kernels.h:
+// CHOLMOD's BLAS and LAPACK calls, dsyrk, dgemm, dpotrf and dtrsm, for large
+// blocks, plain loops for small ones). CHOLMOD 3 runs that loop on one core;
+// on this 2-core machine its factorization of a large mesh's K used one core
+// (docs/performance.md). Here the same loop runs on two:
 //  - below a cut of the elimination tree, two groups of disjoint subtrees
 //    (supernodal_tree.h) are factored at the same time, one per core; a
 //    subtree's supernodes update only each other and the top;
@@ -19,12 +20,14 @@
 // A supernode needs only its descendants, all finished before it starts.
 // Each supernode's updates are applied in CHOLMOD's order (the last linked
 // first: every link is keyed by when CHOLMOD's one loop would have made it),
-// with CHOLMOD's BLAS calls and arguments, so the factor has CHOLMOD's bits
-// whatever the number of threads and their timing (tests/test_sparse_cholesky.cpp
-// compares them). Splitting one supernode's work between the cores (an
-// update's rows, or the rows of its triangular solve) changes the shapes of
-// the BLAS calls, and with them OpenBLAS's kernels and the rounding; it was
-// measured and left out (docs/performance.md).
+// and each block operation's arithmetic depends on its shape only, so the
+// factor has the same bits whatever the number of threads and their timing
+// (tests/test_sparse_cholesky.cpp). Until 2026-11-25 every block went to
+// BLAS and the factor had CHOLMOD's bits; the small blocks' loops round
+// differently (tested against CHOLMOD's factor to 1e-12). Splitting one
+// supernode's work between the cores (an update's rows, or the rows of its
+// triangular solve) changed the shapes of the BLAS calls and gained nothing
+// the branch concurrency did not: measured and left out (docs/performance.md).
 #include <atomic>
 #include <vector>
 
@@ -92,9 +95,8 @@ class SupernodalFactorization {
   // s's descendants from both workers' lists, in CHOLMOD's order.
   void collect(int s, int worker);
   void apply_update(const Descendant& d, int s, Workspace* w, double* values) const;
-  void factor_diagonal(int s, double* values) const;
-  // The rows of s below its diagonal block: L21 = A21 L11^-T.
-  void solve_below(int s, double* values) const;
+  // s's diagonal block into L11 L11^T, the rows below into L21 = A21 L11^-T.
+  void factor_block(int s, double* values) const;
   // After s's descendants were applied: each is linked to the supernode it updates next.
   void advance(int s, int worker);
   void link(int d, Index position, int worker, Key key);

@@ -26,6 +26,7 @@
 #include "preconditioners/akvf_preconditioner_2d.h"
 #include "solvers/algebraic_multigrid.h"
 #include "solvers/backtracking_line_search.h"
+#include "solvers/dense_block_kernels.h"
 #include "solvers/sparse_cholesky.h"
 
 namespace {
@@ -268,7 +269,48 @@ void BM_ProjectedHessian3D(benchmark::State& state, bool eigensolver) {
   }
 }
 
+// One supernode's dense operations (solvers/dense_block_kernels.h) on a
+// block of c columns and 2c rows: the update by an earlier supernode of c
+// columns, and the block's Cholesky factorization; as loops or as BLAS
+// calls, on one thread or on two at once (the factorization's two cores,
+// which meet at OpenBLAS's buffer pool): where the loops stop being faster
+// on two threads sets kLoopUpdateFlops and kLoopCholeskyFlops.
+void BM_DenseBlock(benchmark::State& state, bool cholesky, bool loops) {
+  const int c = static_cast<int>(state.range(0)), rows = 2 * c;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> entry(-1, 1);
+  Eigen::MatrixXd L = Eigen::MatrixXd::NullaryExpr(rows, c, [&](Eigen::Index, Eigen::Index) { return entry(rng); });
+  Eigen::MatrixXd spd = L.transpose() * L + c * Eigen::MatrixXd::Identity(c, c);
+  Eigen::MatrixXd block(rows, c);
+  block.topRows(c) = spd;
+  block.bottomRows(c) = L.topRows(c);
+  Eigen::MatrixXd work(rows, c);
+  for (auto _ : state) {
+    if (cholesky) {
+      work = block;
+      benchmark::DoNotOptimize(loops ? akvf::loop_cholesky(rows, c, work.data())
+                                     : akvf::blas_cholesky(rows, c, work.data()));
+    } else if (loops) {
+      akvf::loop_update(rows, c, c, L.data(), rows, work.data());
+    } else {
+      akvf::blas_update(rows, c, c, L.data(), rows, work.data());
+    }
+    benchmark::ClobberMemory();
+  }
+  state.counters["flops"] = cholesky ? akvf::cholesky_flops(rows, c) : akvf::update_flops(rows, c, c);
+}
+
 void register_all() {
+  for (const bool cholesky : {false, true})
+    for (const bool loops : {true, false})
+      for (const int threads : {1, 2})
+        benchmark::RegisterBenchmark(("DenseBlock/" + std::string(cholesky ? "cholesky/" : "update/") +
+                                      (loops ? "loops" : "blas"))
+                                         .c_str(),
+                                     BM_DenseBlock, cholesky, loops)
+            ->DenseRange(4, 40, 4)
+            ->Threads(threads)
+            ->Unit(benchmark::kMicrosecond);
   for (const bool eigensolver : {false, true}) {
     const std::string how = eigensolver ? "eigensolver" : "closed-form";
     benchmark::RegisterBenchmark(("ProjectedHessian3D/symmetric-dirichlet/" + how).c_str(),

@@ -17,8 +17,10 @@ def test_a_user_energy_from_cpp_is_listed_and_runs_with_every_preconditioner(ext
     for precond, _ in akvf.preconditioners():
         r = akvf.parameterize(V, F, energy="area-symmetric-dirichlet", precond=precond, max_iters=5000)
         assert (signed_areas(r.uv, F) > 0).all() and (r.trace["flips"] == 0).all(), precond
-        # SLIM's proxy fits this energy poorly: it crawls to the same minimum and stalls there.
-        assert r.status == "converged" or (precond == "slim" and r.status == "stalled"), precond
+        # SLIM's proxy fits this energy poorly: it crawls to the same minimum
+        # and stops there, stalled or with a failed line search (steps of
+        # 1e-11 of its direction) depending on the last bits of the factor.
+        assert r.status == "converged" or (precond == "slim" and r.status in ("stalled", "line-search-failed")), precond
         energies.append(r.energy)
     assert max(energies) - min(energies) < 1e-5
     assert min(energies) >= 4
