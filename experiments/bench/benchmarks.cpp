@@ -322,12 +322,14 @@ void register_all() {
   }
   // The paper's meshes whose K CHOLMOD alone would factor simplicially (L D
   // L^T on one core, below its supernodal switch), which SparseCholesky
-  // analyzes again as supernodal with more merging: the factorization and
-  // solve there (docs/performance.md, "Small factors supernodal").
+  // analyzes again as supernodal with more merging: the factorization,
+  // solve and analysis there (docs/performance.md, "Small factors supernodal").
   for (const std::string mesh : {"hilbert_b.obj", "camel_b.obj", "cow_b.obj", "tricera_b.obj"}) {
     benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh, 0, false)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh, 0)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("SymbolicAnalysis/" + mesh).c_str(), BM_SymbolicAnalysis, mesh, 0)
+        ->Unit(benchmark::kMillisecond);
   }
   for (const std::string mesh : {"camelhead.off", "horse_b.obj"}) {
     benchmark::RegisterBenchmark(("KillingAssembly/" + mesh).c_str(), BM_KillingAssembly, mesh)
