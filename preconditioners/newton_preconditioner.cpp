@@ -102,9 +102,11 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
   } else if (filter_ == EigenvalueFilter::kExact) {
     // The last exact Hessian served (no fallback since): try it at once next time.
     if (last_filter_ == EigenvalueFilter::kExact) exact_backoff_ = 1;
-    // Only a factorization tells whether the exact Hessian is positive definite.
-    last_filter_ =
-        exact_wait_ > 0 || !this->solves_by_factorization() ? EigenvalueFilter::kClamp : EigenvalueFilter::kExact;
+    // Only a factorization tells whether the exact Hessian is positive
+    // definite; it is tried where Newton's model held (module comment).
+    const bool model_held = state.previous_step == 0 || (state.previous_step == 1 && !state.previous_backtracked);
+    last_filter_ = exact_wait_ > 0 || !model_held || !this->solves_by_factorization() ? EigenvalueFilter::kClamp
+                                                                                      : EigenvalueFilter::kExact;
     if (exact_wait_ > 0) --exact_wait_;
   } else {
     last_filter_ = filter_;

@@ -42,7 +42,15 @@ bool SwitchingPreconditioner::leave_first(const OptimizationState& state) {
   const double gap_ratio = (state.energy - rule_.energy_lower_bound) / (previous_energy_ - rule_.energy_lower_bound);
   const bool stalled = step > 0 && !curvature_limited && barrier_limited && gap_ratio > rule_.stall_ratio;
   stalled_steps_ = stalled ? stalled_steps_ + 1 : 0;
-  return limited_steps_ >= patience_ || stalled_steps_ >= patience_;
+  // The first trial, short of the model's minimizer, accepted at once.
+  const bool bound_set = step > 0 && step < rule_.isometric_step && !state.previous_backtracked && !curvature_limited;
+  return limited_steps_ >= patience_ || stalled_steps_ >= patience_ || (bound_set && constraints_far(state));
+}
+
+bool SwitchingPreconditioner::constraints_far(const OptimizationState& state) const {
+  if (!rule_.distortion_energy) return false;
+  const double added = state.energy - rule_.distortion_energy(state.x);
+  return added > rule_.added_share * (state.energy - rule_.energy_lower_bound);
 }
 
 bool SwitchingPreconditioner::leave_second(const OptimizationState& state) {

@@ -599,3 +599,34 @@ TEST_CASE(
   CHECK(switches_after(144, {stalled_1, stalled_2, bound(50, 0.7), bound(45, 0.14), bound(44, 0.028)}) ==
         std::vector<int>{3, 6});
 }
+
+// switching_preconditioner.h: with soft constraints, a bound-set step after
+// which the constraints still carry more than half of E - E_lb switches at
+// once; once they are met, or when the curvature set the step, it does not.
+TEST_CASE("akvf-newton switches at once after a bound-set step that left the soft constraints far") {
+  akvf::SwitchRule rule;
+  rule.isometric_step = 1;  // 3D AKVF's secant scale
+  rule.energy_lower_bound = 6;
+  double distortion = 6.37;  // the SLIM cube after its first step
+  rule.distortion_energy = [&](const Eigen::VectorXd&) { return distortion; };
+  auto switches_after = [&](double energy, double step, double max_step, bool backtracked) {
+    akvf::SwitchingPreconditioner p(
+        "test", std::make_unique<akvf::IdentityPreconditioner>(),
+        [](akvf::Preconditioner&) { return std::make_unique<akvf::IdentityPreconditioner>(); }, rule);
+    const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
+    p.update({x, g, 336927, 1});
+    p.update({x, g, energy, 2, step, max_step, backtracked});
+    return p.switches();
+  };
+  // The first step 0.8 of its bound 1.03, the constraints 99.9 % of E - E_lb.
+  CHECK(switches_after(10408.7, 0.824, 1.03, false) == std::vector<int>{2});
+  // The same share after a unit step, or a step the line search shortened.
+  CHECK(switches_after(10408.7, 1, 2.85, false).empty());
+  CHECK(switches_after(10408.7, 0.4, 1.03, true).empty());
+  // A lifted mesh: its first step met the constraints.
+  distortion = 6.0476;
+  CHECK(switches_after(6.0476001, 0.824, 1.03, false).empty());
+  // Without added terms the rule is off.
+  rule.distortion_energy = nullptr;
+  CHECK(switches_after(10408.7, 0.824, 1.03, false).empty());
+}

@@ -182,7 +182,10 @@ void run_3d(const std::filesystem::path& data, const std::vector<std::string>& m
   };
   const std::vector<Case> cases = {{"cube_4k.obj", "cube_4k (slim-cube)", true},
                                    {"octopus-low.mesh", "octopus-low (lifted)", false},
-                                   {"bar.tet", "bar (lifted)", false}};
+                                   {"bar.tet", "bar (lifted)", false},
+                                   {"cube_40k.obj", "cube_40k (slim-cube)", true},
+                                   {"cube_4k.obj", "cube_4k (lifted)", false},
+                                   {"cube_40k.obj", "cube_40k (lifted)", false}};
   std::cout << "\n| tet mesh | tets | unit (ms) | CHOLMOD unit (ms) | method | iterations to 1e-4 | seconds | units | "
                "CHOLMOD units | / best | status | energy |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Case& c : cases) {
