@@ -27,6 +27,23 @@ struct Run {
   int inverted_iterates = 0;
 };
 
+// The vertices in the lowest and highest `band` of the height (by z): the
+// low ones pinned where they are, the high ones lifted by a tenth of it.
+akvf::PositionConstraints lifted_by_a_tenth(const akvf::TetMesh& mesh, double band) {
+  const double lo = mesh.V.col(2).minCoeff(), hi = mesh.V.col(2).maxCoeff();
+  akvf::PositionConstraints constraints;
+  std::vector<Eigen::RowVector3d> targets;
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const double z = (mesh.V(v, 2) - lo) / (hi - lo);
+    if (z > band && z < 1 - band) continue;
+    constraints.vertices.push_back(v);
+    targets.push_back(mesh.V.row(v) + Eigen::RowVector3d(0, 0, z >= 1 - band ? 0.1 * (hi - lo) : 0));
+  }
+  constraints.targets.resize(static_cast<int>(targets.size()), 3);
+  for (std::size_t i = 0; i < targets.size(); ++i) constraints.targets.row(static_cast<int>(i)) = targets[i];
+  return constraints;
+}
+
 Run parameterize(const std::string& path, int max_iterations, bool cut = false) {
   akvf::ParamConfig config;
   config.optimizer.max_iterations = max_iterations;
@@ -169,28 +186,20 @@ TEST_CASE("every 3D method deforms every shared tet mesh without inverting a tet
     const std::string path = dir + "/tet/" + name;
     const akvf::TetMesh mesh = akvf::read_tet_mesh(path);
     // Pin the lowest 10 % of the vertices (by z) and lift the highest 10 % by a tenth of the height.
-    const double lo = mesh.V.col(2).minCoeff(), hi = mesh.V.col(2).maxCoeff();
-    akvf::PositionConstraints constraints;
-    std::vector<Eigen::RowVector3d> targets;
-    for (int v = 0; v < mesh.num_vertices(); ++v) {
-      const double z = (mesh.V(v, 2) - lo) / (hi - lo);
-      if (z > 0.1 && z < 0.9) continue;
-      constraints.vertices.push_back(v);
-      targets.push_back(mesh.V.row(v) + Eigen::RowVector3d(0, 0, z >= 0.9 ? 0.1 * (hi - lo) : 0));
-    }
+    akvf::PositionConstraints constraints = lifted_by_a_tenth(mesh, 0.1);
+    const Eigen::MatrixXd targets = constraints.targets;
     // Through a constraints file, as a user would give them.
     const std::string file = (std::filesystem::temp_directory_path() / "akvf_real_mesh_constraints.txt").string();
     {
       std::ofstream out(file);
       out.precision(17);
       out << "# vertex x y z\n";
-      for (std::size_t c = 0; c < targets.size(); ++c)
-        out << constraints.vertices[c] << ' ' << targets[c].x() << ' ' << targets[c].y() << ' ' << targets[c].z()
-            << '\n';
+      for (int c = 0; c < targets.rows(); ++c)
+        out << constraints.vertices[c] << ' ' << targets(c, 0) << ' ' << targets(c, 1) << ' ' << targets(c, 2) << '\n';
     }
     constraints = akvf::read_constraints_file(file, mesh.num_vertices());
     std::filesystem::remove(file);
-    REQUIRE(constraints.vertices.size() == targets.size());
+    REQUIRE(static_cast<Eigen::Index>(constraints.vertices.size()) == targets.rows());
     for (const auto& entry : akvf::preconditioners_3d().entries()) {
       const std::string& method = entry.first;  // clang 14 cannot capture a structured binding
       CAPTURE(method);
@@ -238,18 +247,7 @@ TEST_CASE("the default deforms the SLIM cube with Newton from iteration 2, and n
   for (const auto& row : standard.result.trace) CHECK(row.flips == 0);
 
   // Lifted by a tenth of its height: the first step meets the constraints.
-  akvf::PositionConstraints lifted;
-  const double lo = mesh.V.col(2).minCoeff(), hi = mesh.V.col(2).maxCoeff();
-  std::vector<Eigen::RowVector3d> targets;
-  for (int v = 0; v < mesh.num_vertices(); ++v) {
-    const double z = (mesh.V(v, 2) - lo) / (hi - lo);
-    if (z > 0.05 && z < 0.95) continue;
-    lifted.vertices.push_back(v);
-    targets.push_back(mesh.V.row(v) + Eigen::RowVector3d(0, 0, z >= 0.95 ? 0.1 * (hi - lo) : 0));
-  }
-  lifted.targets.resize(static_cast<int>(targets.size()), 3);
-  for (std::size_t i = 0; i < targets.size(); ++i) lifted.targets.row(static_cast<int>(i)) = targets[i];
-  const auto lifted_run = akvf::run_deformation(mesh, path, lifted, akvf::DeformConfig{});
+  const auto lifted_run = akvf::run_deformation(mesh, path, lifted_by_a_tenth(mesh, 0.05), akvf::DeformConfig{});
   CHECK(akvf::is_normal_termination(lifted_run.result.status));
   CHECK(lifted_run.preconditioner_report.find("no switch") != std::string::npos);
 }
