@@ -40,7 +40,8 @@ SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const Precondition
   rule.isometric_step =
       settings.akvf.secant_scaling ? 1.0 : isometric_newton_step(objective.density(), objective.rest().total_volume);
   rule.energy_lower_bound = objective.lower_bound();
-  // Soft constraints: the run's energy is the objective's value plus theirs.
+  // Soft constraints: the run's energy is the objective's value plus theirs
+  // (hard ones pin with the same diagonal but add no energy: share 0).
   if (objective.added_hessian_diagonal().size() != 0)
     rule.distortion_energy = [&objective](const Eigen::VectorXd& x) { return objective.value(x); };
   return rule;

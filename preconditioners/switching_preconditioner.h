@@ -73,10 +73,10 @@
 // and the Killing operator, a measure of the motion's distance from a rigid
 // one, does not. The switch is then made at once. Measured on the SLIM cube
 // (twisted, 4.4 K and 48 K tets): after that first step the constraints
-// carried 99.9 % of E - E_lb and AKVF's next step was held at 0.12 (0.14)
+// carried more than 99.99 % of E - E_lb and AKVF's next step was held at 0.12 (0.14)
 // of its direction, lowering E by 19 % (25 %), where Newton's unit step
 // lowered it to 6.31 (6.24) from 10409 (272141); the lifted meshes, whose
-// first step meets the constraints (their share falls to 1e-8), keep AKVF
+// first step meets the constraints (their share falls below 2e-6), keep AKVF
 // (docs/design.md, "The default method").
 //
 // Back to the first: Newton's quadratic model has its minimizer at the unit
