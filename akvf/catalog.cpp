@@ -135,8 +135,8 @@ PreconditionerRegistry3D& mutable_preconditioners_3d() {
           });
     r.add("akvf-newton",
           "AKVF while the flip-free bound sets the step, then Newton (the exact Hessian while it is positive "
-          "definite, else projected) once the curvature does or AKVF's bound-held steps stall, and AKVF again if "
-          "Newton's steps close in on a "
+          "definite, else projected) once the curvature does, AKVF's bound-held steps stall or a bound-held step "
+          "leaves the soft constraints far, and AKVF again if Newton's steps close in on a "
           "collapse (preconditioners/switching_preconditioner.h)",
           [](const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
             return akvf_then_newton<3, AkvfPreconditioner3D>(objective, settings);
