@@ -66,17 +66,21 @@ std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objecti
   };
   return std::make_unique<SwitchingPreconditioner>(
       "akvf-newton", std::make_unique<Akvf>(objective, akvf_options),
-      [&objective, newton, filter, factored](Preconditioner& current) {
+      [&objective, newton, filter, factored](Preconditioner& current, SwitchReason why) {
         FactoredPreconditioner<D>& akvf = factored(current);
         // AKVF is released right after: Newton takes its matrix's storage
         // (no copy: 0.9 GB at 10 M triangles) and its factorization.
         auto second = std::make_unique<NewtonPreconditioner<D>>(objective, akvf.hand_over_matrix(), newton,
                                                                 default_newton_projection(D), filter);
         second->take_over_factorization(akvf);
+        // The last step went 0.8 of the way to a collapse with the
+        // constraints still far: the elements it compressed leave the
+        // Hessian far from positive definite (switching_preconditioner.h).
+        if (why == SwitchReason::kConstraintsFar) second->start_fallback_at_clamp();
         return std::unique_ptr<Preconditioner>(std::move(second));
       },
       akvf_switch_rule(objective, settings),
-      [&objective, akvf_options, factored](Preconditioner& current) {
+      [&objective, akvf_options, factored](Preconditioner& current, SwitchReason) {
         auto first = std::make_unique<Akvf>(objective, akvf_options);
         first->take_over_factorization(factored(current));
         return std::unique_ptr<Preconditioner>(std::move(first));

@@ -105,6 +105,11 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   bool last_partly_filtered() const { return partial_; }
   double negative_share() const { return negative_share_; }
   int partial_fallbacks() const { return partial_fallbacks_; }
+  // kExact: the next fallback is the clamp (mu = 1), relaxed to 1/4 and
+  // 1/16 as fallbacks factor at their first try; where the exact Hessian is
+  // known to be far from positive definite (akvf-newton's switch with the
+  // constraints still far: switching_preconditioner.h).
+  void start_fallback_at_clamp() { negative_share_ = 1; }
   std::string report() const override;
 
   static constexpr double adaptive_tolerance = 0.01;

@@ -26,7 +26,7 @@ SwitchingPreconditioner::SwitchingPreconditioner(std::string name, std::unique_p
       rule_(rule),
       patience_(rule.patience) {}
 
-bool SwitchingPreconditioner::leave_first(const OptimizationState& state) {
+std::optional<SwitchReason> SwitchingPreconditioner::leave_first(const OptimizationState& state) {
   const double step = state.previous_step;
   const bool curvature_limited = step > 0 && step < rule_.bound_share * state.previous_max_step;
   const bool newton_like =
@@ -44,7 +44,10 @@ bool SwitchingPreconditioner::leave_first(const OptimizationState& state) {
   stalled_steps_ = stalled ? stalled_steps_ + 1 : 0;
   // The first trial, short of the model's minimizer, accepted at once.
   const bool bound_set = step > 0 && step < rule_.isometric_step && !state.previous_backtracked && !curvature_limited;
-  return limited_steps_ >= patience_ || stalled_steps_ >= patience_ || (bound_set && constraints_far(state));
+  if (limited_steps_ >= patience_) return SwitchReason::kCurvatureSet;
+  if (stalled_steps_ >= patience_) return SwitchReason::kStalled;
+  if (bound_set && constraints_far(state)) return SwitchReason::kConstraintsFar;
+  return std::nullopt;
 }
 
 bool SwitchingPreconditioner::constraints_far(const OptimizationState& state) const {
@@ -69,8 +72,8 @@ std::string SwitchingPreconditioner::current_report() const {
   return since + current_->name() + ": " + current_->report();
 }
 
-void SwitchingPreconditioner::switch_to(const Factory& make, int iteration) {
-  std::unique_ptr<Preconditioner> next = make(*current_);
+void SwitchingPreconditioner::switch_to(const Factory& make, SwitchReason why, int iteration) {
+  std::unique_ptr<Preconditioner> next = make(*current_, why);
   released_reports_ += (released_reports_.empty() ? "" : "; ") + current_report();
   add_statistics(current_->statistics(), &released_statistics_);
   current_ = std::move(next);
@@ -81,10 +84,10 @@ void SwitchingPreconditioner::switch_to(const Factory& make, int iteration) {
 
 void SwitchingPreconditioner::update(const OptimizationState& state) {
   // The last step is the phase in use's: a switch takes effect at once.
-  if (!in_second() && leave_first(state)) {
-    switch_to(make_second_, state.iteration);
-  } else if (in_second() && make_first_again_ && leave_second(state)) {
-    switch_to(make_first_again_, state.iteration);
+  if (!in_second()) {
+    if (const std::optional<SwitchReason> why = leave_first(state)) switch_to(make_second_, *why, state.iteration);
+  } else if (make_first_again_ && leave_second(state)) {
+    switch_to(make_first_again_, SwitchReason::kClosingIn, state.iteration);
     patience_ *= 2;
   }
   previous_energy_ = state.energy;

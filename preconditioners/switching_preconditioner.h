@@ -106,6 +106,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -137,12 +138,17 @@ struct SwitchRule {
   double added_share = 0.5;
 };
 
+// Why the run left the phase in use (module comment): AKVF's steps set by
+// the curvature, AKVF stalling under the bound, the constraints still far;
+// Newton's steps closing in on a collapse.
+enum class SwitchReason { kCurvatureSet, kStalled, kConstraintsFar, kClosingIn };
+
 class SwitchingPreconditioner final : public Preconditioner {
  public:
   // Builds a preconditioner when a switch happens (its setup costs nothing
-  // before), from the one in use, whose factorization it may take over;
-  // the one in use is released right after.
-  using Factory = std::function<std::unique_ptr<Preconditioner>(Preconditioner& current)>;
+  // before), from the one in use, whose factorization it may take over, and
+  // told why; the one in use is released right after.
+  using Factory = std::function<std::unique_ptr<Preconditioner>(Preconditioner& current, SwitchReason why)>;
   // Without `first_again` the switch to `second` is never undone.
   SwitchingPreconditioner(std::string name, std::unique_ptr<Preconditioner> first, Factory second, SwitchRule rule = {},
                           Factory first_again = nullptr);
@@ -160,12 +166,13 @@ class SwitchingPreconditioner final : public Preconditioner {
   bool in_second() const { return switches_.size() % 2 == 1; }
 
  private:
-  // Counts the last step toward leaving the phase in use; true to leave.
-  bool leave_first(const OptimizationState& state);
+  // Counts the last step toward leaving the phase in use; the reason to
+  // leave, or none.
+  std::optional<SwitchReason> leave_first(const OptimizationState& state);
   // The problem's added terms (soft constraints) carry most of E - E_lb.
   bool constraints_far(const OptimizationState& state) const;
   bool leave_second(const OptimizationState& state);
-  void switch_to(const Factory& make, int iteration);
+  void switch_to(const Factory& make, SwitchReason why, int iteration);
   std::string current_report() const;  // "[from iteration k ]name: report" of the one in use
 
   std::string name_;

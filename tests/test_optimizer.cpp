@@ -335,7 +335,8 @@ TEST_CASE("runs are bitwise deterministic for 1 and 2 threads") {
   for (const auto& x : results) CHECK(x == results.front());
 }
 
-TEST_CASE("from 100 K vertices the setup orders the vertex graph once, and the run with it has the iterates of its own") {
+TEST_CASE(
+    "from 100 K vertices the setup orders the vertex graph once, and the run with it has the iterates of its own") {
   ParamConfig config;
   config.optimizer.max_iterations = 2;
   CHECK_FALSE(akvf::prepare_parameterization(akvf::test::grid_disk(20, 20, 0.2, 3), "small", config).vertex_ordering);
@@ -472,9 +473,11 @@ TEST_CASE("akvf-newton switches after two curvature-set steps that do not show A
     bool backtracked;
   };
   auto switch_after = [&](const std::vector<Step>& steps) {
-    akvf::SwitchingPreconditioner p(
-        "test", std::make_unique<akvf::IdentityPreconditioner>(),
-        [](akvf::Preconditioner&) { return std::make_unique<akvf::IdentityPreconditioner>(); }, rule);
+    auto curvature_set = [](akvf::Preconditioner&, akvf::SwitchReason why) {
+      CHECK(why == akvf::SwitchReason::kCurvatureSet);
+      return std::make_unique<akvf::IdentityPreconditioner>();
+    };
+    akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(), curvature_set, rule);
     const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
     p.update({x, g, 1.0, 1});
     int k = 2;
@@ -508,15 +511,18 @@ TEST_CASE("akvf-newton returns to AKVF after two Newton steps closing in on a co
     bool backtracked;
   };
   int built_second = 0, built_first = 0;
+  std::vector<akvf::SwitchReason> reasons;
   akvf::SwitchingPreconditioner p(
       "test", std::make_unique<akvf::IdentityPreconditioner>(),
-      [&](akvf::Preconditioner&) {
+      [&](akvf::Preconditioner&, akvf::SwitchReason why) {
         ++built_second;
+        reasons.push_back(why);
         return std::make_unique<akvf::IdentityPreconditioner>();
       },
       rule,
-      [&](akvf::Preconditioner&) {
+      [&](akvf::Preconditioner&, akvf::SwitchReason why) {
         ++built_first;
+        reasons.push_back(why);
         return std::make_unique<akvf::IdentityPreconditioner>();
       });
   const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
@@ -541,6 +547,7 @@ TEST_CASE("akvf-newton returns to AKVF after two Newton steps closing in on a co
   CHECK(!p.in_second());
   CHECK(built_second == 1);
   CHECK(built_first == 1);
+  CHECK(reasons == std::vector<akvf::SwitchReason>{akvf::SwitchReason::kCurvatureSet, akvf::SwitchReason::kClosingIn});
   // The next switch to Newton needs twice the patience: 4 curvature-set steps.
   run({curvature, curvature, curvature});
   CHECK(p.switches() == std::vector<int>{3, 12});
@@ -563,10 +570,13 @@ TEST_CASE(
     bool backtracked;
   };
   auto switches_after = [&](double start, const std::vector<Step>& steps) {
+    auto stalled = [](akvf::Preconditioner&, akvf::SwitchReason why) {
+      CHECK(why == akvf::SwitchReason::kStalled);
+      return std::make_unique<akvf::IdentityPreconditioner>();
+    };
     akvf::SwitchingPreconditioner p(
-        "test", std::make_unique<akvf::IdentityPreconditioner>(),
-        [](akvf::Preconditioner&) { return std::make_unique<akvf::IdentityPreconditioner>(); }, rule,
-        [](akvf::Preconditioner&) { return std::make_unique<akvf::IdentityPreconditioner>(); });
+        "test", std::make_unique<akvf::IdentityPreconditioner>(), stalled, rule,
+        [](akvf::Preconditioner&, akvf::SwitchReason) { return std::make_unique<akvf::IdentityPreconditioner>(); });
     const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
     p.update({x, g, start, 1});
     int k = 2;
@@ -610,9 +620,11 @@ TEST_CASE("akvf-newton switches at once after a bound-set step that left the sof
   double distortion = 6.37;  // the SLIM cube after its first step
   rule.distortion_energy = [&](const Eigen::VectorXd&) { return distortion; };
   auto switches_after = [&](double energy, double step, double max_step, bool backtracked) {
-    akvf::SwitchingPreconditioner p(
-        "test", std::make_unique<akvf::IdentityPreconditioner>(),
-        [](akvf::Preconditioner&) { return std::make_unique<akvf::IdentityPreconditioner>(); }, rule);
+    auto constraints_far = [](akvf::Preconditioner&, akvf::SwitchReason why) {
+      CHECK(why == akvf::SwitchReason::kConstraintsFar);
+      return std::make_unique<akvf::IdentityPreconditioner>();
+    };
+    akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(), constraints_far, rule);
     const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
     p.update({x, g, 336927, 1});
     p.update({x, g, energy, 2, step, max_step, backtracked});
