@@ -57,7 +57,11 @@
 // mu) is used at once instead. On the SLIM cube the default then reaches
 // the 1e-4 band in 6 iterations instead of 7 after its switch
 // (docs/design.md); on the disk meshes of ../shared/meshes/tri the
-// iterations are unchanged. Only a factorization tells
+// iterations are unchanged. Where the caller knows the Hessian to be far
+// from positive definite (akvf-newton's switch with the soft constraints
+// still far, switching_preconditioner.h), the first fallback is the clamp
+// instead of mu = 1/16 (start_fallback_at_clamp), saving the tries that
+// would fail. Only a factorization tells
 // whether the Hessian is positive definite: with multigrid or Jacobi CG
 // (FactorOptions) kExact clamps.
 #include <string>

@@ -77,7 +77,10 @@
 // of its direction, lowering E by 19 % (25 %), where Newton's unit step
 // lowered it to 6.31 (6.24) from 10409 (272141); the lifted meshes, whose
 // first step meets the constraints (their share falls below 2e-6), keep AKVF
-// (docs/design.md, "The default method").
+// (docs/design.md, "The default method"). The factory is told the reason
+// (SwitchReason): after this switch the elements the last step compressed
+// leave the Hessian far from positive definite, and akvf-newton's Newton
+// phase starts its fallback at the clamp (newton_preconditioner.h).
 //
 // Back to the first: Newton's quadratic model has its minimizer at the unit
 // step. When the line search's first trial, 0.8 alpha_max, is below 1 and
