@@ -460,6 +460,19 @@ TEST_CASE("the assembled gradient of E matches finite differences of E for every
   }
 }
 
+namespace {
+
+// A SwitchingPreconditioner factory of identity preconditioners that
+// checks the reason it is told.
+akvf::SwitchingPreconditioner::Factory identity_expecting(akvf::SwitchReason expected) {
+  return [expected](akvf::Preconditioner&, akvf::SwitchReason why) {
+    CHECK(why == expected);
+    return std::make_unique<akvf::IdentityPreconditioner>();
+  };
+}
+
+}  // namespace
+
 // switching_preconditioner.h: the switch needs `patience` consecutive steps
 // set by curvature (below half the flip-free bound) that do not show AKVF to
 // be Newton-like (backtracked to a step of at least sqrt(rho) times AKVF's
@@ -473,11 +486,8 @@ TEST_CASE("akvf-newton switches after two curvature-set steps that do not show A
     bool backtracked;
   };
   auto switch_after = [&](const std::vector<Step>& steps) {
-    auto curvature_set = [](akvf::Preconditioner&, akvf::SwitchReason why) {
-      CHECK(why == akvf::SwitchReason::kCurvatureSet);
-      return std::make_unique<akvf::IdentityPreconditioner>();
-    };
-    akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(), curvature_set, rule);
+    akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(),
+                                    identity_expecting(akvf::SwitchReason::kCurvatureSet), rule);
     const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
     p.update({x, g, 1.0, 1});
     int k = 2;
@@ -570,13 +580,9 @@ TEST_CASE(
     bool backtracked;
   };
   auto switches_after = [&](double start, const std::vector<Step>& steps) {
-    auto stalled = [](akvf::Preconditioner&, akvf::SwitchReason why) {
-      CHECK(why == akvf::SwitchReason::kStalled);
-      return std::make_unique<akvf::IdentityPreconditioner>();
-    };
-    akvf::SwitchingPreconditioner p(
-        "test", std::make_unique<akvf::IdentityPreconditioner>(), stalled, rule,
-        [](akvf::Preconditioner&, akvf::SwitchReason) { return std::make_unique<akvf::IdentityPreconditioner>(); });
+    akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(),
+                                    identity_expecting(akvf::SwitchReason::kStalled), rule,
+                                    identity_expecting(akvf::SwitchReason::kClosingIn));
     const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
     p.update({x, g, start, 1});
     int k = 2;
@@ -620,11 +626,8 @@ TEST_CASE("akvf-newton switches at once after a bound-set step that left the sof
   double distortion = 6.37;  // the SLIM cube after its first step
   rule.distortion_energy = [&](const Eigen::VectorXd&) { return distortion; };
   auto switches_after = [&](double energy, double step, double max_step, bool backtracked) {
-    auto constraints_far = [](akvf::Preconditioner&, akvf::SwitchReason why) {
-      CHECK(why == akvf::SwitchReason::kConstraintsFar);
-      return std::make_unique<akvf::IdentityPreconditioner>();
-    };
-    akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(), constraints_far, rule);
+    akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(),
+                                    identity_expecting(akvf::SwitchReason::kConstraintsFar), rule);
     const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
     p.update({x, g, 336927, 1});
     p.update({x, g, energy, 2, step, max_step, backtracked});
