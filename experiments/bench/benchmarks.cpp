@@ -6,7 +6,8 @@
 //   hand-written against automatic differentiation; the 3D projected Hessian
 //   in closed form against a 9x9 eigensolver; the algebraic multigrid
 //   path (hierarchy setup, one V-cycle, a CG solve to 1e-2) on horse_b and
-//   horse_b subdivided to 16x and 64x its faces (635 K and 2.5 M).
+//   horse_b subdivided to 16x and 64x its faces (635 K and 2.5 M), and
+//   PETSc's GAMG on the same systems where PETSc is installed (gamg_solve.h).
 // Run: ./build/akvf_benchmarks [--benchmark_filter=horse]
 #include <benchmark/benchmark.h>
 
@@ -20,6 +21,7 @@
 #include "energies/arap.h"
 #include "energies/autodiff_density.h"
 #include "energies/symmetric_dirichlet.h"
+#include "experiments/bench/gamg_solve.h"
 #include "experiments/cli/native_runtime.h"
 #include "framework/mesh/mesh_io.h"
 #include "framework/mesh/mesh_subdivision.h"
@@ -212,6 +214,47 @@ void BM_MultigridSolve(benchmark::State& state, const std::string& mesh, int sub
   state.counters["setups"] = s.multigrid_setups;
 }
 
+#ifdef AKVF_BENCH_WITH_PETSC
+// PETSc's GAMG on the same K(x) + eps I, with the rigid motions at x as its
+// near-null space (gamg_solve.h): the hierarchy's setup, one V-cycle, and CG
+// to 1e-2 relative, as the multigrid cases above.
+void BM_GamgSetup(benchmark::State& state, const std::string& mesh, int subdivide) {
+  REQUIRE_FIXTURE(state, mesh, subdivide);
+  const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
+  akvf_bench::GamgSolve gamg;
+  for (auto _ : state) gamg.setup(K.upper(), f->x);
+  state.counters["levels"] = gamg.levels();
+}
+
+void BM_GamgCycle(benchmark::State& state, const std::string& mesh, int subdivide) {
+  REQUIRE_FIXTURE(state, mesh, subdivide);
+  const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
+  akvf_bench::GamgSolve gamg;
+  gamg.setup(K.upper(), f->x);
+  Eigen::VectorXd g, z;
+  f->setup.objective->value_and_gradient(f->x, &g);
+  for (auto _ : state) {
+    gamg.cycle(g, &z);
+    benchmark::DoNotOptimize(z.data());
+  }
+}
+
+void BM_GamgSolve(benchmark::State& state, const std::string& mesh, int subdivide) {
+  REQUIRE_FIXTURE(state, mesh, subdivide);
+  const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
+  akvf_bench::GamgSolve gamg;
+  gamg.setup(K.upper(), f->x);
+  Eigen::VectorXd g, d;
+  f->setup.objective->value_and_gradient(f->x, &g);
+  int iterations = 0;
+  for (auto _ : state) {
+    iterations = gamg.solve(g, 1e-2, &d);
+    benchmark::DoNotOptimize(d.data());
+  }
+  state.counters["cg_iterations"] = iterations;
+}
+#endif
+
 // The symmetric Dirichlet density written once as a template, for automatic
 // differentiation (energies/autodiff_density.h).
 struct TemplateSymmetricDirichlet {
@@ -304,10 +347,9 @@ void register_all() {
   for (const bool cholesky : {false, true})
     for (const bool loops : {true, false})
       for (const int threads : {1, 2})
-        benchmark::RegisterBenchmark(("DenseBlock/" + std::string(cholesky ? "cholesky/" : "update/") +
-                                      (loops ? "loops" : "blas"))
-                                         .c_str(),
-                                     BM_DenseBlock, cholesky, loops)
+        benchmark::RegisterBenchmark(
+            ("DenseBlock/" + std::string(cholesky ? "cholesky/" : "update/") + (loops ? "loops" : "blas")).c_str(),
+            BM_DenseBlock, cholesky, loops)
             ->DenseRange(4, 40, 4)
             ->Threads(threads)
             ->Unit(benchmark::kMicrosecond);
@@ -377,6 +419,14 @@ void register_all() {
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("MultigridSolve/" + name).c_str(), BM_MultigridSolve, "horse_b.obj", subdivide)
         ->Unit(benchmark::kMillisecond);
+#ifdef AKVF_BENCH_WITH_PETSC
+    benchmark::RegisterBenchmark(("GamgSetup/" + name).c_str(), BM_GamgSetup, "horse_b.obj", subdivide)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("GamgCycle/" + name).c_str(), BM_GamgCycle, "horse_b.obj", subdivide)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("GamgSolve/" + name).c_str(), BM_GamgSolve, "horse_b.obj", subdivide)
+        ->Unit(benchmark::kMillisecond);
+#endif
   }
 }
 
