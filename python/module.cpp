@@ -71,12 +71,12 @@ class InterruptScope {
 // One trace row as a dict with the trace CSV's columns.
 py::dict row_dict(const akvf::IterationSummary& row) {
   py::dict d;
-  for (const akvf::TraceColumn& column : akvf::trace_columns()) {
-    const double value = column.value(row);
-    if (column.integer)
-      d[column.name] = static_cast<long long>(value);
+  for (const akvf::TraceColumn* column : akvf::present_trace_columns(row)) {
+    const double value = column->value(row);
+    if (column->integer)
+      d[column->name] = static_cast<long long>(value);
     else
-      d[column.name] = value;
+      d[column->name] = value;
   }
   d["warm_start"] = row.warm_start;
   return d;
@@ -132,15 +132,17 @@ py::dict result_dict(const Result& r) {
   const std::string final_status = akvf::status_with_reason({Eigen::VectorXd(), r.trace, r.status, r.message});
   py::dict trace;
   const auto rows = static_cast<py::ssize_t>(r.trace.size());
-  for (const akvf::TraceColumn& column : akvf::trace_columns()) {
-    if (column.integer) {
+  const std::vector<const akvf::TraceColumn*> columns =
+      akvf::present_trace_columns(r.trace.empty() ? akvf::IterationSummary{} : r.trace.front());
+  for (const akvf::TraceColumn* column : columns) {
+    if (column->integer) {
       py::array_t<long long> values(rows);
-      for (py::ssize_t i = 0; i < rows; ++i) values.mutable_at(i) = static_cast<long long>(column.value(r.trace[i]));
-      trace[column.name] = values;
+      for (py::ssize_t i = 0; i < rows; ++i) values.mutable_at(i) = static_cast<long long>(column->value(r.trace[i]));
+      trace[column->name] = values;
     } else {
       py::array_t<double> values(rows);
-      for (py::ssize_t i = 0; i < rows; ++i) values.mutable_at(i) = column.value(r.trace[i]);
-      trace[column.name] = values;
+      for (py::ssize_t i = 0; i < rows; ++i) values.mutable_at(i) = column->value(r.trace[i]);
+      trace[column->name] = values;
     }
   }
   py::list status;

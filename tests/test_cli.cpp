@@ -12,6 +12,8 @@
 
 #include "akvf/demo_mesh.h"
 #include "experiments/cli/exit_codes.h"
+#include "experiments/report/trace_csv.h"
+#include "framework/mesh/tet_mesh_io.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
 
@@ -213,6 +215,46 @@ TEST_CASE(
     CHECK(svg[r] == svg[0]);
     CHECK(trace[r] == trace[0]);
   }
+}
+
+TEST_CASE("a deformation's trace has the constraints' distance from their targets, a parameterization's has not") {
+  const fs::path dir = scratch_dir("constraint_distance");
+  const akvf::TetMesh cube = akvf::test::tet_grid(3);
+  akvf::write_medit((dir / "cube.mesh").string(), cube);
+  // For --hard (the preset's twist inverts tets when placed at once): the
+  // bottom face held, the top face lifted by 0.05.
+  std::ofstream lift(dir / "lift.txt");
+  lift << std::setprecision(17);
+  for (int v = 0; v < cube.num_vertices(); ++v)
+    if (cube.V(v, 2) == 0 || cube.V(v, 2) == 1)
+      lift << v << ' ' << cube.V(v, 0) << ' ' << cube.V(v, 1) << ' ' << cube.V(v, 2) * 1.05 << '\n';
+  lift.close();
+  for (const bool hard : {false, true}) {
+    std::vector<std::string> args = {"deform",  (dir / "cube.mesh").string(), "--max-iters", "5",
+                                     "--trace", (dir / "d.csv").string(),     "-q"};
+    for (const std::string& arg : hard
+                                      ? std::vector<std::string>{"--constraints", (dir / "lift.txt").string(), "--hard"}
+                                      : std::vector<std::string>{"--preset", "slim-cube"})
+      args.push_back(arg);
+    REQUIRE(akvf_run(args).code == akvf::kExitOk);
+    const akvf::TraceTable trace = akvf::read_trace_csv((dir / "d.csv").string());
+    const std::vector<double>& distance = trace.column("constraint_distance", "d.csv");
+    REQUIRE(distance.size() == trace.column("iter", "d.csv").size());
+    if (hard) {
+      for (const double d : distance) CHECK(d == 0);
+      continue;
+    }
+    // The preset rotates two vertical edges by 0.3 pi and scales the other
+    // two by 0.75 (slim_cube.h): far from their targets at the start, drawn
+    // in by the soft constraints.
+    CHECK(distance.front() > 0.1);
+    CHECK(distance.back() < 0.1 * distance.front());
+  }
+  akvf::test::write_obj(dir / "bar.obj", akvf::bent_bar(21, 5));
+  REQUIRE(akvf_run({"param", (dir / "bar.obj").string(), "--max-iters", "3", "--trace", (dir / "p.csv").string(), "-q"})
+              .code == akvf::kExitOk);
+  CHECK(read_text(dir / "p.csv").find("constraint_distance") == std::string::npos);
+  fs::remove_all(dir);
 }
 
 TEST_CASE("--summary writes the run's options, outcome and machine as JSON, for param and deform") {

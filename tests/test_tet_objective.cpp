@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <random>
 #include <sstream>
 
@@ -95,6 +96,8 @@ TEST_CASE("soft positional constraints add w |x_i - p_i|^2 with its gradient, ba
   CHECK(g[0] == doctest::Approx(2e5 * -0.1));
   CHECK(g[3 * 7 + 2] == doctest::Approx(2e5 * -0.2));
   CHECK(objective.max_feasible_step(x, g) == base.max_feasible_step(x, g));
+  CHECK(objective.constraint_distance(x) == doctest::Approx(0.2));  // vertex 7's target is 0.2 above it
+  CHECK(std::isnan(base.constraint_distance(x)));                   // no constraints
   constraints.vertices = {0, 99};
   CHECK(akvf::test::error_message([&] { akvf::SoftConstrainedObjective bad(base, 3, constraints, 1e5); }) ==
         "constrained vertex 99 out of range (8 vertices)");

@@ -18,17 +18,12 @@ void check(PetscErrorCode code, const char* what) {
     throw std::runtime_error(std::string("PETSc: ") + what + " failed (error " + std::to_string(code) + ")");
 }
 
-// MPI as a singleton (as solvers/algebraic_multigrid.cpp does for hypre,
-// which may come first), then PETSc; finalized at exit in reverse order.
+// PETSc once (it initializes MPI as a singleton unless hypre did first, and
+// then finalizes it too); finalized at exit, before hypre's MPI_Finalize
+// when hypre came first (atexit runs the later registration first).
 void initialize_petsc() {
   static std::once_flag once;
   std::call_once(once, [] {
-    int initialized = 0;
-    MPI_Initialized(&initialized);
-    if (!initialized) {
-      int provided = 0;
-      MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
-    }
     check(PetscInitializeNoArguments(), "PetscInitialize");
     // Options for exploring the settings (AKVF_GAMG_OPTIONS="-pc_gamg_threshold 0.02 ...").
     if (const char* extra = std::getenv("AKVF_GAMG_OPTIONS"))

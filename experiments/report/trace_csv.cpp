@@ -16,17 +16,23 @@ namespace akvf {
 
 namespace {
 
-void write_header(std::ostream& out) {
-  for (const TraceColumn& column : trace_columns()) out << column.name << ',';
+using Columns = std::vector<const TraceColumn*>;
+
+Columns columns_of(const std::vector<IterationSummary>& trace) {
+  return trace.empty() ? present_trace_columns(IterationSummary{}) : present_trace_columns(trace.front());
+}
+
+void write_header(std::ostream& out, const Columns& columns) {
+  for (const TraceColumn* column : columns) out << column->name << ',';
   out << "status\n";
   out << std::setprecision(17);
 }
 
 // A row's numeric fields, each followed by a comma (the status comes last).
-void write_fields(std::ostream& out, const IterationSummary& row) {
-  for (const TraceColumn& column : trace_columns()) {
-    const double value = column.value(row);
-    if (column.integer)
+void write_fields(std::ostream& out, const Columns& columns, const IterationSummary& row) {
+  for (const TraceColumn* column : columns) {
+    const double value = column->value(row);
+    if (column->integer)
       out << static_cast<long long>(value) << ',';
     else
       out << value << ',';
@@ -36,11 +42,12 @@ void write_fields(std::ostream& out, const IterationSummary& row) {
 }  // namespace
 
 void write_trace_csv(std::ostream& out, const OptimizerResult& result) {
-  write_header(out);
+  const Columns columns = columns_of(result.trace);
+  write_header(out, columns);
   std::string status_cell = status_with_reason(result);  // one CSV field: no commas
   std::replace(status_cell.begin(), status_cell.end(), ',', ';');
   for (std::size_t i = 0; i < result.trace.size(); ++i) {
-    write_fields(out, result.trace[i]);
+    write_fields(out, columns, result.trace[i]);
     out << trace_status_cell(result.trace, i, status_cell) << '\n';
   }
 }
@@ -73,9 +80,10 @@ void GrowingTraceCsv::append(const IterationSummary& row) {
     }
     partial_ = std::make_unique<std::ofstream>(partial_path_, std::ios::trunc);
     if (!*partial_) throw OutputError(partial_path_ + ": cannot write the growing trace");
-    write_header(*partial_);
+    partial_columns_ = present_trace_columns(row);
+    write_header(*partial_, partial_columns_);
   }
-  write_fields(*partial_, row);
+  write_fields(*partial_, partial_columns_, row);
   *partial_ << '\n' << std::flush;
 }
 

@@ -2,7 +2,9 @@
 // The per-iteration trace as CSV: a header, then one row per iteration with
 // row 0 for the initial map. Columns:
 //   iter,seconds,energy,grad_norm,step,ls_evals,flips,max_step,
-//   precond_seconds,line_search_seconds,status
+//   precond_seconds,line_search_seconds[,constraint_distance],status
+// (constraint_distance only for runs with positional constraints:
+// framework/optimization/trace_columns.h).
 // `seconds` is cumulative optimizer time; `status` is empty except on the
 // last row, which says why the run stopped.
 #include <fstream>
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "framework/optimization/optimizer.h"
+#include "framework/optimization/trace_columns.h"
 
 namespace akvf {
 
@@ -40,6 +43,7 @@ class GrowingTraceCsv {
   void append(const IterationSummary& row);
   std::string path_, partial_path_;
   std::unique_ptr<std::ofstream> partial_;
+  std::vector<const TraceColumn*> partial_columns_;  // decided by the first row
 };
 
 // A trace file read back: every numeric column by its header name (the

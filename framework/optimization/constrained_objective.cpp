@@ -1,5 +1,7 @@
 #include "framework/optimization/constrained_objective.h"
 
+#include <algorithm>
+
 #include "framework/process/error.h"
 
 namespace akvf {
@@ -25,6 +27,15 @@ double SoftConstrainedObjective::penalty(const Eigen::VectorXd& x) const {
     sum += (x.segment(dimension_ * constraints_.vertices[c], dimension_) - constraints_.targets.row(c).transpose())
                .squaredNorm();
   return weight_ * sum;
+}
+
+double SoftConstrainedObjective::constraint_distance(const Eigen::VectorXd& x) const {
+  double largest = 0;
+  for (std::size_t c = 0; c < constraints_.vertices.size(); ++c)
+    largest = std::max(largest, (x.segment(dimension_ * constraints_.vertices[c], dimension_) -
+                                 constraints_.targets.row(c).transpose())
+                                    .norm());
+  return largest;
 }
 
 double SoftConstrainedObjective::value(const Eigen::VectorXd& x) const { return base_.value(x) + penalty(x); }

@@ -30,6 +30,8 @@ class SoftConstrainedObjective final : public Objective {
   std::string first_bad_element(const Eigen::VectorXd& x) const override { return base_.first_bad_element(x); }
   double lower_bound() const override { return base_.lower_bound(); }
 
+  double constraint_distance(const Eigen::VectorXd& x) const override;
+
   // w sum |x_i - p_i|^2 alone.
   double penalty(const Eigen::VectorXd& x) const;
   // The Hessian of the penalty, diagonal: 2 w on the constrained coordinates.
@@ -56,6 +58,8 @@ class FixedVerticesObjective final : public Objective {
   int count_inverted(const Eigen::VectorXd& x) const override { return base_.count_inverted(x); }
   std::string first_bad_element(const Eigen::VectorXd& x) const override { return base_.first_bad_element(x); }
   double lower_bound() const override { return base_.lower_bound(); }
+  // 0: the fixed vertices sit at their targets from the start and never move.
+  double constraint_distance(const Eigen::VectorXd&) const override { return 0; }
 
   // 1 on free coordinates, 0 on fixed ones.
   const Eigen::VectorXd& free_mask() const { return free_mask_; }

@@ -43,6 +43,10 @@ class Objective {
   virtual std::string first_bad_element(const Eigen::VectorXd& x) const {
     return first_non_finite_entry(x, "variable");
   }
+  // For a problem with positional constraints: the largest distance of a
+  // constrained vertex from its target at x (how far the constraints are
+  // from met; the trace's constraint_distance column). NaN without them.
+  virtual double constraint_distance(const Eigen::VectorXd&) const { return std::numeric_limits<double>::quiet_NaN(); }
 };
 
 }  // namespace akvf

@@ -114,6 +114,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
   row.energy = finite_or_inf(energy);
   row.grad_norm = finite_or_inf(gradient.norm());
   row.flips = objective.count_inverted(x);
+  row.constraint_distance = objective.constraint_distance(x);
   row.seconds = elapsed();
   // A gradient of finite entries whose norm overflows is as unusable.
   if (!std::isfinite(energy) || !std::isfinite(row.grad_norm)) {
@@ -174,6 +175,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     row.max_step = search.max_feasible_step;
     row.ls_evals = search.evaluations;
     row.flips = objective.count_inverted(x);
+    row.constraint_distance = objective.constraint_distance(x);
     row.precond_seconds = precond_seconds;
     row.line_search_seconds = search.seconds;
     row.seconds = elapsed();

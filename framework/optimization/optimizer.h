@@ -73,6 +73,9 @@ struct IterationSummary {
   int flips = 0;               // inverted elements at the new iterate
   double precond_seconds = 0;  // update + apply
   double line_search_seconds = 0;
+  // Objective::constraint_distance at the new iterate (NaN for a problem
+  // without positional constraints).
+  double constraint_distance = std::numeric_limits<double>::quiet_NaN();
 };
 
 enum class CallbackAction { kContinue, kStop };

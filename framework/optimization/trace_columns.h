@@ -1,8 +1,11 @@
 #pragma once
 // The columns of a run's trace, in one place: the trace CSV
 // (experiments/report/trace_csv.h) and the Python module's `trace` dict have
-// these, in this order, then `status`.
+// these, in this order, then `status`. A column marked `optional` is there
+// only for the runs that have it (constraint_distance: runs with positional
+// constraints), decided by the trace's first row.
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -14,10 +17,11 @@ struct TraceColumn {
   const char* name;
   bool integer;  // written without a fraction
   double (*value)(const IterationSummary&);
+  bool optional = false;  // NaN for the runs that do not have it (module comment)
 };
 
-inline const std::array<TraceColumn, 10>& trace_columns() {
-  static const std::array<TraceColumn, 10> columns{{
+inline const std::array<TraceColumn, 11>& trace_columns() {
+  static const std::array<TraceColumn, 11> columns{{
       {"iter", true, [](const IterationSummary& s) { return double(s.iteration); }},
       {"seconds", false, [](const IterationSummary& s) { return s.seconds; }},
       {"energy", false, [](const IterationSummary& s) { return s.energy; }},
@@ -28,8 +32,17 @@ inline const std::array<TraceColumn, 10>& trace_columns() {
       {"max_step", false, [](const IterationSummary& s) { return s.max_step; }},
       {"precond_seconds", false, [](const IterationSummary& s) { return s.precond_seconds; }},
       {"line_search_seconds", false, [](const IterationSummary& s) { return s.line_search_seconds; }},
+      {"constraint_distance", false, [](const IterationSummary& s) { return s.constraint_distance; }, true},
   }};
   return columns;
+}
+
+// The columns a trace whose first row is `first` has.
+inline std::vector<const TraceColumn*> present_trace_columns(const IterationSummary& first) {
+  std::vector<const TraceColumn*> present;
+  for (const TraceColumn& column : trace_columns())
+    if (!column.optional || !std::isnan(column.value(first))) present.push_back(&column);
+  return present;
 }
 
 // The status column: on the last row why the run stopped (`final_status`,

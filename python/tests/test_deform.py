@@ -43,6 +43,10 @@ def test_deform_pulls_the_top_up():
     assert r.x.shape == V.shape and r.status in ("converged", "max-iterations")
     assert r.x[:, 2].max() > 1.15
     assert (r.trace["flips"] == 0).all()
+    # How far the constrained vertices are from their targets, per row.
+    distance = r.trace["constraint_distance"]
+    assert len(distance) == len(r.trace["iter"])
+    assert distance[0] == pytest.approx(0.2) and distance[-1] < distance[0]
 
 
 @pytest.mark.parametrize("args,keywords", [([], {}), (["--precond", "newton", "--hard"], {"precond": "newton", "hard": True}),
