@@ -53,6 +53,7 @@ class TraceCallback final : public ceres::IterationCallback {
     row.step = s.iteration == 0 ? 0 : s.step_size;
     row.ls_evals = s.line_search_function_evaluations;
     row.flips = objective_.count_inverted(x_);
+    row.constraint_distance = objective_.constraint_distance(x_);
     if (!s.step_is_successful && s.iteration > 0) return ceres::SOLVER_CONTINUE;  // not an iterate
     result_->trace.push_back(row);
     bool stop = false;
@@ -100,6 +101,7 @@ OptimizerResult minimize_lbfgs(const Objective& objective, Eigen::VectorXd x, co
     row.energy = finite_or_inf(energy);
     row.grad_norm = std::numeric_limits<double>::infinity();
     row.flips = objective.count_inverted(x);
+    row.constraint_distance = objective.constraint_distance(x);
     result.trace.push_back(row);
     const std::string bad = objective.first_bad_element(x);
     result.message = "the initial energy is not finite" + (bad.empty() ? "" : "; first bad element: " + bad);

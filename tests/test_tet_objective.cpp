@@ -13,6 +13,7 @@
 #include "framework/optimization/constrained_objective.h"
 #include "framework/optimization/distortion_objective.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
+#include "solvers/lbfgs_solver.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -98,6 +99,14 @@ TEST_CASE("soft positional constraints add w |x_i - p_i|^2 with its gradient, ba
   CHECK(objective.max_feasible_step(x, g) == base.max_feasible_step(x, g));
   CHECK(objective.constraint_distance(x) == doctest::Approx(0.2));  // vertex 7's target is 0.2 above it
   CHECK(std::isnan(base.constraint_distance(x)));                   // no constraints
+  // Both optimizers' traces record it (minimize's is checked through the
+  // command line, tests/test_cli.cpp): L-BFGS draws vertex 7 toward its target.
+  akvf::OptimizerOptions options;
+  options.max_iterations = 5;
+  const akvf::OptimizerResult lbfgs = akvf::minimize_lbfgs(objective, x, options);
+  REQUIRE(lbfgs.trace.size() > 1);
+  CHECK(lbfgs.trace.front().constraint_distance == doctest::Approx(0.2));
+  CHECK(lbfgs.trace.back().constraint_distance < 0.2);
   constraints.vertices = {0, 99};
   CHECK(akvf::test::error_message([&] { akvf::SoftConstrainedObjective bad(base, 3, constraints, 1e5); }) ==
         "constrained vertex 99 out of range (8 vertices)");
