@@ -6,7 +6,8 @@
 //   hand-written against automatic differentiation; the 3D projected Hessian
 //   in closed form against a 9x9 eigensolver; the algebraic multigrid
 //   path (hierarchy setup, one V-cycle, a CG solve to 1e-2) on horse_b and
-//   horse_b subdivided to 16x and 64x its faces (635 K and 2.5 M), and
+//   horse_b subdivided to 16x and 64x its faces (635 K and 2.5 M), with the
+//   direct path's parts and a whole iteration at the same sizes, and
 //   PETSc's GAMG on the same systems where PETSc is installed (gamg_solve.h).
 // Run: ./build/akvf_benchmarks [--benchmark_filter=horse]
 #include <benchmark/benchmark.h>
