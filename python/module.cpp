@@ -132,9 +132,7 @@ py::dict result_dict(const Result& r) {
   const std::string final_status = akvf::status_with_reason({Eigen::VectorXd(), r.trace, r.status, r.message});
   py::dict trace;
   const auto rows = static_cast<py::ssize_t>(r.trace.size());
-  const std::vector<const akvf::TraceColumn*> columns =
-      akvf::present_trace_columns(r.trace.empty() ? akvf::IterationSummary{} : r.trace.front());
-  for (const akvf::TraceColumn* column : columns) {
+  for (const akvf::TraceColumn* column : akvf::present_trace_columns(r.trace)) {
     if (column->integer) {
       py::array_t<long long> values(rows);
       for (py::ssize_t i = 0; i < rows; ++i) values.mutable_at(i) = static_cast<long long>(column->value(r.trace[i]));

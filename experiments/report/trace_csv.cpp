@@ -18,10 +18,6 @@ namespace {
 
 using Columns = std::vector<const TraceColumn*>;
 
-Columns columns_of(const std::vector<IterationSummary>& trace) {
-  return trace.empty() ? present_trace_columns(IterationSummary{}) : present_trace_columns(trace.front());
-}
-
 void write_header(std::ostream& out, const Columns& columns) {
   for (const TraceColumn* column : columns) out << column->name << ',';
   out << "status\n";
@@ -42,7 +38,7 @@ void write_fields(std::ostream& out, const Columns& columns, const IterationSumm
 }  // namespace
 
 void write_trace_csv(std::ostream& out, const OptimizerResult& result) {
-  const Columns columns = columns_of(result.trace);
+  const Columns columns = present_trace_columns(result.trace);
   write_header(out, columns);
   std::string status_cell = status_with_reason(result);  // one CSV field: no commas
   std::replace(status_cell.begin(), status_cell.end(), ',', ';');

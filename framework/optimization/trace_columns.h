@@ -45,6 +45,12 @@ inline std::vector<const TraceColumn*> present_trace_columns(const IterationSumm
   return present;
 }
 
+// The columns of a whole trace (its first row's; an empty trace has the
+// columns every run has).
+inline std::vector<const TraceColumn*> present_trace_columns(const std::vector<IterationSummary>& trace) {
+  return present_trace_columns(trace.empty() ? IterationSummary{} : trace.front());
+}
+
 // The status column: on the last row why the run stopped (`final_status`,
 // as status_with_reason gives it), "warm-start" on the rows of a warm start,
 // empty elsewhere.
