@@ -189,6 +189,15 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                 if (o.cut != "none" && o.cut != "auto")
                                   throw OptionsError("unknown cut '" + o.cut + "' (valid: none, auto)");
                               }));
+    f.push_back(text_field<O>("injectivity", "injectivity", "global|local",
+                              "global keeps every chart's boundary from crossing itself (no overlap in UV: a "
+                              "contact-free step and a boundary barrier, Smith & Schaefer 2015); local keeps "
+                              "only every triangle positive, the paper's Algorithm 1",
+                              &O::injectivity, [](const O& o) {
+                                if (o.injectivity != "global" && o.injectivity != "local")
+                                  throw OptionsError("unknown injectivity '" + o.injectivity +
+                                                     "' (valid: global, local)");
+                              }));
     OptionField<O> flaps =
         switch_field<O>("flaps", "flaps", "on|off", "flap optimization of Sec. 5.4 after the Tutte map", &O::flaps);
     flaps.kind = OptionKind::kText;  // --flaps on|off on the command line

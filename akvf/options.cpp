@@ -41,6 +41,7 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.init_from_file = o.init == "file";
   if (!c.init_from_file) c.init = parse_tutte_weights(o.init);
   c.optimize_flaps = o.flaps;
+  c.global_injectivity = o.injectivity == "global";
   c.cut = o.cut == "auto";
   c.optimizer.gradient_tolerance = o.grad_tol;
   c.optimizer.max_iterations = o.max_iters;

@@ -1,5 +1,6 @@
 #include "akvf/parameterization.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -7,6 +8,8 @@
 #include "akvf/threads.h"
 #include "framework/mesh/chart_layout.h"
 #include "framework/mesh/vertex_graph.h"
+#include "framework/optimization/injective_objective.h"
+#include "preconditioners/contact_preconditioner.h"
 #include "framework/process/error.h"
 #include "solvers/lbfgs_solver.h"
 #include "solvers/sparse_cholesky.h"
@@ -58,6 +61,41 @@ SpdSolver tutte_solver(const std::shared_ptr<const BlockOrdering>& ordering) {
     return solve_positive_definite(A, B, X, &restricted);
   };
 }
+// The boundary loops with the normalized mesh as their rest shape: its
+// positions and each vertex's angle sum.
+std::shared_ptr<const BoundaryContact> boundary_contact_of(const TriMesh& normalized,
+                                                           const std::vector<std::vector<int>>& loops) {
+  Eigen::VectorXd angle_sum = Eigen::VectorXd::Zero(normalized.num_vertices());
+  for (int f = 0; f < normalized.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::RowVector3d p = normalized.V.row(normalized.F(f, k));
+      const Eigen::RowVector3d u = normalized.V.row(normalized.F(f, (k + 1) % 3)) - p;
+      const Eigen::RowVector3d v = normalized.V.row(normalized.F(f, (k + 2) % 3)) - p;
+      angle_sum[normalized.F(f, k)] += std::atan2(u.cross(v).norm(), u.dot(v));
+    }
+  return std::make_shared<const BoundaryContact>(loops, normalized.V, angle_sum, normalized.F);
+}
+
+// Shortens the flap moves (§5.4) that make a chart's boundary cross itself,
+// so that a globally injective run starts injective: a move in a crossing
+// is halved, pass by pass, and undone after 30 halvings (the Tutte map's
+// boundary is convex, so that ends with no crossing). Returns the number of
+// moves shortened or undone.
+int shorten_crossing_flaps(const BoundaryContact& contact, const Eigen::MatrixXd& tutte, Eigen::MatrixXd* UV) {
+  std::vector<int> halvings(UV->rows(), 0);
+  for (;;) {
+    bool changed = false;
+    for (const std::array<int, 4>& crossing : contact.crossings(stack_uv(*UV)))
+      for (int v : crossing) {
+        if (UV->row(v) == tutte.row(v)) continue;
+        const Eigen::RowVector2d halfway = 0.5 * (UV->row(v) + tutte.row(v));
+        UV->row(v) = ++halvings[v] > 30 ? Eigen::RowVector2d(tutte.row(v)) : halfway;
+        changed = true;
+      }
+    if (!changed) break;
+  }
+  return static_cast<int>(std::count_if(halvings.begin(), halvings.end(), [](int n) { return n > 0; }));
+}
 }  // namespace
 
 ParamSetup prepare_parameterization(const TriMesh& input, const std::string& name, const ParamConfig& config) {
@@ -89,6 +127,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   setup.objective = std::make_shared<DistortionObjective2D>(normalized.F, rest_triangles(normalized), density,
                                                             normalized.num_vertices());
   setup.objective->set_file_numbering(setup.disk.input_vertex, input.index_base);
+  setup.boundary_contact = boundary_contact_of(normalized, setup.disk.boundary_loops);
   if (config.init_from_file) {
     if (config.start_uv.rows() == 0)
       throw OptionsError(
@@ -100,7 +139,11 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
     setup.vertex_ordering = mesh_vertex_ordering(normalized);
     Eigen::MatrixXd UV = tutte_embedding_charts(normalized, setup.disk.boundary_loops, setup.disk.face_chart,
                                                 config.init, &setup.warnings, tutte_solver(setup.vertex_ordering));
-    if (config.optimize_flaps) setup.flaps_moved = optimize_flaps(normalized, &UV);
+    if (config.optimize_flaps) {
+      const Eigen::MatrixXd tutte = UV;
+      setup.flaps_moved = optimize_flaps(normalized, &UV);
+      if (config.global_injectivity) setup.flaps_shortened = shorten_crossing_flaps(*setup.boundary_contact, tutte, &UV);
+    }
     setup.x0 = stack_uv(UV);
   }
   if (!usable_start(*setup.objective, setup.x0) && config.energy != kWarmStartEnergy) warm_start(config, &setup);
@@ -125,6 +168,9 @@ ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config
   const ThreadLimit threads(config.threads);
   ParamRun run = run_from_start(setup, config, callbacks);
   prepend_warm_start(setup.warm_start, &run.result);
+  run.boundary_crossings = setup.boundary_contact->count_crossings(run.result.x);
+  run.overlap = measure_uv_overlap(unstack_uv(run.result.x), setup.objective->elements(), setup.disk.face_chart);
+  run.distortion_energy = setup.objective->value(run.result.x);
   return run;
 }
 
@@ -133,22 +179,32 @@ namespace {
 ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
                         const std::vector<IterationCallback>& callbacks) {
   ParamRun run;
+  std::unique_ptr<InjectiveObjective> injective;
+  if (config.global_injectivity)
+    injective = std::make_unique<InjectiveObjective>(
+        *setup.objective, setup.boundary_contact,
+        injective_step_horizon(config.line_search_settings.max_initial_step,
+                               config.line_search_settings.max_step_fraction));
+  const Objective& objective = injective ? static_cast<const Objective&>(*injective) : *setup.objective;
   OptimizerOptions optimizer = config.optimizer;
   optimizer.acceleration_eta =
       acceleration_eta(config.acceleration, preconditioners_2d().has_tag(config.preconditioner, kMomentumByDefault));
   if (config.solver == kLbfgsMethod || config.preconditioner == kLbfgsMethod) {
     run.preconditioner_name = kLbfgsMethod;
-    run.result = minimize_lbfgs(*setup.objective, setup.x0, config.optimizer, {}, callbacks);  // no momentum
+    run.result = minimize_lbfgs(objective, setup.x0, config.optimizer, {}, callbacks);  // no momentum
     return run;
   }
   PreconditionerSettings2D settings = config.preconditioner_settings;
   settings.set_linear_solver(linear_solver_for(config.linear_solver));
   settings.share_vertex_ordering(setup.vertex_ordering);
   settings.akvf_newton_switch.backtracking_factor = config.line_search_settings.rho;
-  auto preconditioner = preconditioners_2d().create(config.preconditioner, *setup.objective, settings);
+  std::unique_ptr<Preconditioner> preconditioner =
+      preconditioners_2d().create(config.preconditioner, *setup.objective, settings);
+  if (injective)
+    preconditioner = std::make_unique<ContactPreconditioner>(std::move(preconditioner), setup.boundary_contact);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
   run.preconditioner_name = preconditioner->name();
-  run.result = minimize(*setup.objective, *preconditioner, *line_search, setup.x0, optimizer, callbacks);
+  run.result = minimize(objective, *preconditioner, *line_search, setup.x0, optimizer, callbacks);
   run.preconditioner_report = preconditioner->report();
   run.preconditioner_statistics = preconditioner->statistics();
   return run;
@@ -157,16 +213,12 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
 }  // namespace
 
 Eigen::MatrixXd chart_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
-  const Eigen::MatrixXd UV = unstack_uv(x);
-  const Eigen::MatrixXi& F = setup.objective->elements();
-  double uv_area = 0;
-  for (int f = 0; f < F.rows(); ++f) {
-    const Eigen::RowVector2d e1 = UV.row(F(f, 1)) - UV.row(F(f, 0)), e2 = UV.row(F(f, 2)) - UV.row(F(f, 0));
-    uv_area += 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
-  }
-  const double scale = std::sqrt(setup.normalization.input_area / uv_area) / setup.unit_scale;
-  Eigen::MatrixXd out = scale * UV;
-  pack_charts(F, setup.disk.face_chart, setup.disk.num_charts(), &out);
+  // The normalization undone, and nothing else: the input mesh with this
+  // map has the optimizer's energy (every energy here depends on J alone,
+  // and J is unchanged when mesh and map scale alike).
+  const double scale = 1 / (setup.normalization.scale * setup.unit_scale);
+  Eigen::MatrixXd out = scale * unstack_uv(x);
+  pack_charts(setup.objective->elements(), setup.disk.face_chart, setup.disk.num_charts(), &out);
   return out;
 }
 
@@ -228,6 +280,7 @@ void warm_start(const ParamConfig& config, ParamSetup* setup) {
   // its own iteration limit), which is finite for every energy here.
   ParamConfig sd_config;
   sd_config.energy = kWarmStartEnergy;
+  sd_config.global_injectivity = config.global_injectivity;
   sd_config.optimizer.max_iterations = config.warm_start_max_iterations;
   ParamSetup sd_setup = *setup;
   sd_setup.objective = std::make_shared<DistortionObjective2D>(setup->objective->elements(), setup->objective->rest(),

@@ -9,6 +9,8 @@
 #include "framework/mesh/mesh.h"
 #include "framework/mesh/mesh_validation.h"
 #include "framework/mesh/rest_geometry.h"
+#include "framework/mesh/uv_overlap.h"
+#include "framework/optimization/boundary_contact.h"
 #include "framework/optimization/distortion_objective.h"
 #include "framework/optimization/optimizer.h"
 
@@ -34,6 +36,10 @@ struct ParamConfig {
   // §5.4 flap optimization after the Tutte map (see docs/performance.md for
   // the measurement behind the default).
   bool optimize_flaps = true;
+  // Keep the map globally injective (framework/optimization/
+  // injective_objective.h: no boundary vertex ever reaches a boundary edge
+  // of its chart) instead of only flip-free, the paper's Algorithm 1.
+  bool global_injectivity = true;
   // AQP's momentum (OptimizerOptions::acceleration_eta): "auto" turns it on
   // for the laplacian preconditioner only, as AQP pairs them.
   std::string acceleration = "auto";
@@ -52,8 +58,12 @@ struct ParamSetup {
   DiskMesh disk;                                     // the compacted input mesh times unit_scale
   Normalization normalization;                       // of disk.mesh to total area 1
   std::shared_ptr<DistortionObjective2D> objective;  // on the normalized mesh
+  // The charts' boundary loops: the run keeps them from crossing with
+  // global injectivity, and every run counts their crossings at its end.
+  std::shared_ptr<const BoundaryContact> boundary_contact;
   Eigen::VectorXd x0;                                // initial map, interleaved, area-1 units
   int flaps_moved = 0;
+  int flaps_shortened = 0;  // of those, moved only part of the way: the full move crossed the boundary
   // The fill-reducing ordering of the mesh's vertex graph, when the Tutte
   // start needed one (large meshes, akvf/parameterization.cpp): the
   // optimizer's matrices are analyzed with it too. Null otherwise.
@@ -72,6 +82,15 @@ struct ParamRun {
   std::string preconditioner_name;
   std::string preconditioner_report;
   PreconditionerStatistics preconditioner_statistics;
+  // The final map's self-overlap: boundary edges that cross, and the
+  // rasterized overlapping area (framework/mesh/uv_overlap.h). Zero for a
+  // run with global injectivity from an injective start.
+  int boundary_crossings = 0;
+  UvOverlap overlap;
+  // The distortion alone at the final map, the energy of the written map
+  // (the trace's energy adds the boundary barrier of global injectivity,
+  // which is not zero where the map is held off an overlap).
+  double distortion_energy = 0;
 };
 
 // The run from setup.x0. A warm start's rows open the trace (warm_start set)
@@ -79,8 +98,9 @@ struct ParamRun {
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks = {});
 
-// The UV map of the optimized mesh's vertices (#setup.disk.mesh.V by 2),
-// scaled so that the UV area equals the input mesh's 3D area, several charts
+// The UV map of the optimized mesh's vertices (#setup.disk.mesh.V by 2) at
+// the input's scale: x with the normalization undone, so that the input
+// mesh with this map has the energy the optimizer reported; several charts
 // packed side by side (framework/mesh/chart_layout.h).
 Eigen::MatrixXd chart_uv(const ParamSetup& setup, const Eigen::VectorXd& x);
 

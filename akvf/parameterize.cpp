@@ -33,6 +33,9 @@ struct Parameterizer::State {
     result.uv = output_uv(from, run.result.x);
     result.uv_faces = output_uv_faces(from);
     fill_run_fields(run.result, run.preconditioner_statistics, run.preconditioner_report, from.warnings, &result);
+    result.boundary_crossings = run.boundary_crossings;
+    result.overlap_fraction = run.overlap.fraction();
+    result.distortion_energy = run.distortion_energy;
     return result;
   }
 };
@@ -64,7 +67,7 @@ void Parameterizer::set_options(const ParameterizeOptions& options) {
   const ParameterizeOptions& old = state_->options;
   const bool new_start = options.init != old.init || options.cut != old.cut || options.flaps != old.flaps ||
                          options.energy != old.energy || options.exponent != old.exponent ||
-                         options.warm_start_iters != old.warm_start_iters;
+                         options.warm_start_iters != old.warm_start_iters || options.injectivity != old.injectivity;
   const ParameterizeOptions previous = state_->options;
   state_->options = options;
   try {

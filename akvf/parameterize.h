@@ -4,7 +4,7 @@
 //   Eigen::MatrixXd V;  // #V by 3 vertex positions
 //   Eigen::MatrixXi F;  // #F by 3 vertex indices, 0-based
 //   akvf::ParameterizeResult r = akvf::parameterize(V, F);
-//   r.uv;               // #V by 2, at the input's scale (UV area = 3D area)
+//   r.uv;               // #V by 2, at the input's scale (the optimized map, r.energy() of this V, F)
 //
 // Errors are the typed exceptions of <framework/process/error.h>: InputError and
 // ValidationError for the mesh (messages name the element as the arrays
@@ -41,6 +41,8 @@ struct ParameterizeOptions {
   std::string cut = "none";                    // "auto": cut closed / multi-boundary / higher-genus /
                                                // multi-component meshes into disk charts (uv_faces)
   bool flaps = true;                           // flap optimization of §5.4 after the Tutte map
+  std::string injectivity = "global";          // "global": no UV overlap (boundary contact-free);
+                                               // "local": flip-free only, the paper's Algorithm 1
   double grad_tol = 1e-3;                      // converged when ||grad E|| < grad_tol (area-1 units)
   int max_iters = 1000;                        // >= 0
   double time_limit = std::numeric_limits<double>::infinity();  // optimizer seconds, > 0
@@ -81,6 +83,14 @@ struct ParameterizeResult {
   RunStatistics statistics;
   std::string preconditioner_report;  // the command line's one-line report
   Warnings warnings;                  // e.g. dropped unreferenced vertices
+  // Self-overlap of the final map, per chart: boundary edges that cross
+  // and the fraction of the area rasterized twice (about 10^6 samples).
+  // Zero with injectivity "global" from an injective start.
+  int boundary_crossings = 0;
+  double overlap_fraction = 0;
+  // The energy of the map in uv: energy() less the boundary barrier that
+  // global injectivity adds where it holds the map off an overlap.
+  double distortion_energy = 0;
 
   double energy() const { return trace.empty() ? 0 : trace.back().energy; }
   double grad_norm() const { return trace.empty() ? 0 : trace.back().grad_norm; }
@@ -114,7 +124,7 @@ class Parameterizer {
   ParameterizeResult solve(const Eigen::MatrixXd& uv0);
 
   // New options for the next solves; the initial map is recomputed only if
-  // init, flaps, energy or exponent changed.
+  // init, cut, flaps, energy, exponent, warm_start_iters or injectivity changed.
   void set_options(const ParameterizeOptions& options);
   const ParameterizeOptions& options() const;
 

@@ -198,6 +198,9 @@ py::dict solve(akvf::Parameterizer& solver, const py::object& uv0, const py::obj
   py::dict d = result_dict(result);
   d["uv"] = result.uv;
   d["uv_faces"] = result.uv_faces;
+  d["boundary_crossings"] = result.boundary_crossings;
+  d["overlap_fraction"] = result.overlap_fraction;
+  d["distortion_energy"] = result.distortion_energy;
   return d;
 }
 

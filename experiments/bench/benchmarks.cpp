@@ -58,6 +58,7 @@ Fixture* fixture(const std::string& mesh, int subdivide = 0) {
     const std::string path = dir + "/tri/" + mesh;
     akvf::ParamConfig config;
     config.optimizer.max_iterations = 5;
+    config.global_injectivity = false;  // the paper's Algorithm 1, the problem the peers solve
     auto f = std::make_unique<Fixture>();
     f->setup = akvf::prepare_parameterization(akvf::subdivide_midpoint(akvf::read_triangle_mesh(path), subdivide), path,
                                               config);

@@ -52,14 +52,19 @@ ParameterizeOptions options_from(const CommandLine& cl) {
 }
 
 // The --summary record: the run's options, then its outcome and the machine.
+//   texture_uv_scale  the factor of the unit-square vt written (textured OBJ,
+//                     GLB), or 0 when none were
 Json param_summary(const std::string& mesh_file, const ParameterizeOptions& options, const ParamSetup& setup,
-                   const ParamRun& run) {
+                   const ParamRun& run, double texture_uv_scale) {
   Json settings;
   record_options(parameterize_option_fields(), options, &settings);
   Json record = run_record(run.result, setup.objective->lower_bound(), setup.disk.mesh.num_vertices(),
                            setup.disk.mesh.num_faces());
   record["linear_algebra"] = linear_algebra_record(run.preconditioner_statistics, run.preconditioner_report);
+  record["overlap"] = Json{{"boundary_crossings", run.boundary_crossings}, {"area_fraction", run.overlap.fraction()}};
+  record["distortion_energy"] = run.distortion_energy;
   if (setup.disk.cut) record["cut"] = cut_record(setup.disk);
+  if (texture_uv_scale > 0) record["texture_uv_scale"] = texture_uv_scale;
   return single_run_summary("param", mesh_file, settings, record);
 }
 
@@ -74,7 +79,9 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   const TriMesh& mesh = setup.disk.mesh;
   if (setup.disk.cut) out << name << ": " << cut_description(setup.disk) << '\n';
   out << name << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces; energy " << config.energy
-      << ", preconditioner " << config.preconditioner << ", " << setup.flaps_moved << " flap vertices moved\n";
+      << ", preconditioner " << config.preconditioner << ", " << setup.flaps_moved << " flap vertices moved";
+  if (setup.flaps_shortened > 0) out << " (" << setup.flaps_shortened << " part of the way: the boundary would cross)";
+  out << '\n';
 
   std::vector<IterationCallback> callbacks;
   if (!quiet) callbacks.push_back(progress_printer(err));
@@ -86,10 +93,16 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   out << summary_line(result);
   if (!run.preconditioner_report.empty()) out << run.preconditioner_name << ": " << run.preconditioner_report << '\n';
   if (!is_normal_termination(result.status)) err << "error: " << result.message << '\n';
+  if (run.boundary_crossings > 0 || run.overlap.overlapped_samples > 0)
+    err << "warning: the UV map overlaps itself: " << run.boundary_crossings << " pairs of boundary edges cross, "
+        << 100 * run.overlap.fraction() << " % of its area lies over another part"
+        << (config.global_injectivity ? " (the start map already overlapped)\n" : " (--injectivity global prevents it)\n");
 
   const Eigen::MatrixXd UV = output_uv(setup, result.x);
   const Eigen::MatrixXi UV_faces = output_uv_faces(setup);
   const std::string out_kind = lowercase_extension(outputs.obj);
+  const bool unit_square = !outputs.obj.empty() && (out_kind == ".glb" || (out_kind == ".obj" && outputs.texture));
+  const double texture_uv_scale = unit_square ? unit_square_scale(UV) : 0;
   if (!outputs.obj.empty() && out_kind == ".glb") {
     write_glb(outputs.obj, input, unit_square_uv(UV), UV_faces, checker_image());
   } else if (!outputs.obj.empty() && out_kind == ".ply") {
@@ -114,7 +127,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
                          " iterations, E = " + std::to_string(last.energy));
   if (!outputs.png.empty()) write_layout_png(outputs.png, setup, result.x, outputs.png_size);
   if (!outputs.summary.empty() || !outputs.view.empty()) {
-    const Json summary = param_summary(name, options, setup, run);
+    const Json summary = param_summary(name, options, setup, run, texture_uv_scale);
     if (!outputs.summary.empty()) write_summary(outputs.summary, summary);
     if (!outputs.view.empty()) {
       ViewContent view = view_of(setup, result.x, std::filesystem::path(name).filename().string());

@@ -41,10 +41,14 @@ void write_checker_texture(const TextureFiles& files) {
   });
 }
 
-Eigen::MatrixXd unit_square_uv(const Eigen::MatrixXd& UV) {
+double unit_square_scale(const Eigen::MatrixXd& UV) {
   const Eigen::RowVector2d lo = UV.colwise().minCoeff(), hi = UV.colwise().maxCoeff();
-  const double extent = std::max((hi - lo).maxCoeff(), 1e-300);
-  return (UV.rowwise() - lo) / extent;
+  return 1 / std::max((hi - lo).maxCoeff(), 1e-300);
+}
+
+Eigen::MatrixXd unit_square_uv(const Eigen::MatrixXd& UV) {
+  const Eigen::RowVector2d lo = UV.colwise().minCoeff();
+  return (UV.rowwise() - lo) * unit_square_scale(UV);
 }
 
 }  // namespace akvf

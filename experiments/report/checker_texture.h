@@ -27,6 +27,8 @@ void write_checker_texture(const TextureFiles& files);
 // The layout scaled into the unit square (the texture's [0, 1]^2), keeping
 // its aspect ratio: a texture repeats per unit of vt, so vt at the input's
 // scale would show one square per unit of length, whatever the mesh's size.
+// It is (UV - its lowest corner) * unit_square_scale(UV).
 Eigen::MatrixXd unit_square_uv(const Eigen::MatrixXd& UV);
+double unit_square_scale(const Eigen::MatrixXd& UV);
 
 }  // namespace akvf

@@ -56,7 +56,10 @@ class Result:
     the start); ``statistics`` (the preconditioner's work: factorizations,
     reused_solves, cg_solves, cg_iterations, symbolic_analyses,
     multigrid_setups, and seconds per phase); ``preconditioner_report``;
-    ``warnings``.
+    ``warnings``; parameterize only: ``boundary_crossings`` and
+    ``overlap_fraction`` (the final map's self-overlap per chart, 0 with
+    injectivity="global") and ``distortion_energy`` (the energy of ``uv``:
+    ``energy`` less the boundary barrier that holds it off an overlap).
     """
 
     def __init__(self, fields):
@@ -116,7 +119,7 @@ class Parameterizer:
 
     def set_options(self, **options):
         """Change the given options for the next solves; the initial map is
-        recomputed only when init, flaps, energy, exponent or warm_start_iters change."""
+        recomputed only when init, flaps, energy, exponent, warm_start_iters or injectivity change."""
         merged = dict(self._options, **options)
         self._solver.set_options(merged)
         self._options = merged

@@ -11,6 +11,22 @@ import akvf
 from conftest import bumpy_disk, signed_areas
 
 
+def symmetric_dirichlet(V, F, uv):
+    """sum_f A_f (|J_f|^2 + |J_f^-1|^2) / sum_f A_f for the map uv of V, F."""
+    a, b, c = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
+    e1, e2 = b - a, c - a
+    l1 = np.linalg.norm(e1, axis=1)
+    x = e1 / l1[:, None]
+    y = np.cross(np.cross(e1, e2), e1)
+    y /= np.linalg.norm(y, axis=1)[:, None]
+    Dm = np.stack([np.stack([l1, np.zeros_like(l1)], 1), np.stack([(e2 * x).sum(1), (e2 * y).sum(1)], 1)], 2)
+    Ds = np.stack([uv[F[:, 1]] - uv[F[:, 0]], uv[F[:, 2]] - uv[F[:, 0]]], 2)
+    J = Ds @ np.linalg.inv(Dm)
+    area = 0.5 * np.abs(np.linalg.det(Dm))
+    density = (J ** 2).sum((1, 2)) + (np.linalg.inv(J) ** 2).sum((1, 2))
+    return (area * density).sum() / area.sum()
+
+
 def test_version_matches_the_program(program):
     out = subprocess.run([program, "--version"], capture_output=True, text=True, check=True).stdout
     assert out.split()[-1] == akvf.__version__
@@ -22,10 +38,11 @@ def test_default_run_converges_without_inverted_triangles(disk):
     assert r.status == "converged"
     assert r.uv.shape == (len(V), 2) and r.uv.dtype == np.float64
     assert (signed_areas(r.uv, F) > 0).all()
-    # At the input's scale: the UV area equals the surface area.
-    a, b, c = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
-    area = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1).sum()
-    assert signed_areas(r.uv, F).sum() == pytest.approx(area, rel=1e-12)
+    # At the input's scale, the optimized map itself: the input mesh with it
+    # has the reported energy.
+    assert symmetric_dirichlet(V, F, r.uv) == pytest.approx(r.distortion_energy, rel=1e-9)
+    assert r.distortion_energy == r.energy  # no barrier term on this disk
+    assert r.boundary_crossings == 0 and r.overlap_fraction == 0
     assert r.grad_norm < 1e-3 and r.iterations == r.trace["iter"][-1]
     assert r.energy == r.trace["energy"][-1] >= 4
     assert r.statistics["factorizations"] >= 1 and r.statistics["symbolic_analyses"] == 1
@@ -73,6 +90,26 @@ def test_shared_mesh_bitwise_the_command_line(meshes, program, tmp_path):
                     "-q"], check=True)
     V, F = akvf.read_mesh(meshes / "tri" / "camelhead.off")
     assert np.array_equal(akvf.parameterize(V, F).uv, read_vt(out))
+
+
+def test_the_written_map_has_the_reported_energy(meshes, program, tmp_path):
+    """--texture none writes the optimized map itself: the file's mesh with its
+    vt has the summary's distortion energy; the textured OBJ's vt are it
+    scaled into the unit square."""
+    import json
+    for name in ["camelhead.off", "cow_b.obj"]:
+        plain, textured, summary = tmp_path / "plain.obj", tmp_path / "textured.obj", tmp_path / "run.json"
+        subprocess.run([program, "param", str(meshes / "tri" / name), "--out", str(plain), "--texture", "none",
+                        "--summary", str(summary), "-q"], check=True)
+        subprocess.run([program, "param", str(meshes / "tri" / name), "--out", str(textured), "-q"], check=True)
+        record = json.loads(summary.read_text())
+        V, F = akvf.read_mesh(plain)
+        uv = read_vt(plain)
+        assert symmetric_dirichlet(V, F, uv) == pytest.approx(record["distortion_energy"], rel=1e-9)
+        assert record["final_energy"] >= record["distortion_energy"]
+        assert record["overlap"] == {"boundary_crossings": 0, "area_fraction": 0}
+        scaled = (uv - uv.min(0)) * (1 / np.ptp(uv, 0).max())
+        assert np.allclose(read_vt(textured), scaled, rtol=0, atol=1e-6)  # vt are written with 6 decimals or more
 
 
 def test_arrays_are_converted_not_refused(disk):

@@ -1,0 +1,254 @@
+#include "framework/optimization/boundary_contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "framework/mesh/box_pairs.h"
+
+namespace akvf {
+
+namespace {
+using Vec2 = Eigen::Vector2d;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+Vec2 point(const Eigen::VectorXd& x, int v) { return x.segment<2>(2 * v); }
+
+// The roots of a t^2 + b t + c in (0, horizon], ascending; returns how many.
+// The two roots are q / a and c / q with q = -(b + sign(b) sqrt(b^2 - 4ac)) / 2,
+// which keeps the small root accurate when a is tiny.
+int roots_in(double a, double b, double c, double horizon, double roots[2]) {
+  double r[2];
+  int m = 0;
+  if (a == 0) {
+    if (b != 0) r[m++] = -c / b;
+  } else {
+    const double discriminant = b * b - 4 * a * c;
+    if (discriminant < 0) return 0;  // the line is grazed or missed, never crossed
+    const double q = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
+    r[m++] = q / a;
+    if (q != 0) r[m++] = c / q;
+  }
+  int n = 0;
+  for (int k = 0; k < m; ++k)
+    if (r[k] > 0 && r[k] <= horizon) roots[n++] = r[k];
+  if (n == 2 && roots[1] < roots[0]) std::swap(roots[0], roots[1]);
+  return n;
+}
+
+Box2 bounds(std::initializer_list<Vec2> points, double margin) {
+  Box2 box{kInfinity, kInfinity, -kInfinity, -kInfinity};
+  for (const Vec2& p : points) {
+    box.min_x = std::min(box.min_x, p.x() - margin);
+    box.min_y = std::min(box.min_y, p.y() - margin);
+    box.max_x = std::max(box.max_x, p.x() + margin);
+    box.max_y = std::max(box.max_y, p.y() + margin);
+  }
+  return box;
+}
+
+// The first t in (0, horizon] at which p(t) lies on the segment a(t) b(t),
+// every point moving linearly; +infinity if none.
+double vertex_edge_contact(const Vec2& p, const Vec2& dp, const Vec2& a, const Vec2& da, const Vec2& b,
+                           const Vec2& db, double horizon) {
+  const Vec2 u = a - p, du = da - dp, w = b - p, dw = db - dp;
+  // cross(u + t du, w + t dw) = 0: the three points are collinear ...
+  double a2 = cross(du, dw), a1 = cross(u, dw) + cross(du, w), a0 = cross(u, w);
+  bool collinear_throughout = a2 == 0 && a1 == 0 && a0 == 0;
+  // ... and p lies between a and b: (u . w)(t) <= 0. If they stay collinear,
+  // the contact is the first time that holds.
+  if (collinear_throughout) {
+    a2 = du.dot(dw);
+    a1 = u.dot(dw) + du.dot(w);
+    a0 = u.dot(w);
+  }
+  double roots[2];
+  const int n = roots_in(a2, a1, a0, horizon, roots);
+  for (int k = 0; k < n; ++k) {
+    if (collinear_throughout) return roots[k];
+    const double t = roots[k];
+    if ((u + t * du).dot(w + t * dw) <= 0) return t;
+  }
+  return kInfinity;
+}
+
+// The distance of p from the segment a b, points of R^3.
+double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d edge = b - a;
+  const double length2 = edge.squaredNorm();
+  const double s = length2 > 0 ? std::clamp((p - a).dot(edge) / length2, 0.0, 1.0) : 0.0;
+  return (p - a - s * edge).norm();
+}
+
+bool segments_meet(const Vec2& a1, const Vec2& b1, const Vec2& a2, const Vec2& b2) {
+  const double o1 = cross(b1 - a1, a2 - a1), o2 = cross(b1 - a1, b2 - a1);
+  const double o3 = cross(b2 - a2, a1 - a2), o4 = cross(b2 - a2, b1 - a2);
+  if (o1 == 0 && o2 == 0) {  // collinear: do the projections on the segment's line overlap?
+    const Vec2 e = b1 - a1;
+    const double s1 = e.dot(a2 - a1), s2 = e.dot(b2 - a1), length2 = e.squaredNorm();
+    return std::max(s1, s2) >= 0 && std::min(s1, s2) <= length2;
+  }
+  return o1 * o2 <= 0 && o3 * o4 <= 0;
+}
+}  // namespace
+
+BoundaryContact::BoundaryContact(const std::vector<std::vector<int>>& loops, const Eigen::MatrixXd& rest,
+                                 const Eigen::VectorXd& rest_angle, const Eigen::MatrixXi& faces)
+    : rest_(rest), neighbours_(rest.rows()) {
+  std::vector<char> on_boundary(rest.rows(), 0);
+  for (const auto& loop : loops)
+    for (int v : loop) on_boundary[v] = 1;
+  for (int f = 0; f < faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (on_boundary[faces(f, k)])
+        for (int j = 1; j < 3; ++j) neighbours_[faces(f, k)].push_back(faces(f, (k + j) % 3));
+  for (std::vector<int>& list : neighbours_) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  constexpr double kAngleReach = M_PI / 4, kSmallestAngleReach = M_PI / 64;
+  for (int k = 0; k < static_cast<int>(loops.size()); ++k) {
+    const std::vector<int>& loop = loops[k];
+    const int n = static_cast<int>(loop.size());
+    for (int i = 0; i < n; ++i) {
+      const int v = loop[i], next = loop[(i + 1) % n], previous = loop[(i + n - 1) % n];
+      const double length = (rest.row(next) - rest.row(v)).norm(), before = (rest.row(v) - rest.row(previous)).norm();
+      edges_.push_back({v, next, k, length});
+      const double mean = 0.5 * (length + before);
+      const double reach = std::clamp(0.5 * (2 * M_PI - rest_angle[v]), kSmallestAngleReach, kAngleReach);
+      corners_.push_back({v, previous, next, k, reach, mean * mean});
+    }
+  }
+}
+
+double BoundaryContact::first_contact_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d,
+                                           double horizon) const {
+  if (!(horizon > 0) || !std::isfinite(horizon)) return kInfinity;
+  std::vector<Box2> swept_corners(corners_.size()), swept_edges(edges_.size());
+  for (size_t i = 0; i < corners_.size(); ++i) {
+    const int v = corners_[i].vertex;
+    swept_corners[i] = bounds({point(x, v), point(x, v) + horizon * point(d, v)}, 0);
+  }
+  for (size_t j = 0; j < edges_.size(); ++j) {
+    const Edge& e = edges_[j];
+    swept_edges[j] = bounds({point(x, e.a), point(x, e.b), point(x, e.a) + horizon * point(d, e.a),
+                             point(x, e.b) + horizon * point(d, e.b)},
+                            0);
+  }
+  double step = kInfinity;
+  for_each_overlapping_pair(swept_corners, swept_edges, [&](int i, int j) {
+    const Corner& c = corners_[i];
+    const Edge& e = edges_[j];
+    if (c.loop != e.loop || c.vertex == e.a || c.vertex == e.b) return;
+    const double t = vertex_edge_contact(point(x, c.vertex), point(d, c.vertex), point(x, e.a), point(d, e.a),
+                                         point(x, e.b), point(d, e.b), std::min(horizon, step));
+    step = std::min(step, t);
+  });
+  return step;
+}
+
+// A vertex within this fraction of an edge's length from it at rest lies on
+// it: the two sides of a seam (positions equal to rounding).
+constexpr double kSeamTolerance = 1e-3;
+
+double BoundaryContact::rest_distance(int p, int a, int b) const {
+  return point_segment_distance(rest_.row(p).transpose(), rest_.row(a).transpose(), rest_.row(b).transpose());
+}
+
+template <class Visit>
+void BoundaryContact::for_each_term(const Eigen::VectorXd& x, const Visit& visit) const {
+  // Vertex-edge terms.
+  std::vector<Box2> corner_points(corners_.size()), reach_boxes(edges_.size());
+  for (size_t i = 0; i < corners_.size(); ++i) corner_points[i] = bounds({point(x, corners_[i].vertex)}, 0);
+  for (size_t j = 0; j < edges_.size(); ++j)
+    reach_boxes[j] = bounds({point(x, edges_[j].a), point(x, edges_[j].b)}, 0.5 * edges_[j].rest_length);
+  for_each_overlapping_pair(corner_points, reach_boxes, [&](int i, int j) {
+    const Corner& c = corners_[i];
+    const Edge& e = edges_[j];
+    if (c.loop != e.loop || c.vertex == e.a || c.vertex == e.b) return;
+    const std::vector<int>& joined = neighbours_[c.vertex];
+    if (std::binary_search(joined.begin(), joined.end(), e.a) || std::binary_search(joined.begin(), joined.end(), e.b))
+      return;
+    const Vec2 p = point(x, c.vertex), a = point(x, e.a), b = point(x, e.b), edge = b - a;
+    const double length2 = edge.squaredNorm();
+    const double s = length2 > 0 ? std::clamp((p - a).dot(edge) / length2, 0.0, 1.0) : 0.0;
+    const Vec2 r = p - (a + s * edge);
+    const double distance = r.norm();
+    if (!(distance < 0.5 * e.rest_length)) return;
+    // Half the rest distance, where the isometric map would put them; a
+    // vertex that lies on the edge at rest (a seam's two sides, cut apart)
+    // is as far as the edge is long.
+    const double apart = rest_distance(c.vertex, e.a, e.b);
+    const double reach = 0.5 * (apart > kSeamTolerance * e.rest_length ? std::min(e.rest_length, apart) : e.rest_length);
+    if (!(distance < reach)) return;
+    // d dist / dp = n, and the edge's ends share -n by s (zero at contact).
+    const Vec2 n = distance > 0 ? Vec2(r / distance) : Vec2::Zero();
+    visit(Term{{{c.vertex, e.a, e.b}, {n, -(1 - s) * n, -s * n}, 0}, distance, reach * e.rest_length, reach});
+  });
+  // Angle terms: theta from c -> next counter-clockwise to c -> previous,
+  // in [0, 2 pi); d theta / d next = -u^perp / |u|^2, d theta / d previous =
+  // v^perp / |v|^2 (perp: turned by +90 degrees) and c takes minus their sum.
+  for (const Corner& c : corners_) {
+    const Vec2 u = point(x, c.next) - point(x, c.vertex), v = point(x, c.previous) - point(x, c.vertex);
+    double theta = std::atan2(cross(u, v), u.dot(v));
+    if (theta < 0) theta += 2 * M_PI;
+    const double gap = 2 * M_PI - theta;
+    if (!(gap < c.reach)) continue;
+    const double uu = u.squaredNorm(), vv = v.squaredNorm();
+    if (!(uu > 0 && vv > 0)) continue;
+    // q = 2 pi - theta: its gradient is minus theta's.
+    const Vec2 d_next(-u.y() / uu, u.x() / uu), d_previous(v.y() / vv, -v.x() / vv);
+    visit(Term{{{c.next, c.previous, c.vertex}, {d_next, d_previous, -(d_next + d_previous)}, 0},
+               gap,
+               c.weight,
+               c.reach});
+  }
+}
+
+double BoundaryContact::barrier(const Eigen::VectorXd& x, Eigen::VectorXd* gradient) const {
+  double value = 0;
+  for_each_term(x, [&](const Term& term) {
+    if (!(term.q > 0) || !std::isfinite(value)) {
+      value = kInfinity;
+      return;
+    }
+    const double excess = term.reach / term.q - 1;
+    value += term.weight * excess * excess;
+    if (gradient) {
+      // d/dq of w (eps / q - 1)^2.
+      const double slope = -2 * term.weight * excess * term.reach / (term.q * term.q);
+      for (int k = 0; k < 3; ++k)
+        gradient->segment<2>(2 * term.derivative.vertex[k]) += slope * term.derivative.gradient[k];
+    }
+  });
+  return value;
+}
+
+std::vector<BoundaryContact::ActiveTerm> BoundaryContact::active_terms(const Eigen::VectorXd& x) const {
+  std::vector<ActiveTerm> terms;
+  for_each_term(x, [&](const Term& term) {
+    if (!(term.q > 0)) return;
+    // d^2/dq^2 of w (eps / q - 1)^2 = (2 w eps / q^3)(3 eps / q - 2), > 0 for q < eps.
+    const double q3 = term.q * term.q * term.q;
+    ActiveTerm active = term.derivative;
+    active.curvature = 2 * term.weight * term.reach / q3 * (3 * term.reach / term.q - 2);
+    terms.push_back(active);
+  });
+  return terms;
+}
+
+std::vector<std::array<int, 4>> BoundaryContact::crossings(const Eigen::VectorXd& x) const {
+  std::vector<Box2> boxes(edges_.size());
+  for (size_t j = 0; j < edges_.size(); ++j) boxes[j] = bounds({point(x, edges_[j].a), point(x, edges_[j].b)}, 0);
+  std::vector<std::array<int, 4>> found;
+  for_each_overlapping_pair(boxes, boxes, [&](int i, int j) {
+    const Edge& e = edges_[i];
+    const Edge& f = edges_[j];
+    if (j <= i || e.loop != f.loop || e.a == f.a || e.a == f.b || e.b == f.a || e.b == f.b) return;
+    if (segments_meet(point(x, e.a), point(x, e.b), point(x, f.a), point(x, f.b))) found.push_back({e.a, e.b, f.a, f.b});
+  });
+  return found;
+}
+
+}  // namespace akvf

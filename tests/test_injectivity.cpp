@@ -1,0 +1,160 @@
+// Global injectivity (framework/optimization/boundary_contact.h,
+// injective_objective.h, framework/mesh/uv_overlap.h): the contact step,
+// the barrier's derivatives, the crossing count, the overlap measure, and a
+// run whose flip-free optimum overlaps itself kept free of overlap.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "akvf/akvf.h"
+#include "framework/mesh/box_pairs.h"
+#include "framework/mesh/uv_overlap.h"
+#include "framework/optimization/boundary_contact.h"
+#include "framework/optimization/distortion_objective.h"
+#include "tests/test_support.h"
+
+using namespace akvf;
+
+namespace {
+
+// A loop of the first n points of `rest`, (x, y, 0) in R^3, each corner's
+// rest angle that of the polygon (convex corners: pi / 2 for the square).
+BoundaryContact loop_at_rest(const Eigen::VectorXd& rest, const Eigen::VectorXd& rest_angle) {
+  const int n = static_cast<int>(rest.size() / 2);
+  Eigen::MatrixXd positions = Eigen::MatrixXd::Zero(n, 3);
+  for (int v = 0; v < n; ++v) positions.row(v).head<2>() = rest.segment<2>(2 * v);
+  std::vector<int> loop(n);
+  for (int v = 0; v < n; ++v) loop[v] = v;
+  return BoundaryContact({loop}, positions, rest_angle, Eigen::MatrixXi(0, 3));
+}
+
+Eigen::VectorXd square() {
+  Eigen::VectorXd x(8);
+  x << 0, 0, 1, 0, 1, 1, 0, 1;
+  return x;
+}
+
+// The unit square's corners as one loop, at rest as it is.
+BoundaryContact square_loop() { return loop_at_rest(square(), Eigen::VectorXd::Constant(4, M_PI / 2)); }
+
+// A strip of a helicoid, radii 1 to 2, `turns` turns, rising `rise` per
+// radian: its least-distorted flattening is close to an annulus sector of
+// about 2 pi turns radians, which overlaps itself for more than one turn.
+TriMesh helicoid_strip(double turns, double rise, int radial = 4, int around = 96) {
+  TriMesh mesh;
+  mesh.V.resize((radial + 1) * (around + 1), 3);
+  for (int j = 0; j <= around; ++j)
+    for (int i = 0; i <= radial; ++i) {
+      const double theta = 2 * M_PI * turns * j / around, r = 1 + static_cast<double>(i) / radial;
+      mesh.V.row(j * (radial + 1) + i) << r * std::cos(theta), r * std::sin(theta), rise * theta;
+    }
+  mesh.F.resize(2 * radial * around, 3);
+  int f = 0;
+  for (int j = 0; j < around; ++j)
+    for (int i = 0; i < radial; ++i) {
+      const int a = j * (radial + 1) + i, b = a + 1, c = a + radial + 1, d = c + 1;
+      mesh.F.row(f++) << a, b, d;
+      mesh.F.row(f++) << a, d, c;
+    }
+  return mesh;
+}
+
+}  // namespace
+
+TEST_CASE("box pairs: every overlapping pair once, in order, as a brute force finds them") {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> place(0, 10), size(0, 1.5);
+  std::vector<Box2> a(200), b(150);
+  for (auto* set : {&a, &b})
+    for (Box2& box : *set) {
+      const double x = place(random), y = place(random);
+      box = {x, y, x + size(random), y + size(random)};
+    }
+  std::vector<std::pair<int, int>> found, expected;
+  for_each_overlapping_pair(a, b, [&](int i, int j) { found.push_back({i, j}); });
+  for (int i = 0; i < 200; ++i)
+    for (int j = 0; j < 150; ++j)
+      if (a[i].overlaps(b[j])) expected.push_back({i, j});
+  CHECK(found == expected);
+}
+
+TEST_CASE("the first contact step: a corner moving onto the opposite edge, and none moving apart") {
+  const BoundaryContact loop = square_loop();
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(8);
+  d[5] = -1;  // vertex 2 (1, 1) moves down: it reaches edge 0 -> 1 (y = 0) at t = 1
+  CHECK(loop.first_contact_step(square(), d, 10) == doctest::Approx(1).epsilon(1e-12));
+  CHECK(std::isinf(loop.first_contact_step(square(), d, 0.5)));  // beyond the horizon
+  // Vertex 2 moving diagonally toward vertex 0 meets it at t = 1 (a corner
+  // of edges 3 -> 0 and 0 -> 1: point on segment at an end).
+  d.setZero();
+  d[4] = -1;
+  d[5] = -1;
+  CHECK(loop.first_contact_step(square(), d, 10) == doctest::Approx(1).epsilon(1e-12));
+  // Scaling the square up never brings a vertex to an edge.
+  CHECK(std::isinf(loop.first_contact_step(square(), square(), 10)));
+}
+
+TEST_CASE("the barrier is zero far from contact and its gradient matches finite differences") {
+  // A U at rest (vertex 4 at (0.5, 0.6), its inner angle about 286
+  // degrees), mapped thinner: vertex 4 at (0.5, 0.12) is near edge 0 -> 1
+  // (y = 0), within half of its rest distance 0.6 from it, and its inner
+  // angle, about 329 degrees, is within the angle term's reach of a fold.
+  Eigen::VectorXd rest(12), x(12);
+  rest << 0, 0, 1, 0, 1, 1, 0.6, 0.9, 0.5, 0.6, 0.2, 0.8;
+  x << 0, 0, 1, 0, 1, 1, 0.6, 0.9, 0.5, 0.12, 0.2, 0.8;
+  Eigen::VectorXd rest_angle = Eigen::VectorXd::Constant(6, M_PI / 2);
+  rest_angle[4] = 3 * M_PI / 2;
+  const BoundaryContact loop = loop_at_rest(rest, rest_angle);
+  CHECK(loop.barrier(rest, nullptr) == 0);
+  Eigen::VectorXd gradient = Eigen::VectorXd::Zero(12);
+  const double value = loop.barrier(x, &gradient);
+  CHECK(value > 0);
+  const double h = 1e-7;
+  for (int i = 0; i < 12; ++i) {
+    Eigen::VectorXd plus = x, minus = x;
+    plus[i] += h;
+    minus[i] -= h;
+    CHECK(gradient[i] == doctest::Approx((loop.barrier(plus, nullptr) - loop.barrier(minus, nullptr)) / (2 * h))
+                             .epsilon(1e-5));
+  }
+  CHECK(square_loop().barrier(square(), nullptr) == 0);
+}
+
+TEST_CASE("boundary crossings and the rasterized overlap of a map that lies over itself") {
+  // A bow tie: edges 0 -> 1 and 2 -> 3 cross.
+  const BoundaryContact loop = square_loop();
+  Eigen::VectorXd bow_tie(8);
+  bow_tie << 0, 0, 1, 1, 1, 0, 0, 1;
+  CHECK(loop.count_crossings(bow_tie) == 1);
+  CHECK(loop.count_crossings(square()) == 0);
+
+  // Two triangles of one chart, the second over half of the first.
+  Eigen::MatrixXd UV(6, 2);
+  UV << 0, 0, 1, 0, 0, 1, 0, 0, 0.5, 0, 0, 0.5;
+  Eigen::MatrixXi F(2, 3);
+  F << 0, 1, 2, 3, 4, 5;
+  const UvOverlap overlap = measure_uv_overlap(UV, F, {});
+  CHECK(overlap.fraction() == doctest::Approx(0.25).epsilon(0.02));
+  // The same in two charts is no overlap; nor is a grid's map of itself.
+  CHECK(measure_uv_overlap(UV, F, {0, 1}).overlapped_samples == 0);
+  const TriMesh grid = test::grid_disk(12, 9);
+  CHECK(measure_uv_overlap(grid.V.leftCols(2), grid.F, {}).overlapped_samples == 0);
+}
+
+TEST_CASE("a helicoid strip of 1.5 turns: flip-free alone overlaps, global injectivity does not") {
+  const TriMesh strip = helicoid_strip(1.5, 0.05);
+  ParameterizeOptions local;
+  local.injectivity = "local";
+  const ParameterizeResult overlapping = parameterize(strip.V, strip.F, local);
+  REQUIRE(overlapping.trace.back().flips == 0);
+  CHECK(overlapping.boundary_crossings > 0);
+  CHECK(overlapping.overlap_fraction > 0.05);
+
+  const ParameterizeResult injective = parameterize(strip.V, strip.F);
+  CHECK(injective.status == TerminationStatus::kConverged);
+  CHECK(injective.boundary_crossings == 0);
+  CHECK(injective.overlap_fraction == 0);
+  for (const IterationSummary& row : injective.trace) CHECK(row.flips == 0);
+  // Held apart, the map is more distorted than the overlapping one.
+  CHECK(injective.energy() > overlapping.energy());
+}
