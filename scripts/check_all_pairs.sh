@@ -21,7 +21,7 @@ for mesh in "$DATA"/tri/*_b.obj "$DATA"/tri/camelhead.off "$DATA"/tri/lilium.obj
     for m in $methods; do
       runs=$((runs + 1))
       : > "$trace"  # a run that fails before writing must not be judged by the previous trace
-      "$AKVF" param "$mesh" --quiet --energy "$e" --precond "$m" --max-iters "$ITERS" --grad-tol 0 \
+      "$AKVF" param "$mesh" --quiet --energy "$e" --precond "$m" --max-iters "$ITERS" --grad-tol 0 --injectivity local \
         --trace "$trace" > /dev/null 2>&1 || true
       # The warm start's rows (symmetric Dirichlet, before an overflowing
       # energy starts) open the trace: checked for flips, not compared in energy.

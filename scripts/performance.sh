@@ -15,7 +15,7 @@ REPEAT=${REPEAT:-3}
 # One run of the paper's AKVF (these tables study its settings; a later
 # --precond overrides): prints "status iterations seconds energy grad_norm inverted".
 run_once() {
-  "$AKVF" param --precond akvf "$@" --quiet | awk '/^status/ {gsub(",", ""); print $2, $4, $6, $9, $12, $13}'
+  "$AKVF" param --precond akvf --injectivity local "$@" --quiet | awk '/^status/ {gsub(",", ""); print $2, $4, $6, $9, $12, $13}'
 }
 
 # Median over REPEAT runs of the seconds; the other fields from the last run
