@@ -115,6 +115,14 @@ TEST_CASE("manifest errors point at the offending key") {
   // Found by fuzz_manifest: a number beyond double's range escaped as nlohmann's out_of_range.
   CHECK(manifest_error("{\"meshes\": [{\"label\": \"A\",\n\"file\": \"a.obj\", \"subdivide\": 4e999}]}") ==
         "line 2 of m.json: invalid JSON: number 4e999 is out of range");
+  // A key given twice: refused, not the last one silently kept.
+  CHECK(manifest_error("{" + base_mesh + R"(, "methods": [{"label": "Newton", "precond": "newton", "precond": "identity"}]})") ==
+        "m.json: key \"precond\" appears twice in one object (name each key once)");
+  CHECK(manifest_error("{" + base_mesh + R"(, "methods": [{"label": "X"}], "methods": [{"label": "Y"}]})") ==
+        "m.json: key \"methods\" appears twice in one object (name each key once)");
+  // Nesting 100 000 deep is refused before it can exhaust the stack.
+  CHECK(manifest_error(std::string(100000, '[') + std::string(100000, ']')) ==
+        "m.json: JSON nested deeper than 256 levels");
 }
 
 TEST_CASE("a tiny manifest runs end to end, shards merged give the same results as one run, resume skips") {
@@ -159,6 +167,15 @@ TEST_CASE("a tiny manifest runs end to end, shards merged give the same results 
   // small.obj is a 5 x 5 grid (32 triangles), subdivided once.
   const auto small = nlohmann::json::parse(read_text(dir / "all" / "cases" / "bumpy-small--slim" / "summary.json"));
   CHECK(small["elements"] == 128);
+
+  // A corrupt summary: the report names the file, as a malformed input.
+  fs::copy(dir / "all", dir / "corrupt", fs::copy_options::recursive);
+  std::ofstream(dir / "corrupt" / "cases" / "bumpy--akvf" / "summary.json") << "{\"status\": ";
+  std::string report_out, report_err;
+  CHECK(akvf_run({"experiment", "report", (dir / "corrupt").string()}, &report_out, &report_err) ==
+        akvf::kExitInputError);
+  CHECK(report_err.find((dir / "corrupt" / "cases" / "bumpy--akvf" / "summary.json").string() + ": invalid JSON") !=
+        std::string::npos);
 
   for (const char* shard : {"1/2", "2/2"})
     REQUIRE(akvf_run({"experiment", manifest, "--data-dir", data.string(), "--out-dir",

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "experiments/report/html_view.h"
+#include "experiments/report/json_text.h"
 #include "experiments/report/line_plot.h"
 #include "experiments/report/text_utilities.h"
 #include "experiments/report/trace_csv.h"
@@ -154,7 +155,7 @@ std::string write_experiment_report(const std::string& out_dir) {
   std::vector<Json> summaries(manifest.cases.size());
   for (const ExperimentCase& c : manifest.cases) {
     const std::string path = join_path(join_path(join_path(out_dir, "cases"), c.id), "summary.json");
-    if (fs::exists(path)) summaries[c.index] = Json::parse(read_text_file(path));
+    if (fs::exists(path)) summaries[c.index] = read_json_file(path);
   }
   // Paper columns, in first-seen order.
   std::vector<std::string> paper_columns;

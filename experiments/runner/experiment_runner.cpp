@@ -17,6 +17,7 @@
 #include "akvf/slim_cube.h"
 #include "experiments/cli/run_reporting.h"
 #include "experiments/report/html_view.h"
+#include "experiments/report/json_text.h"
 #include "experiments/report/layout.h"
 #include "experiments/report/run_summary.h"
 #include "experiments/report/text_utilities.h"
@@ -264,8 +265,7 @@ void merge_experiments(const std::vector<std::string>& sources, const std::strin
       const fs::path target = fs::path(out_dir) / "cases" / entry.path().filename();
       if (fs::exists(target) && fs::equivalent(entry.path(), target)) continue;  // merging into a source
       if (fs::exists(target / "summary.json")) {
-        const Json a = Json::parse(read_text_file(summary.string())),
-                   b = Json::parse(read_text_file((target / "summary.json").string()));
+        const Json a = read_json_file(summary.string()), b = read_json_file((target / "summary.json").string());
         if (a["status"] != b["status"] || a.value("iterations", -1) != b.value("iterations", -1))
           throw InputError(source + ": case " + entry.path().filename().string() +
                            " is also in another folder with a different result");

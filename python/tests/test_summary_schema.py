@@ -52,6 +52,14 @@ def test_param_summaries_validate(program, tmp_path):
                     str(tmp_path / "b.json"), "-q"], check=True, capture_output=True)
     summary = validate(tmp_path / "b.json")
     assert summary["cut"]["charts"] == 1 and summary["cut"]["genus"] == [1]
+    # A run that cannot start (the energy overflows at the Tutte map, no warm
+    # start): numerical-failure, its infinite energy or gradient null, still valid.
+    run = subprocess.run([program, "param", str(tmp_path / "disk.obj"), "--energy", "exp-symmetric-dirichlet",
+                          "--exponent", "50", "--warm-start-iters", "0", "--summary", str(tmp_path / "c.json"), "-q"],
+                         capture_output=True)
+    assert run.returncode == 3
+    summary = validate(tmp_path / "c.json")
+    assert summary["status"] == "numerical-failure" and None in (summary["final_energy"], summary["grad_norm"])
 
 
 def test_deform_summary_validates(program, tmp_path):
