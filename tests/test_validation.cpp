@@ -83,6 +83,31 @@ TEST_CASE("inconsistent orientation is rejected") {
         "oriented");
 }
 
+TEST_CASE("a Moebius strip is said to be non-orientable") {
+  // A strip of 12 quads around a circle, its ends glued with a half twist.
+  const int n = 12;
+  TriMesh m;
+  m.V.resize(2 * n, 3);
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * M_PI * i / n, twist = t / 2;
+    for (int side = 0; side < 2; ++side) {
+      const double r = 2 + (side ? 0.5 : -0.5) * std::cos(twist), h = (side ? 0.5 : -0.5) * std::sin(twist);
+      m.V.row(2 * i + side) << r * std::cos(t), r * std::sin(t), h;
+    }
+  }
+  m.F.resize(2 * n, 3);
+  for (int i = 0; i < n; ++i) {
+    const int a = 2 * i, b = 2 * i + 1;
+    // The last quad joins strip end i = n - 1 to the start with its sides swapped.
+    const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    m.F.row(2 * i) << a, c, d;
+    m.F.row(2 * i + 1) << a, d, b;
+  }
+  CHECK(validation_error(m) ==
+        "m.obj: the surface is non-orientable (like a Moebius strip or a Klein bottle): no choice of face orientations "
+        "agrees across every edge, so it has no UV map as one piece");
+}
+
 TEST_CASE("two fans meeting at a vertex are non-manifold") {
   // Two triangles touching at vertex 0 only.
   TriMesh m;

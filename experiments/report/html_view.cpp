@@ -45,14 +45,18 @@ std::string base64_of(const std::vector<T>& values) {
   return base64(values.data(), values.size() * sizeof(T));
 }
 
-// JSON text that can sit inside a <script> element: "</" never appears
-// (only strings can hold '<'; "<\/" is the same JSON string).
+// JSON text that can sit inside a <script> element: no '<' at all (only
+// strings can hold one, and "\u003c" is the same JSON string), so neither
+// "</script>" nor "<!--", which would change how the browser reads the
+// element, can appear.
 std::string script_safe(const std::string& json) {
   std::string out;
   out.reserve(json.size());
-  for (std::size_t i = 0; i < json.size(); ++i) {
-    out += json[i];
-    if (json[i] == '<' && i + 1 < json.size() && json[i + 1] == '/') out += '\\';
+  for (char c : json) {
+    if (c == '<')
+      out += "\\u003c";
+    else
+      out += c;
   }
   return out;
 }
