@@ -392,3 +392,11 @@ TEST_CASE("--out writes UV.mtl and a checkerboard beside the OBJ, vt in the unit
   CHECK(clash.err.find("the checkerboard of --out") != std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("counts read as a person writes them: 1 face, 3 vertices") {
+  const fs::path dir = scratch_dir("one_face");
+  write_text(dir / "one.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0.2\nf 1 2 3\n");
+  const Outcome r = akvf_run({"param", (dir / "one.obj").string(), "-q"});
+  CHECK(r.code == akvf::kExitOk);
+  CHECK(r.out.find("one.obj: 3 vertices, 1 face; energy") != std::string::npos);
+}

@@ -100,7 +100,7 @@ TEST_CASE("OFF rejects bad counts") {
 
 TEST_CASE("OFF that declares more rows than it has fails fast without allocating them") {
   CHECK(off_error("OFF\n1000000000000 1 0\n0 0 0\n") ==
-        "line 2 of bad.off: counts 1000000000000 vertices, 1 faces are too large");
+        "line 2 of bad.off: the counts (1000000000000 vertices, 1 face) are too large");
   CHECK(off_error("OFF\n2000000 1 0\n0 0 0\n") == "line 3 of bad.off: file ends after 1 of 2000000 vertices");
   CHECK(off_error("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") == "line 6 of bad.off: file ends after 1 of 2 faces");
 }

@@ -212,6 +212,14 @@ TEST_CASE("STL: corners within the weld tolerance are one vertex, farther ones a
   CHECK(read_stl_text(near).num_vertices() == 4);  // 1e-7 apart: within the tolerance
 }
 
+TEST_CASE("STL: keywords in any case, as some writers spell them") {
+  std::string upper = "SOLID S\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 1 0\n"
+                      "ENDLOOP\nENDFACET\nENDSOLID S\n";
+  const akvf::TriMesh read = read_stl_text(upper);
+  CHECK(read.num_vertices() == 3);
+  CHECK(read.num_faces() == 1);
+}
+
 TEST_CASE("STL: malformed files name the line or the problem") {
   CHECK(stl_error("sold\n").find("m.stl: too short for an STL file") == 0);
   CHECK(stl_error("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n") ==

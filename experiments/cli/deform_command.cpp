@@ -15,6 +15,7 @@
 #include "framework/mesh/constraints_io.h"
 #include "framework/mesh/mesh_text.h"
 #include "framework/mesh/tet_mesh_io.h"
+#include "experiments/report/text_utilities.h"
 #include "framework/process/error.h"
 
 namespace akvf {
@@ -73,7 +74,7 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   const DeformRun run = run_deformation(input, path, constraints, config, callbacks);
   for (const auto& warning : run.warnings) err << "warning: " << warning << '\n';
   const TetMesh& mesh = run.prepared.mesh;
-  out << path << ": " << mesh.num_vertices() << " vertices, " << mesh.num_tets() << " tets, "
+  out << path << ": " << count_of(mesh.num_vertices(), "vertex", "vertices") << ", " << count_of(mesh.num_tets(), "tet") << ", "
       << constraints.vertices.size() << " constrained vertices; energy " << config.energy << ", preconditioner "
       << config.preconditioner << '\n'
       << summary_line(run.result);

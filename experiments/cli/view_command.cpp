@@ -8,6 +8,7 @@
 #include "experiments/report/html_view.h"
 #include "experiments/report/json_text.h"
 #include "framework/mesh/mesh_io.h"
+#include "experiments/report/text_utilities.h"
 #include "framework/process/error.h"
 
 namespace akvf {
@@ -57,7 +58,7 @@ int view_command(const std::vector<std::string>& args, std::ostream& out, std::o
   content.title = cl.text("title", std::filesystem::path(path).filename().string());
   if (!summary_path.empty()) content.summary = read_json_file(summary_path);
   write_html_view(out_path, content);
-  out << "wrote " << out_path << " (" << content.mesh.num_faces() << " faces)\n";
+  out << "wrote " << out_path << " (" << count_of(content.mesh.num_faces(), "face") << ")\n";
   return kExitOk;
 }
 

@@ -7,6 +7,10 @@
 
 namespace akvf {
 
+std::string count_of(long long n, const std::string& singular, const std::string& plural) {
+  return std::to_string(n) + " " + (n == 1 ? singular : plural.empty() ? singular + "s" : plural);
+}
+
 std::string xml_escape(const std::string& text) {
   std::string out;
   for (char c : text) {

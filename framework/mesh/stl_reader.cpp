@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -43,21 +44,37 @@ std::vector<Corner> binary_corners(const std::string& data, const std::string& f
   return corners;
 }
 
+// The keyword a line starts with, in lower case (writers differ: "SOLID").
+std::string keyword(const TextReader& reader) {
+  std::string word(reader.tokens()[0]);
+  std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::tolower(c); });
+  return word;
+}
+
+// Whether `data` starts with "solid" in any case (after a UTF-8 byte-order mark).
+bool starts_ascii(const std::string& data) {
+  const std::size_t at = data.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  if (data.size() < at + 5) return false;
+  std::string word = data.substr(at, 5);
+  std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::tolower(c); });
+  return word == "solid";
+}
+
 // Corners of an ASCII file: solid / facet normal / outer loop / 3 x vertex /
-// endloop / endfacet / endsolid.
+// endloop / endfacet / endsolid, keywords in any case.
 std::vector<Corner> ascii_corners(const std::string& data, const std::string& file) {
   std::istringstream in(data);
   TextReader reader(in, file);
   std::vector<Corner> corners;
   const auto expect = [&](const char* word) {
     if (!reader.next_line()) reader.fail(std::string("the file ends where '") + word + "' was expected");
-    if (reader.tokens()[0] != word)
+    if (keyword(reader) != word)
       reader.fail(std::string("expected '") + word + "', found '" + std::string(reader.tokens()[0]) + "'");
   };
   expect("solid");
   while (true) {
     if (!reader.next_line()) reader.fail("the file ends before 'endsolid'");
-    const std::string_view word = reader.tokens()[0];
+    const std::string word = keyword(reader);
     if (word == "endsolid") break;
     if (word != "facet") reader.fail("expected 'facet' or 'endsolid', found '" + std::string(word) + "'");
     expect("outer");
@@ -68,8 +85,8 @@ std::vector<Corner> ascii_corners(const std::string& data, const std::string& fi
                          reader.real(3, "vertex coordinate")});
     }
     if (!reader.next_line()) reader.fail("the file ends before 'endloop'");
-    if (reader.tokens()[0] == "vertex") reader.fail("a facet with more than 3 vertices; only triangles are supported");
-    if (reader.tokens()[0] != "endloop")
+    if (keyword(reader) == "vertex") reader.fail("a facet with more than 3 vertices; only triangles are supported");
+    if (keyword(reader) != "endloop")
       reader.fail("expected 'endloop', found '" + std::string(reader.tokens()[0]) + "'");
     expect("endfacet");
   }
@@ -137,7 +154,7 @@ TriMesh read_stl(std::istream& in, const std::string& file_name) {
   if (data.size() >= 84) std::memcpy(&facets, data.data() + 80, 4);
   if (data.size() >= 84 && data.size() == 84 + 50 * static_cast<std::size_t>(facets)) {
     corners = binary_corners(data, file_name);
-  } else if (data.compare(0, 5, "solid") == 0 || data.compare(0, 8, "\xEF\xBB\xBFsolid") == 0) {
+  } else if (starts_ascii(data)) {
     corners = ascii_corners(data, file_name);
   } else {
     throw InputError(file_name, 0,
