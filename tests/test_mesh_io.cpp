@@ -60,7 +60,23 @@ TEST_CASE("OBJ rejects a relative index before the first vertex") {
 
 TEST_CASE("OBJ rejects a corner that is not a number") {
   CHECK(obj_error(kSquareVertices + "f a 1 2\n") ==
-        "line 5 of bad.obj: face corner 'a' does not start with a vertex index");
+        "line 5 of bad.obj: face corner 'a' does not start with a vertex index (a whole number)");
+  CHECK(obj_error(kSquareVertices + "f 1e20 1 2\n") ==
+        "line 5 of bad.obj: face corner '1e20' does not start with a vertex index (a whole number)");
+}
+
+TEST_CASE("OBJ names a huge index as it is written") {
+  CHECK(obj_error(kSquareVertices + "f 1 2 2147483648\n") ==
+        "line 5 of bad.obj: face index 2147483648 out of range (4 vertices)");
+  CHECK(obj_error(kSquareVertices + "f 1 2 99999999999999999999999\n") ==
+        "line 5 of bad.obj: face index 99999999999999999999999 is too large");
+}
+
+TEST_CASE("OBJ in UTF-16 is named as such, not as a file without vertices") {
+  std::string utf16 = "\xFF\xFE";
+  for (char c : kSquareVertices + "f 1 2 3\n") utf16 += std::string{c, '\0'};
+  CHECK(obj_error(utf16) == "line 1 of bad.obj: the file is UTF-16; save it as UTF-8 or ASCII");
+  CHECK(obj_error(utf16.substr(2)).find("line 1 of bad.obj: a NUL byte: the file is not text") == 0);
 }
 
 TEST_CASE("OBJ rejects a bad or non-finite coordinate") {

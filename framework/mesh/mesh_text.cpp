@@ -19,8 +19,12 @@ long long obj_corner_index(const TextReader& reader, std::string_view token, lon
                            const std::string& element) {
   const std::string_view head = token.substr(0, token.find('/'));
   long long index = 0;
-  if (!parse_integer(head, &index))
-    reader.fail(element + " corner '" + std::string(token) + "' does not start with a vertex index");
+  if (!parse_integer(head, &index)) {
+    const bool digits = !head.empty() && std::all_of(head.begin() + (head[0] == '-' || head[0] == '+'), head.end(),
+                                                     [](char c) { return c >= '0' && c <= '9'; });
+    if (digits) reader.fail(element + " index " + std::string(head) + " is too large");
+    reader.fail(element + " corner '" + std::string(token) + "' does not start with a vertex index (a whole number)");
+  }
   if (index == 0) reader.fail(element + " corner '" + std::string(token) + "': OBJ indices start at 1, not 0");
   if (index < 0) {
     const long long resolved = vertices_so_far + index;
@@ -46,18 +50,33 @@ int obj_texture_index(std::string_view token, long long textures_so_far) {
   return resolved >= 0 && resolved < textures_so_far ? static_cast<int>(resolved) : -1;
 }
 
+// A UTF-16 byte-order mark at the start: a text reader of bytes would see
+// no statement at all.
+void refuse_utf16(std::istream& in, const std::string& file_name) {
+  const int first = in.peek();
+  if (first != 0xFF && first != 0xFE) return;
+  in.get();
+  const int second = in.peek();
+  in.unget();
+  if ((first == 0xFF && second == 0xFE) || (first == 0xFE && second == 0xFF))
+    throw InputError(file_name, 1, "the file is UTF-16; save it as UTF-8 or ASCII");
+}
+
 }  // namespace
 
 RawElements read_obj_elements(std::istream& in, const std::string& file_name, int corners, const std::string& element,
                               const std::string& advice, Warnings* warnings) {
   // Statements of the OBJ format that carry nothing a distortion energy uses.
   static const std::set<std::string, std::less<>> kIgnored = {"vn", "vp", "g", "o", "s", "usemtl", "mtllib", "l", "p"};
+  refuse_utf16(in, file_name);
   TextReader reader(in, file_name);
   RawElements raw;
   std::vector<long> element_lines;
   std::map<std::string, std::pair<long, long>> unknown;  // statement -> (first line, count)
   while (reader.next_line()) {
     const auto& t = reader.tokens();
+    if (t[0].find('\0') != std::string_view::npos)
+      reader.fail("a NUL byte: the file is not text (UTF-16? save it as UTF-8 or ASCII)");
     if (t[0] == "v") {
       // x y z, an optional weight w, or the common x y z r g b colour extension.
       if (t.size() < 4) reader.fail("vertex needs three coordinates, found " + std::to_string(t.size() - 1));
@@ -98,7 +117,8 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
     for (int k = 0; k < corners; ++k)
       if (raw.corners[corners * e + k] >= nv)
         throw InputError(file_name, element_lines[e],
-                         element + " index " + std::to_string(raw.corners[corners * e + k] + 1) + " out of range (" +
+                         element + " index " + std::to_string(static_cast<long long>(raw.corners[corners * e + k]) + 1) +
+                             " out of range (" +
                              std::to_string(nv) + " vertices)");
   if (nv == 0) throw InputError(file_name, 0, "no vertices");
   if (element_lines.empty()) throw InputError(file_name, 0, "no " + element + "s");
