@@ -1,5 +1,7 @@
 #include "akvf/parameterize.h"
 
+#include <atomic>
+
 #include "akvf/catalog.h"
 #include "akvf/options.h"
 #include "akvf/parameterization.h"
@@ -27,8 +29,13 @@ struct Parameterizer::State {
     setup = prepare_parameterization(mesh, "mesh", config);
   }
 
-  ParameterizeResult run(const ParamSetup& from) const {
-    const ParamRun run = run_parameterization(from, config, options.callbacks);
+  // Set while a solve or set_options runs (Busy below).
+  std::atomic<bool> busy{false};
+
+  ParameterizeResult run(const ParamSetup& from, const std::vector<IterationCallback>& more) const {
+    std::vector<IterationCallback> callbacks = options.callbacks;
+    callbacks.insert(callbacks.end(), more.begin(), more.end());
+    const ParamRun run = run_parameterization(from, config, callbacks);
     ParameterizeResult result;
     result.uv = output_uv(from, run.result.x);
     result.uv_faces = output_uv_faces(from);
@@ -54,16 +61,41 @@ Parameterizer::~Parameterizer() = default;
 Parameterizer::Parameterizer(Parameterizer&&) noexcept = default;
 Parameterizer& Parameterizer::operator=(Parameterizer&&) noexcept = default;
 
-ParameterizeResult Parameterizer::solve() { return state_->run(state_->setup); }
+namespace {
+// Marks a Parameterizer busy for its lifetime; a second one at the same time
+// (another thread, or a callback of the running solve) throws.
+class Busy {
+ public:
+  Busy(std::atomic<bool>* flag, const char* what) : flag_(flag) {
+    if (flag_->exchange(true))
+      throw OptionsError(std::string("Parameterizer::") + what +
+                         ": this Parameterizer is solving (in another thread, or this is its own callback); use one "
+                         "Parameterizer per thread, and change options between solves");
+  }
+  ~Busy() { flag_->store(false); }
+  Busy(const Busy&) = delete;
+  Busy& operator=(const Busy&) = delete;
 
-ParameterizeResult Parameterizer::solve(const Eigen::MatrixXd& uv0) {
+ private:
+  std::atomic<bool>* flag_;
+};
+}  // namespace
+
+ParameterizeResult Parameterizer::solve(const std::vector<IterationCallback>& callbacks) {
+  const Busy busy(&state_->busy, "solve");
+  return state_->run(state_->setup, callbacks);
+}
+
+ParameterizeResult Parameterizer::solve(const Eigen::MatrixXd& uv0, const std::vector<IterationCallback>& callbacks) {
+  const Busy busy(&state_->busy, "solve");
   ParamSetup from = state_->setup;
   from.warm_start = {};
   from.x0 = start_from_map(state_->setup, uv0, "the start map", false, nullptr);
-  return state_->run(from);
+  return state_->run(from, callbacks);
 }
 
 void Parameterizer::set_options(const ParameterizeOptions& options) {
+  const Busy busy(&state_->busy, "set_options");
   const ParameterizeOptions& old = state_->options;
   const bool new_start = options.init != old.init || options.cut != old.cut || options.flaps != old.flaps ||
                          options.energy != old.energy || options.exponent != old.exponent ||

@@ -117,14 +117,18 @@ class Parameterizer {
   Parameterizer& operator=(Parameterizer&&) noexcept;
 
   // From the initial map (Tutte + flaps, or the warm start of energies that
-  // overflow there).
-  ParameterizeResult solve();
+  // overflow there). `callbacks` are called for this solve only, after
+  // options().callbacks.
+  ParameterizeResult solve(const std::vector<IterationCallback>& callbacks = {});
   // From `uv0` (#V by 2, any scale and placement): OptionsError if it is
   // not of that shape, ValidationError naming the first inverted triangle.
-  ParameterizeResult solve(const Eigen::MatrixXd& uv0);
+  ParameterizeResult solve(const Eigen::MatrixXd& uv0, const std::vector<IterationCallback>& callbacks = {});
 
   // New options for the next solves; the initial map is recomputed only if
   // init, cut, flaps, energy, exponent, warm_start_iters or injectivity changed.
+  // One Parameterizer does one thing at a time: solve() or set_options()
+  // while it is solving (from another thread, or from a callback) throws
+  // OptionsError and changes nothing.
   void set_options(const ParameterizeOptions& options);
   const ParameterizeOptions& options() const;
 

@@ -171,27 +171,11 @@ py::dict solve(akvf::Parameterizer& solver, const py::object& uv0, const py::obj
   std::optional<Eigen::MatrixXd> start;
   if (!uv0.is_none()) start = akvf::python::float_matrix(uv0, "uv0", 2);
   PythonCallback hooks(callback, [&solver](const Eigen::VectorXd& x) { return solver.uv_of(x); });
-  // The solver holds the callbacks (which refer to `hooks`) for this solve
-  // only: they are taken back however the solve ends, an exception included.
-  struct CallbacksForThisSolve {
-    akvf::Parameterizer& solver;
-    akvf::ParameterizeOptions options;
-    CallbacksForThisSolve(akvf::Parameterizer& s, std::vector<akvf::IterationCallback> callbacks)
-        : solver(s), options(s.options()) {
-      options.callbacks = std::move(callbacks);
-      solver.set_options(options);  // callbacks alone: the initial map is kept
-    }
-    ~CallbacksForThisSolve() {
-      options.callbacks.clear();
-      solver.set_options(options);
-    }
-  };
   akvf::ParameterizeResult result;
   const InterruptScope interrupts;
   {
-    const CallbacksForThisSolve scoped(solver, hooks.callbacks());
     const py::gil_scoped_release release;
-    result = start ? solver.solve(*start) : solver.solve();
+    result = start ? solver.solve(*start, hooks.callbacks()) : solver.solve(hooks.callbacks());
   }
   interrupts.raise_if_interrupted();
   hooks.raise_if_failed();

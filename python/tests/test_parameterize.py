@@ -283,3 +283,37 @@ def test_linear_solver_amg_reaches_the_cholesky_energy(disk):
     assert amg.statistics["factorizations"] == 0
     assert amg.energy == pytest.approx(cholmod.energy, rel=1e-8)
     assert (signed_areas(amg.uv, F) > 0).all()
+
+
+def test_one_parameterizer_does_one_thing_at_a_time(disk):
+    """A second solve, or set_options, while a solve runs (another thread, or
+    the solve's own callback) raises OptionsError and changes nothing."""
+    import threading
+    V, F = disk
+    solver = akvf.Parameterizer(V, F)
+    reference = solver.solve()
+    started, release = threading.Event(), threading.Event()
+
+    def slow(row, uv):
+        if row["iter"] == 1:
+            started.set()
+            release.wait(30)
+
+    results = {}
+    worker = threading.Thread(target=lambda: results.setdefault("a", solver.solve(callback=slow)))
+    worker.start()
+    assert started.wait(30)
+    with pytest.raises(akvf.OptionsError, match="this Parameterizer is solving"):
+        solver.solve()
+    with pytest.raises(akvf.OptionsError, match="this Parameterizer is solving"):
+        solver.set_options(energy="arap")
+    release.set()
+    worker.join()
+    assert np.array_equal(results["a"].uv, reference.uv)
+
+    def changes_options(row, uv):
+        solver.set_options(energy="arap")
+
+    with pytest.raises(akvf.OptionsError, match="its own callback"):
+        solver.solve(callback=changes_options)
+    assert solver.options == {} and np.array_equal(solver.solve().uv, reference.uv)
