@@ -1,5 +1,7 @@
 #include "akvf/deform.h"
 
+#include <vector>
+
 #include "akvf/deformation.h"
 #include "akvf/options.h"
 #include "framework/optimization/distortion_objective.h"
@@ -35,10 +37,18 @@ DeformResult Deformer::solve(const PositionConstraints& constraints, const Defor
     throw InputError("constraints: " + std::to_string(constraints.vertices.size()) + " indices but targets of " +
                      std::to_string(constraints.targets.rows()) + " by " + std::to_string(constraints.targets.cols()) +
                      " (expected #C by 3)");
-  for (std::size_t c = 0; c < constraints.vertices.size(); ++c)
-    if (constraints.vertices[c] < 0 || constraints.vertices[c] >= num_vertices)
-      throw InputError("constraint " + std::to_string(c) + ": vertex index " + std::to_string(constraints.vertices[c]) +
-                       " out of range (" + std::to_string(num_vertices) + " vertices, 0-based)");
+  std::vector<int> first(static_cast<std::size_t>(num_vertices), -1);  // the constraint naming each vertex
+  for (std::size_t c = 0; c < constraints.vertices.size(); ++c) {
+    const int v = constraints.vertices[c];
+    if (v < 0 || v >= num_vertices)
+      throw InputError("constraint " + std::to_string(c) + ": vertex index " + std::to_string(v) + " out of range (" +
+                       std::to_string(num_vertices) + " vertices, 0-based)");
+    // As the constraints file: one target per vertex, never an average.
+    if (first[v] >= 0)
+      throw InputError("constraint " + std::to_string(c) + ": vertex " + std::to_string(v) +
+                       " is already constrained by constraint " + std::to_string(first[v]));
+    first[v] = static_cast<int>(c);
+  }
   check_options(options);
   DeformConfig config = deform_config(options);
   config.preconditioner_settings.share_analyses(state_->analyses);

@@ -72,5 +72,8 @@ def test_constraints_are_checked():
         akvf.deform(V, T, ([0, 1, 2], np.zeros((2, 3))))
     with pytest.raises(akvf.InputError, match="out of range"):
         akvf.deform(V, T, ([0, 999], np.zeros((2, 3))))
+    # A vertex given two targets is refused, as in a constraints file, not averaged.
+    with pytest.raises(akvf.InputError, match="constraint 2: vertex 0 is already constrained by constraint 0"):
+        akvf.deform(V, T, ([0, 1, 0], np.array([[0, 0, 0], [1, 0, 0], [0, 0, 1.0]])))
     with pytest.raises(akvf.OptionsError, match="weight"):
         akvf.deform(V, T, ([0], np.zeros((1, 3))), weight=-1)
