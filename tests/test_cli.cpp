@@ -161,6 +161,10 @@ TEST_CASE("plot draws trace files as SVG lines, a malformed trace names its line
   CHECK(bad.err.find("line 3 of") != std::string::npos);
   CHECK(bad.err.find("column seconds: 'x' is not a number") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "bad.svg"));
+  write_text(dir / "header_only.csv", "iter,seconds,energy,status\n");
+  const Outcome empty = akvf_run({"plot", (dir / "header_only.csv").string(), "--out", (dir / "e.svg").string()});
+  CHECK(empty.code == akvf::kExitInputError);
+  CHECK(empty.err.find("header_only.csv: the trace has a header but no rows") != std::string::npos);
   fs::remove_all(dir);
 }
 

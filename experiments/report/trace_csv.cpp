@@ -139,6 +139,8 @@ TraceTable read_trace_csv(const std::string& path) {
       table.columns[header[c]].push_back(value);
     }
   }
+  if (table.status.empty() && table.columns.empty())
+    throw InputError(path, 1, "the trace has a header but no rows (a run that wrote none, or a file cut short)");
   return table;
 }
 
