@@ -32,11 +32,13 @@ void for_each_overlapping_pair(const std::vector<Box2>& a, const std::vector<Box
   const long long nx = std::min<long long>(static_cast<long long>(width / cell) + 1, 4LL * count + 1);
   const long long ny = std::min<long long>(static_cast<long long>(height / cell) + 1, 4LL * count + 1);
   const double cell_x = width / nx > cell ? width / nx : cell, cell_y = height / ny > cell ? height / ny : cell;
+  // Clamped as doubles first: a box far outside b's (a long sweep) must not
+  // overflow the conversion.
   auto column = [&](double x) {
-    return std::clamp<long long>(static_cast<long long>(std::floor((x - all.min_x) / cell_x)), 0, nx - 1);
+    return static_cast<long long>(std::clamp(std::floor((x - all.min_x) / cell_x), 0.0, double(nx - 1)));
   };
   auto row = [&](double y) {
-    return std::clamp<long long>(static_cast<long long>(std::floor((y - all.min_y) / cell_y)), 0, ny - 1);
+    return static_cast<long long>(std::clamp(std::floor((y - all.min_y) / cell_y), 0.0, double(ny - 1)));
   };
   // Compressed cell lists of b: start[c] .. start[c + 1] in `members`.
   std::vector<std::pair<long long, int>> entries;

@@ -39,8 +39,10 @@ UvOverlap measure_uv_overlap(const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F
       }
     const double box_area = std::max((high.x() - low.x()) * (high.y() - low.y()), 1e-300);
     const double share = std::max(1024.0, static_cast<double>(samples) * chart_area[chart] / total_area);
-    // Square cells, as many as the share asks over the chart's box.
-    const double cell = std::sqrt(box_area / share);
+    // Square cells, as many as the share asks over the chart's box, and no
+    // more than 4 sqrt(share) along its longer side (a long thin chart).
+    const double cell = std::max(std::sqrt(box_area / share),
+                                 std::max(high.x() - low.x(), high.y() - low.y()) / (4 * std::sqrt(share)));
     const long long nx = std::max(1LL, static_cast<long long>(std::ceil((high.x() - low.x()) / cell)));
     const long long ny = std::max(1LL, static_cast<long long>(std::ceil((high.y() - low.y()) / cell)));
     count.assign(static_cast<size_t>(nx * ny), 0);
