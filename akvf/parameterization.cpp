@@ -9,8 +9,8 @@
 #include "framework/mesh/chart_layout.h"
 #include "framework/mesh/vertex_graph.h"
 #include "framework/optimization/injective_objective.h"
-#include "preconditioners/contact_preconditioner.h"
 #include "framework/process/error.h"
+#include "preconditioners/contact_preconditioner.h"
 #include "solvers/lbfgs_solver.h"
 #include "solvers/sparse_cholesky.h"
 
@@ -61,6 +61,7 @@ SpdSolver tutte_solver(const std::shared_ptr<const BlockOrdering>& ordering) {
     return solve_positive_definite(A, B, X, &restricted);
   };
 }
+
 // The boundary loops with the normalized mesh as their rest shape: its
 // positions and each vertex's angle sum.
 std::shared_ptr<const BoundaryContact> boundary_contact_of(const TriMesh& normalized,
@@ -96,6 +97,7 @@ int shorten_crossing_flaps(const BoundaryContact& contact, const Eigen::MatrixXd
   }
   return static_cast<int>(std::count_if(halvings.begin(), halvings.end(), [](int n) { return n > 0; }));
 }
+
 }  // namespace
 
 ParamSetup prepare_parameterization(const TriMesh& input, const std::string& name, const ParamConfig& config) {
