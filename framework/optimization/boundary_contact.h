@@ -31,7 +31,7 @@ class BoundaryContact {
   //                inner angle an isometric map gives a boundary vertex)
   //   faces        #F by 3: the mesh's triangles
   // The barrier's reach and weight are set from the rest shape (below), so
-  // that it stays zero on an isometric map.
+  // that it stays zero on an isometric map, a seam's two sides apart.
   BoundaryContact(const std::vector<std::vector<int>>& loops, const Eigen::MatrixXd& rest,
                   const Eigen::VectorXd& rest_angle, const Eigen::MatrixXi& faces);
 
@@ -60,7 +60,8 @@ class BoundaryContact {
   //     vertex whose inner angle nears 2 pi, its neighbour reaching its other
   //     edge (the pair the first kind leaves out, since at the other end,
   //     theta near 0, it is a sharp but valid corner).
-  // Measured against the rest shape, each term is zero on an isometric map.
+  // Measured against the rest shape, each term is zero on an isometric map,
+  // but for a seam's two sides, which it holds apart.
   // Adds dE_B/dx to *gradient when given (sized 2|V|).
   double barrier(const Eigen::VectorXd& x, Eigen::VectorXd* gradient) const;
 
