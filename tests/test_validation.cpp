@@ -160,7 +160,8 @@ TEST_CASE("unreferenced vertices are dropped with a warning and mapped back") {
   CHECK(disk.input_vertex.back() == 9);
   REQUIRE(disk.warnings.size() == 1);
   CHECK(disk.warnings[0] ==
-        "p.obj: dropped 2 unreferenced vertices (first: 0 (numbered from 0)); they get UV (0, 0) in the output");
+        "p.obj: dropped 2 unreferenced vertices (first: 0 (numbered from 0)); no face uses their UV: (0, 0) where one "
+        "per vertex is written at the input's scale (the API's uv, PLY, --texture none)");
 }
 
 TEST_CASE("midpoint subdivision keeps a disk a disk and multiplies the faces by 4 per round") {

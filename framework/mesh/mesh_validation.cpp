@@ -53,7 +53,9 @@ DiskMesh compact(const TriMesh& input, const std::string& name) {
   if (dropped > 0)
     out.warnings.push_back(name + ": dropped " + std::to_string(dropped) +
                            " unreferenced vertices (first: " + file_number(first_dropped, input.index_base) +
-                           numbering_note(input.index_base) + "); they get UV (0, 0) in the output");
+                           numbering_note(input.index_base) +
+                           "); no face uses their UV: (0, 0) where one per vertex is written at the input's scale "
+                           "(the API's uv, PLY, --texture none)");
   return out;
 }
 
