@@ -98,7 +98,9 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   if (run.boundary_crossings > 0 || run.overlap.overlapped_samples > 0)
     err << "warning: the UV map overlaps itself: " << run.boundary_crossings << " pairs of boundary edges cross, "
         << 100 * run.overlap.fraction() << " % of its area lies over another part"
-        << (config.global_injectivity ? " (the start map already overlapped)\n" : " (--injectivity global prevents it)\n");
+        << (config.global_injectivity ? " (global injectivity keeps only a start without overlap so, and L-BFGS only "
+                                        "by its barrier)\n"
+                                      : " (--injectivity global prevents it)\n");
 
   const Eigen::MatrixXd UV = output_uv(setup, result.x);
   const Eigen::MatrixXi UV_faces = output_uv_faces(setup);

@@ -40,7 +40,7 @@ void for_each_overlapping_pair(const std::vector<Box2>& a, const std::vector<Box
   auto row = [&](double y) {
     return static_cast<long long>(std::clamp(std::floor((y - all.min_y) / cell_y), 0.0, double(ny - 1)));
   };
-  // Compressed cell lists of b: start[c] .. start[c + 1] in `members`.
+  // (cell, box of b) for every cell each box of b covers, sorted by cell.
   std::vector<std::pair<long long, int>> entries;
   entries.reserve(2 * b.size());
   for (int j = 0; j < static_cast<int>(b.size()); ++j) {

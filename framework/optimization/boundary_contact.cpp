@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "framework/mesh/box_pairs.h"
+#include "framework/optimization/flip_free_step.h"
 
 namespace akvf {
 
@@ -14,28 +15,6 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 Vec2 point(const Eigen::VectorXd& x, int v) { return x.segment<2>(2 * v); }
-
-// The roots of a t^2 + b t + c in (0, horizon], ascending; returns how many.
-// The two roots are q / a and c / q with q = -(b + sign(b) sqrt(b^2 - 4ac)) / 2,
-// which keeps the small root accurate when a is tiny.
-int roots_in(double a, double b, double c, double horizon, double roots[2]) {
-  double r[2];
-  int m = 0;
-  if (a == 0) {
-    if (b != 0) r[m++] = -c / b;
-  } else {
-    const double discriminant = b * b - 4 * a * c;
-    if (discriminant < 0) return 0;  // the line is grazed or missed, never crossed
-    const double q = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
-    r[m++] = q / a;
-    if (q != 0) r[m++] = c / q;
-  }
-  int n = 0;
-  for (int k = 0; k < m; ++k)
-    if (r[k] > 0 && r[k] <= horizon) roots[n++] = r[k];
-  if (n == 2 && roots[1] < roots[0]) std::swap(roots[0], roots[1]);
-  return n;
-}
 
 Box2 bounds(std::initializer_list<Vec2> points, double margin) {
   Box2 box{kInfinity, kInfinity, -kInfinity, -kInfinity};
@@ -64,8 +43,8 @@ double vertex_edge_contact(const Vec2& p, const Vec2& dp, const Vec2& a, const V
     a0 = u.dot(w);
   }
   double roots[2];
-  const int n = roots_in(a2, a1, a0, horizon, roots);
-  for (int k = 0; k < n; ++k) {
+  const int n = positive_roots(a2, a1, a0, roots);
+  for (int k = 0; k < n && roots[k] <= horizon; ++k) {
     if (collinear_throughout) return roots[k];
     const double t = roots[k];
     if ((u + t * du).dot(w + t * dw) <= 0) return t;
@@ -73,12 +52,13 @@ double vertex_edge_contact(const Vec2& p, const Vec2& dp, const Vec2& a, const V
   return kInfinity;
 }
 
-// The distance of p from the segment a b, points of R^3.
-double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  const Eigen::Vector3d edge = b - a;
+// The parameter s in [0, 1] of the point (1 - s) a + s b of the segment a b
+// closest to p (2D map or 3D rest positions).
+template <class Vec>
+double closest_parameter(const Vec& p, const Vec& a, const Vec& b) {
+  const Vec edge = b - a;
   const double length2 = edge.squaredNorm();
-  const double s = length2 > 0 ? std::clamp((p - a).dot(edge) / length2, 0.0, 1.0) : 0.0;
-  return (p - a - s * edge).norm();
+  return length2 > 0 ? std::clamp((p - a).dot(edge) / length2, 0.0, 1.0) : 0.0;
 }
 
 bool segments_meet(const Vec2& a1, const Vec2& b1, const Vec2& a2, const Vec2& b2) {
@@ -153,7 +133,9 @@ double BoundaryContact::first_contact_step(const Eigen::VectorXd& x, const Eigen
 constexpr double kSeamTolerance = 1e-3;
 
 double BoundaryContact::rest_distance(int p, int a, int b) const {
-  return point_segment_distance(rest_.row(p).transpose(), rest_.row(a).transpose(), rest_.row(b).transpose());
+  const Eigen::Vector3d P = rest_.row(p).transpose(), A = rest_.row(a).transpose(), B = rest_.row(b).transpose();
+  const double s = closest_parameter(P, A, B);
+  return (P - (A + s * (B - A))).norm();
 }
 
 template <class Visit>
@@ -170,10 +152,9 @@ void BoundaryContact::for_each_term(const Eigen::VectorXd& x, const Visit& visit
     const std::vector<int>& joined = neighbours_[c.vertex];
     if (std::binary_search(joined.begin(), joined.end(), e.a) || std::binary_search(joined.begin(), joined.end(), e.b))
       return;
-    const Vec2 p = point(x, c.vertex), a = point(x, e.a), b = point(x, e.b), edge = b - a;
-    const double length2 = edge.squaredNorm();
-    const double s = length2 > 0 ? std::clamp((p - a).dot(edge) / length2, 0.0, 1.0) : 0.0;
-    const Vec2 r = p - (a + s * edge);
+    const Vec2 p = point(x, c.vertex), a = point(x, e.a), b = point(x, e.b);
+    const double s = closest_parameter(p, a, b);
+    const Vec2 r = p - (a + s * (b - a));
     const double distance = r.norm();
     if (!(distance < 0.5 * e.rest_length)) return;
     // Half the rest distance, where the isometric map would put them; a

@@ -83,8 +83,6 @@ class BoundaryContact {
   std::vector<std::array<int, 4>> crossings(const Eigen::VectorXd& x) const;
   int count_crossings(const Eigen::VectorXd& x) const { return static_cast<int>(crossings(x).size()); }
 
-  bool empty() const { return edges_.empty(); }
-
  private:
   struct Edge {
     int a, b;  // vertex indices, a -> b along the loop

@@ -8,18 +8,28 @@
 
 namespace akvf {
 
+int positive_roots(double a, double b, double c, double roots[2]) {
+  double candidates[2];
+  int m = 0;
+  if (a == 0) {
+    if (b != 0) candidates[m++] = -c / b;  // linear; constant: no root, or every t
+  } else {
+    const double discriminant = b * b - 4 * a * c;
+    if (discriminant < 0) return 0;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
+    candidates[m++] = q / a;
+    if (q != 0) candidates[m++] = c / q;  // q = 0 only for b = 0 and a c = 0: the double root 0
+  }
+  int n = 0;
+  for (int k = 0; k < m; ++k)
+    if (candidates[k] > 0) roots[n++] = candidates[k];
+  if (n == 2 && roots[1] < roots[0]) std::swap(roots[0], roots[1]);
+  return n;
+}
+
 double smallest_positive_root(double a, double b, double c) {
-  constexpr double kNone = std::numeric_limits<double>::infinity();
-  if (a == 0) return b < 0 ? -c / b : kNone;  // linear, or constant c > 0
-  const double discriminant = b * b - 4 * a * c;
-  if (discriminant < 0) return kNone;
-  const double q = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
-  // q != 0: q = 0 would need b = 0 and a c = 0, excluded by a != 0, c > 0.
-  const double r1 = q / a, r2 = c / q;
-  double best = kNone;
-  if (r1 > 0) best = r1;
-  if (r2 > 0 && r2 < best) best = r2;
-  return best;
+  double roots[2];
+  return positive_roots(a, b, c, roots) > 0 ? roots[0] : std::numeric_limits<double>::infinity();
 }
 
 double triangle_flip_step(const double Ds[4], const double Dd[4]) {

@@ -15,6 +15,11 @@ namespace akvf {
 // "c / q only" shortcut divides by the wrong coefficient).
 double smallest_positive_root(double a, double b, double c);
 
+// The positive roots of a t^2 + b t + c, ascending, in roots[0..n); returns
+// n (0 to 2). The same stable formula, with no condition on c (boundary
+// contact, boundary_contact.h, needs every root, not only the smallest).
+int positive_roots(double a, double b, double c, double roots[2]);
+
 // The step at which the triangle with edge matrices Ds = [e1 e2] (current)
 // and Dd (direction), column-major 2x2 stored as {m00, m10, m01, m11},
 // becomes degenerate.

@@ -3,9 +3,9 @@
 //   E(x) = E_base(x) + E_B(x),
 // the boundary barrier added to the wrapped distortion, and a feasible step
 // that is also free of boundary contact. Everything else (the inverted
-// count, the bad element, the lower bound) is the wrapped objective's; the
-// preconditioners see the wrapped MeshObjective, as the barrier is zero
-// except where boundary parts come within half an edge of each other.
+// count, the bad element, the lower bound) is the wrapped objective's. The
+// preconditioners are built on the wrapped MeshObjective, and
+// preconditioners/contact_preconditioner.h adds the barrier's curvature.
 #include <Eigen/Core>
 #include <memory>
 
@@ -18,10 +18,12 @@ class InjectiveObjective final : public Objective {
  public:
   //   horizon  how far along a direction boundary contact is searched: the
   //            step bound is min(flip-free step, first contact, horizon).
-  //            Line searches never try a step beyond max_initial_step, nor
-  //            beyond max_step_fraction of the bound, so a horizon of
-  //            2 max_initial_step / max_step_fraction leaves them as they
-  //            were wherever no contact is near (injective_step_horizon).
+  //            Backtracking starts at most at max_initial_step, and no
+  //            search goes beyond max_step_fraction of the bound, so a
+  //            horizon of 2 max_initial_step / max_step_fraction leaves
+  //            backtracking as it was wherever no contact is near (the
+  //            Wolfe search's growth stops at twice max_initial_step);
+  //            injective_step_horizon.
   InjectiveObjective(const Objective& base, std::shared_ptr<const BoundaryContact> contact, double horizon);
 
   int num_variables() const override { return base_.num_variables(); }
