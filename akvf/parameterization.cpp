@@ -144,7 +144,8 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
     if (config.optimize_flaps) {
       const Eigen::MatrixXd tutte = UV;
       setup.flaps_moved = optimize_flaps(normalized, &UV);
-      if (config.global_injectivity) setup.flaps_shortened = shorten_crossing_flaps(*setup.boundary_contact, tutte, &UV);
+      if (config.global_injectivity)
+        setup.flaps_shortened = shorten_crossing_flaps(*setup.boundary_contact, tutte, &UV);
     }
     setup.x0 = stack_uv(UV);
   }
@@ -183,10 +184,10 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
   ParamRun run;
   std::unique_ptr<InjectiveObjective> injective;
   if (config.global_injectivity)
-    injective = std::make_unique<InjectiveObjective>(
-        *setup.objective, setup.boundary_contact,
-        injective_step_horizon(config.line_search_settings.max_initial_step,
-                               config.line_search_settings.max_step_fraction));
+    injective =
+        std::make_unique<InjectiveObjective>(*setup.objective, setup.boundary_contact,
+                                             injective_step_horizon(config.line_search_settings.max_initial_step,
+                                                                    config.line_search_settings.max_step_fraction));
   const Objective& objective = injective ? static_cast<const Objective&>(*injective) : *setup.objective;
   OptimizerOptions optimizer = config.optimizer;
   optimizer.acceleration_eta =

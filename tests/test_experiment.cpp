@@ -116,7 +116,8 @@ TEST_CASE("manifest errors point at the offending key") {
   CHECK(manifest_error("{\"meshes\": [{\"label\": \"A\",\n\"file\": \"a.obj\", \"subdivide\": 4e999}]}") ==
         "line 2 of m.json: invalid JSON: number 4e999 is out of range");
   // A key given twice: refused, not the last one silently kept.
-  CHECK(manifest_error("{" + base_mesh + R"(, "methods": [{"label": "Newton", "precond": "newton", "precond": "identity"}]})") ==
+  CHECK(manifest_error("{" + base_mesh +
+                       R"(, "methods": [{"label": "Newton", "precond": "newton", "precond": "identity"}]})") ==
         "m.json: key \"precond\" appears twice in one object (name each key once)");
   CHECK(manifest_error("{" + base_mesh + R"(, "methods": [{"label": "X"}], "methods": [{"label": "Y"}]})") ==
         "m.json: key \"methods\" appears twice in one object (name each key once)");

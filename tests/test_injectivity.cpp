@@ -114,8 +114,8 @@ TEST_CASE("the barrier is zero far from contact and its gradient matches finite 
     Eigen::VectorXd plus = x, minus = x;
     plus[i] += h;
     minus[i] -= h;
-    CHECK(gradient[i] == doctest::Approx((loop.barrier(plus, nullptr) - loop.barrier(minus, nullptr)) / (2 * h))
-                             .epsilon(1e-5));
+    CHECK(gradient[i] ==
+          doctest::Approx((loop.barrier(plus, nullptr) - loop.barrier(minus, nullptr)) / (2 * h)).epsilon(1e-5));
   }
   CHECK(square_loop().barrier(square(), nullptr) == 0);
 }

@@ -213,8 +213,9 @@ TEST_CASE("STL: corners within the weld tolerance are one vertex, farther ones a
 }
 
 TEST_CASE("STL: keywords in any case, as some writers spell them") {
-  std::string upper = "SOLID S\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 1 0\n"
-                      "ENDLOOP\nENDFACET\nENDSOLID S\n";
+  std::string upper =
+      "SOLID S\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 1 0\n"
+      "ENDLOOP\nENDFACET\nENDSOLID S\n";
   const akvf::TriMesh read = read_stl_text(upper);
   CHECK(read.num_vertices() == 3);
   CHECK(read.num_faces() == 1);

@@ -11,11 +11,11 @@
 #include "experiments/cli/run_reporting.h"
 #include "experiments/cli/schema_options.h"
 #include "experiments/report/run_summary.h"
+#include "experiments/report/text_utilities.h"
 #include "experiments/report/trace_csv.h"
 #include "framework/mesh/constraints_io.h"
 #include "framework/mesh/mesh_text.h"
 #include "framework/mesh/tet_mesh_io.h"
-#include "experiments/report/text_utilities.h"
 #include "framework/process/error.h"
 
 namespace akvf {
@@ -74,8 +74,8 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   const DeformRun run = run_deformation(input, path, constraints, config, callbacks);
   for (const auto& warning : run.warnings) err << "warning: " << warning << '\n';
   const TetMesh& mesh = run.prepared.mesh;
-  out << path << ": " << count_of(mesh.num_vertices(), "vertex", "vertices") << ", " << count_of(mesh.num_tets(), "tet") << ", "
-      << constraints.vertices.size() << " constrained vertices; energy " << config.energy << ", preconditioner "
+  out << path << ": " << count_of(mesh.num_vertices(), "vertex", "vertices") << ", " << count_of(mesh.num_tets(), "tet")
+      << ", " << constraints.vertices.size() << " constrained vertices; energy " << config.energy << ", preconditioner "
       << config.preconditioner << '\n'
       << summary_line(run.result);
   if (!run.preconditioner_report.empty()) out << config.preconditioner << ": " << run.preconditioner_report << '\n';

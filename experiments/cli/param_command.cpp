@@ -18,6 +18,7 @@
 #include "experiments/report/html_view.h"
 #include "experiments/report/layout.h"
 #include "experiments/report/run_summary.h"
+#include "experiments/report/text_utilities.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/report/uv_png.h"
 #include "experiments/report/uv_svg.h"
@@ -25,7 +26,6 @@
 #include "framework/mesh/mesh_text.h"
 #include "framework/mesh/ply_reader.h"
 #include "framework/mesh/text_reader.h"
-#include "experiments/report/text_utilities.h"
 #include "framework/process/error.h"
 #include "framework/process/output_file.h"
 
@@ -79,9 +79,9 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   for (const auto& warning : setup.warnings) err << "warning: " << warning << '\n';
   const TriMesh& mesh = setup.disk.mesh;
   if (setup.disk.cut) out << name << ": " << cut_description(setup.disk) << '\n';
-  out << name << ": " << count_of(mesh.num_vertices(), "vertex", "vertices") << ", " << count_of(mesh.num_faces(), "face")
-      << "; energy " << config.energy
-      << ", preconditioner " << config.preconditioner << ", " << setup.flaps_moved << " flap vertices moved";
+  out << name << ": " << count_of(mesh.num_vertices(), "vertex", "vertices") << ", "
+      << count_of(mesh.num_faces(), "face") << "; energy " << config.energy << ", preconditioner "
+      << config.preconditioner << ", " << setup.flaps_moved << " flap vertices moved";
   if (setup.flaps_shortened > 0) out << " (" << setup.flaps_shortened << " part of the way: the boundary would cross)";
   out << '\n';
 

@@ -7,8 +7,8 @@
 #include "experiments/cli/file_arguments.h"
 #include "experiments/report/html_view.h"
 #include "experiments/report/json_text.h"
-#include "framework/mesh/mesh_io.h"
 #include "experiments/report/text_utilities.h"
+#include "framework/mesh/mesh_io.h"
 #include "framework/process/error.h"
 
 namespace akvf {

@@ -7,8 +7,7 @@ namespace akvf {
 
 namespace {
 bool finite(const Box2& box) {
-  return std::isfinite(box.min_x) && std::isfinite(box.min_y) && std::isfinite(box.max_x) &&
-         std::isfinite(box.max_y);
+  return std::isfinite(box.min_x) && std::isfinite(box.min_y) && std::isfinite(box.max_x) && std::isfinite(box.max_y);
 }
 }  // namespace
 

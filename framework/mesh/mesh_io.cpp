@@ -68,8 +68,8 @@ TriMesh read_off(std::istream& in, const std::string& file_name) {
   if (nv <= 0) reader.fail("vertex count must be positive, found " + std::to_string(nv));
   if (nf <= 0) reader.fail("face count must be positive, found " + std::to_string(nf));
   if (nv > std::numeric_limits<int>::max() || nf > std::numeric_limits<int>::max())
-    reader.fail("the counts (" + std::to_string(nv) + " vertices, " + std::to_string(nf) + (nf == 1 ? " face" : " faces") +
-                ") are too large");
+    reader.fail("the counts (" + std::to_string(nv) + " vertices, " + std::to_string(nf) +
+                (nf == 1 ? " face" : " faces") + ") are too large");
 
   std::vector<double> coords;
   std::vector<int> corners;

@@ -117,9 +117,9 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
     for (int k = 0; k < corners; ++k)
       if (raw.corners[corners * e + k] >= nv)
         throw InputError(file_name, element_lines[e],
-                         element + " index " + std::to_string(static_cast<long long>(raw.corners[corners * e + k]) + 1) +
-                             " out of range (" +
-                             std::to_string(nv) + " vertices)");
+                         element + " index " +
+                             std::to_string(static_cast<long long>(raw.corners[corners * e + k]) + 1) +
+                             " out of range (" + std::to_string(nv) + " vertices)");
   if (nv == 0) throw InputError(file_name, 0, "no vertices");
   if (element_lines.empty()) throw InputError(file_name, 0, "no " + element + "s");
   return raw;

@@ -51,9 +51,8 @@ DiskMesh compact(const TriMesh& input, const std::string& name) {
   out.mesh.F = input.F.unaryExpr([&](int v) { return new_index[v]; });
   out.mesh.index_base = input.index_base;
   if (dropped > 0)
-    out.warnings.push_back(name + ": dropped " + std::to_string(dropped) +
-                           " unreferenced vertices (first: " + file_number(first_dropped, input.index_base) +
-                           numbering_note(input.index_base) +
+    out.warnings.push_back(name + ": dropped " + std::to_string(dropped) + " unreferenced vertices (first: " +
+                           file_number(first_dropped, input.index_base) + numbering_note(input.index_base) +
                            "); no face uses their UV: (0, 0) where one per vertex is written at the input's scale "
                            "(the API's uv, PLY, --texture none)");
   return out;
@@ -197,7 +196,8 @@ DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool c
                           std::to_string(topology.overused_edge[2]) + " faces" + numbering_note(b) +
                           "; the mesh must be edge-manifold");
   if (!topology.misoriented_edge.empty() && !orientable(m.F))
-    throw ValidationError(name + ": the surface is non-orientable (like a Moebius strip or a Klein bottle): no choice "
+    throw ValidationError(name +
+                          ": the surface is non-orientable (like a Moebius strip or a Klein bottle): no choice "
                           "of face orientations agrees across every edge, so it has no UV map as one piece");
   if (!topology.misoriented_edge.empty())
     throw ValidationError(name + ": faces " + file_number(topology.misoriented_edge[2], b) + " and " +

@@ -12,10 +12,9 @@ double signed_area(const Eigen::RowVector2d& a, const Eigen::RowVector2d& b, con
 }
 }  // namespace
 
-UvOverlap measure_uv_overlap(const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F,
-                             const std::vector<int>& face_chart, long long samples) {
-  const int num_charts =
-      face_chart.empty() ? 1 : 1 + *std::max_element(face_chart.begin(), face_chart.end());
+UvOverlap measure_uv_overlap(const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F, const std::vector<int>& face_chart,
+                             long long samples) {
+  const int num_charts = face_chart.empty() ? 1 : 1 + *std::max_element(face_chart.begin(), face_chart.end());
   std::vector<std::vector<int>> chart_faces(num_charts);
   std::vector<double> chart_area(num_charts, 0.0);
   double total_area = 0;

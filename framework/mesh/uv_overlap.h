@@ -25,7 +25,7 @@ struct UvOverlap {
 //               areas (at least 1024 per chart); a sample is inside a
 //               triangle only strictly, so triangles sharing an edge never
 //               count as overlapping.
-UvOverlap measure_uv_overlap(const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F,
-                             const std::vector<int>& face_chart, long long samples = 1 << 20);
+UvOverlap measure_uv_overlap(const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F, const std::vector<int>& face_chart,
+                             long long samples = 1 << 20);
 
 }  // namespace akvf

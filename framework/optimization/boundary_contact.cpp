@@ -29,8 +29,8 @@ Box2 bounds(std::initializer_list<Vec2> points, double margin) {
 
 // The first t in (0, horizon] at which p(t) lies on the segment a(t) b(t),
 // every point moving linearly; +infinity if none.
-double vertex_edge_contact(const Vec2& p, const Vec2& dp, const Vec2& a, const Vec2& da, const Vec2& b,
-                           const Vec2& db, double horizon) {
+double vertex_edge_contact(const Vec2& p, const Vec2& dp, const Vec2& a, const Vec2& da, const Vec2& b, const Vec2& db,
+                           double horizon) {
   const Vec2 u = a - p, du = da - dp, w = b - p, dw = db - dp;
   // cross(u + t du, w + t dw) = 0: the three points are collinear ...
   double a2 = cross(du, dw), a1 = cross(u, dw) + cross(du, w), a0 = cross(u, w);
@@ -102,8 +102,7 @@ BoundaryContact::BoundaryContact(const std::vector<std::vector<int>>& loops, con
   }
 }
 
-double BoundaryContact::first_contact_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d,
-                                           double horizon) const {
+double BoundaryContact::first_contact_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d, double horizon) const {
   if (!(horizon > 0) || !std::isfinite(horizon)) return kInfinity;
   std::vector<Box2> swept_corners(corners_.size()), swept_edges(edges_.size());
   for (size_t i = 0; i < corners_.size(); ++i) {
@@ -161,7 +160,8 @@ void BoundaryContact::for_each_term(const Eigen::VectorXd& x, const Visit& visit
     // vertex that lies on the edge at rest (a seam's two sides, cut apart)
     // is as far as the edge is long.
     const double apart = rest_distance(c.vertex, e.a, e.b);
-    const double reach = 0.5 * (apart > kSeamTolerance * e.rest_length ? std::min(e.rest_length, apart) : e.rest_length);
+    const double reach =
+        0.5 * (apart > kSeamTolerance * e.rest_length ? std::min(e.rest_length, apart) : e.rest_length);
     if (!(distance < reach)) return;
     // d dist / dp = n, and the edge's ends share -n by s (zero at contact).
     const Vec2 n = distance > 0 ? Vec2(r / distance) : Vec2::Zero();
@@ -180,10 +180,8 @@ void BoundaryContact::for_each_term(const Eigen::VectorXd& x, const Visit& visit
     if (!(uu > 0 && vv > 0)) continue;
     // q = 2 pi - theta: its gradient is minus theta's.
     const Vec2 d_next(-u.y() / uu, u.x() / uu), d_previous(v.y() / vv, -v.x() / vv);
-    visit(Term{{{c.next, c.previous, c.vertex}, {d_next, d_previous, -(d_next + d_previous)}, 0},
-               gap,
-               c.weight,
-               c.reach});
+    visit(Term{
+        {{c.next, c.previous, c.vertex}, {d_next, d_previous, -(d_next + d_previous)}, 0}, gap, c.weight, c.reach});
   }
 }
 
@@ -227,7 +225,8 @@ std::vector<std::array<int, 4>> BoundaryContact::crossings(const Eigen::VectorXd
     const Edge& e = edges_[i];
     const Edge& f = edges_[j];
     if (j <= i || e.loop != f.loop || e.a == f.a || e.a == f.b || e.b == f.a || e.b == f.b) return;
-    if (segments_meet(point(x, e.a), point(x, e.b), point(x, f.a), point(x, f.b))) found.push_back({e.a, e.b, f.a, f.b});
+    if (segments_meet(point(x, e.a), point(x, e.b), point(x, f.a), point(x, f.b)))
+      found.push_back({e.a, e.b, f.a, f.b});
   });
   return found;
 }

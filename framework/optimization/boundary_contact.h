@@ -92,7 +92,7 @@ class BoundaryContact {
   struct Corner {
     int vertex, previous, next;  // along the loop
     int loop;
-    double reach, weight;        // eps and w of its angle term
+    double reach, weight;  // eps and w of its angle term
   };
   // Calls visit(term) for every term of the barrier within its reach, with
   // q, its gradient, w and eps, in a fixed order.
