@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "framework/mesh/mesh_io.h"
 #include "tests/test_support.h"
@@ -151,5 +152,34 @@ TEST_CASE("OBJ writer keeps vertices and faces and adds one vt per vertex") {
   const auto reread = akvf::read_obj(again, path);
   CHECK(reread.F == mesh.F);
   CHECK(reread.V == mesh.V);
+  std::filesystem::remove(path);
+}
+
+TEST_CASE("OBJ writer keeps what the source carries besides: normals, groups, materials, colours, lines") {
+  const std::string source =
+      "mtllib a.mtl\no square\nv 0 0 0 1 0 0\nv 1 0 0\nv 1 1 0 0 0 1\nv 0 1 0\nvn 0 0 1\nvt 5 5\n"
+      "g top\nusemtl red\ns 1\nf 1 2//1 3/1/1\nusemtl blue\nf -4/1/1 -2 -1//-1\nl 1/1 2/1\n";
+  std::istringstream in(source);
+  akvf::ObjPassthrough passthrough;
+  const akvf::TriMesh mesh = akvf::read_obj(in, "square.obj", nullptr, nullptr, &passthrough);
+  CHECK(passthrough.material_libraries == std::vector<std::string>{"a.mtl"});
+  Eigen::MatrixXd UV(4, 2);
+  UV << 0, 0, 2, 0, 2, 2, 0, 2;
+  const auto path = (std::filesystem::temp_directory_path() / "akvf_passthrough_test.obj").string();
+  auto written = [&] {
+    std::ifstream file(path);
+    return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  };
+  akvf::write_obj_with_uv(path, mesh, UV, "", &passthrough);
+  CHECK(written() ==
+        "# 4 vertices, 2 faces, written by akvf\nmtllib a.mtl\no square\nv 0 0 0 1 0 0\nv 1 0 0\nv 1 1 0 0 0 1\n"
+        "v 0 1 0\nvn 0 0 1\ng top\nusemtl red\ns 1\nvt 0 0\nvt 2 0\nvt 2 2\nvt 0 2\nf 1/1 2/2/1 3/3/1\nusemtl blue\n"
+        "f 1/1/1 3/3 4/4/1\nl 1 2\n");
+  // With a material of its own, the source's libraries and materials give way.
+  akvf::write_obj_with_uv(path, mesh, UV, "uv.mtl", &passthrough);
+  CHECK(written() ==
+        "# 4 vertices, 2 faces, written by akvf\nmtllib uv.mtl\no square\nv 0 0 0 1 0 0\nv 1 0 0\nv 1 1 0 0 0 1\n"
+        "v 0 1 0\nvn 0 0 1\ng top\ns 1\nvt 0 0\nvt 2 0\nvt 2 2\nvt 0 2\nusemtl checker\nf 1/1 2/2/1 3/3/1\n"
+        "f 1/1/1 3/3 4/4/1\nl 1 2\n");
   std::filesystem::remove(path);
 }

@@ -156,6 +156,30 @@ TEST_CASE("an output that names an input or another output is a command-line err
   fs::remove_all(dir);
 }
 
+TEST_CASE("an output never replaces the material library or the texture the input OBJ uses") {
+  const fs::path dir = scratch("materials");
+  const std::string mesh = (dir / "m.obj").string();
+  write_text(mesh, "mtllib shared.mtl\n" + kSquare);
+  write_text(dir / "shared.mtl", "newmtl a\nmap_Kd out_checker.png\n");
+  write_text(dir / "out_checker.png", "image");
+  Outcome r = akvf_run({"param", mesh, "-q", "--out", (dir / "shared.obj").string()});
+  CHECK(r.code == akvf::kExitUsageError);
+  CHECK(r.err == "error: the MTL of --out " + (dir / "shared.mtl").string() +
+                     " is the same file as the input's material file " + (dir / "shared.mtl").string() +
+                     "; an output never replaces an input: choose another name\n");
+  r = akvf_run({"param", mesh, "-q", "--out", (dir / "out.obj").string()});
+  CHECK(r.code == akvf::kExitUsageError);
+  CHECK(r.err.find("the checkerboard of --out") != std::string::npos);
+  CHECK(read_text(dir / "shared.mtl") == "newmtl a\nmap_Kd out_checker.png\n");
+  CHECK(read_text(dir / "out_checker.png") == "image");
+  CHECK_FALSE(fs::exists(dir / "shared.obj"));
+  // Without a material of its own the output keeps the input's.
+  r = akvf_run({"param", mesh, "-q", "--out", (dir / "out.obj").string(), "--texture", "none"});
+  CHECK(r.code == akvf::kExitOk);
+  CHECK(read_text(dir / "out.obj").find("mtllib shared.mtl\n") != std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a bad output path is found before the mesh is read (exit 4), in every command") {
   const fs::path dir = scratch("early");
   const std::string folder = (dir / "folder").string();

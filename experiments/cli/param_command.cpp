@@ -69,10 +69,11 @@ Json param_summary(const std::string& mesh_file, const ParameterizeOptions& opti
   return single_run_summary("param", mesh_file, settings, record);
 }
 
-//   start_uv  the file's texture coordinates per vertex for --init file, or empty
+//   start_uv    the file's texture coordinates per vertex for --init file, or empty
+//   obj_source  what the input OBJ carries besides (kept in an OBJ output), or null
 int run_and_write(const TriMesh& input, const std::string& name, const ParameterizeOptions& options,
-                  const Eigen::MatrixXd& start_uv, const Outputs& outputs, bool quiet, std::ostream& out,
-                  std::ostream& err) {
+                  const Eigen::MatrixXd& start_uv, const ObjPassthrough* obj_source, const Outputs& outputs,
+                  bool quiet, std::ostream& out, std::ostream& err) {
   ParamConfig config = param_config(options);
   config.start_uv = start_uv;
   const ParamSetup setup = prepare_parameterization(input, name, config);
@@ -119,9 +120,9 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
     if (outputs.texture) {
       const TextureFiles files = texture_files_for(outputs.obj);
       write_checker_texture(files);
-      write_obj_with_uv(outputs.obj, input, unit_square_uv(UV), UV_faces, files.mtl_name);
+      write_obj_with_uv(outputs.obj, input, unit_square_uv(UV), UV_faces, files.mtl_name, obj_source);
     } else {
-      write_obj_with_uv(outputs.obj, input, UV, UV_faces);
+      write_obj_with_uv(outputs.obj, input, UV, UV_faces, "", obj_source);
     }
   }
   trace.finish(result);
@@ -147,7 +148,8 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
 int param_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::vector<OptionSpec> specs = {
       {"out", "UV.{obj,ply,glb}",
-       "write the input mesh with its `vt` (and UV.mtl, UV_checker.png: --texture); a binary PLY with per-vertex s, t "
+       "write the input mesh with its `vt` (an OBJ input's normals, groups, materials and colours kept; UV.mtl, "
+       "UV_checker.png: --texture); a binary PLY with per-vertex s, t "
        "(per-corner texcoord with --cut auto); or a binary glTF with the checkerboard embedded"},
       {"texture", "checker|none",
        "with --out: checker writes UV.mtl and a checkerboard UV_checker.png beside it, vt scaled into the unit "
@@ -210,10 +212,18 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   reset_peak_memory();
   Warnings warnings;
   MeshTexture texture;
-  const TriMesh input = read_triangle_mesh(path, &warnings, &texture);
+  ObjPassthrough obj_source;
+  const bool obj_output = lowercase_extension(outputs.obj) == ".obj";
+  const TriMesh input = read_triangle_mesh(path, &warnings, &texture, obj_output ? &obj_source : nullptr);
   for (const auto& warning : warnings) err << "warning: " << warning << '\n';
+  // The input's material libraries and their images are inputs too.
+  std::vector<FileArgument> materials;
+  for (const std::string& file : material_files(path, obj_source))
+    materials.push_back({"the input's material file", file});
+  if (!materials.empty()) check_file_arguments(materials, written);
   const Eigen::MatrixXd start_uv = options.init == "file" ? per_vertex_uv(input, texture, path) : Eigen::MatrixXd();
-  return run_and_write(input, path, options, start_uv, outputs, cl.has("quiet"), out, err);
+  return run_and_write(input, path, options, start_uv, obj_source.empty() ? nullptr : &obj_source, outputs,
+                       cl.has("quiet"), out, err);
 }
 
 int demo_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -251,7 +261,7 @@ int demo_command(const std::vector<std::string>& args, std::ostream& out, std::o
                             {"the summary", outputs.summary},
                             {"the view", outputs.view}});
   const ThreadLimit threads(options.threads);
-  const int code = run_and_write(bent_bar(), "bent-bar", options, {}, outputs, cl.has("quiet"), out, err);
+  const int code = run_and_write(bent_bar(), "bent-bar", options, {}, nullptr, outputs, cl.has("quiet"), out, err);
   out << "wrote " << outputs.obj << " (+ " << texture.mtl_name << ", " << texture.png_name << "), " << outputs.trace
       << ", " << outputs.svg << ", " << outputs.summary;
   if (!outputs.view.empty()) out << ", " << outputs.view;

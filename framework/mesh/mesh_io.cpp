@@ -5,6 +5,8 @@
 #include <cstring>
 #include <fstream>
 #include <iomanip>
+#include <string_view>
+#include <vector>
 
 #include "framework/mesh/mesh_text.h"
 #include "framework/mesh/ply_reader.h"
@@ -15,9 +17,10 @@
 
 namespace akvf {
 
-TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings, MeshTexture* texture) {
-  const RawElements raw = read_obj_elements(in, file_name, 3, "face",
-                                            "only triangles are supported (triangulate the mesh first)", warnings);
+TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings, MeshTexture* texture,
+                 ObjPassthrough* passthrough) {
+  const RawElements raw = read_obj_elements(
+      in, file_name, 3, "face", "only triangles are supported (triangulate the mesh first)", warnings, passthrough);
   if (texture && !raw.texture.empty()) {
     texture->uv = rows_to_matrix<double, 2>(raw.texture);
     texture->corner = rows_to_matrix<int, 3>(raw.corner_texture);
@@ -104,7 +107,8 @@ TriMesh read_off(std::istream& in, const std::string& file_name) {
   return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 3>(corners), 0};
 }
 
-TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings, MeshTexture* texture) {
+TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings, MeshTexture* texture,
+                           ObjPassthrough* passthrough) {
   const std::string ext = lowercase_extension(path);
   if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
     throw InputError(path, 0, "unsupported mesh format '" + ext + "' (expected .obj, .off, .ply or .stl)");
@@ -122,32 +126,107 @@ TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings, MeshText
     return mesh;
   }
   if (ext == ".stl") return read_stl(in, path);
-  return ext == ".obj" ? read_obj(in, path, warnings, texture) : read_off(in, path);
+  return ext == ".obj" ? read_obj(in, path, warnings, texture, passthrough) : read_off(in, path);
 }
 
 void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
-                       const std::string& material_library) {
+                       const std::string& material_library, const ObjPassthrough* source) {
   if (UV.rows() != mesh.V.rows() || UV.cols() != 2)
     throw OutputError("UV matrix is " + std::to_string(UV.rows()) + "x" + std::to_string(UV.cols()) + ", expected " +
                       std::to_string(mesh.V.rows()) + "x2");
-  write_obj_with_uv(path, mesh, UV, mesh.F, material_library);
+  write_obj_with_uv(path, mesh, UV, mesh.F, material_library, source);
 }
 
+namespace {
+
+// The source's statement lines as the output keeps them: without `mtllib`
+// and `usemtl` when the output names its own material, and `l` corners
+// without the texture index (the file's `vt` rows are replaced).
+void write_statement(std::ostream& out, std::string_view line, bool own_material) {
+  std::vector<std::string_view> tokens;
+  for (std::size_t pos = 0; pos < line.size();) {
+    const std::size_t start = line.find_first_not_of(" \t", pos);
+    if (start == std::string_view::npos) break;
+    const std::size_t end = std::min(line.find_first_of(" \t", start), line.size());
+    tokens.push_back(line.substr(start, end - start));
+    pos = end;
+  }
+  if (tokens.empty()) return;
+  if (own_material && (tokens[0] == "mtllib" || tokens[0] == "usemtl")) return;
+  if (tokens[0] != "l") {
+    out << line << '\n';
+    return;
+  }
+  out << 'l';
+  for (std::size_t i = 1; i < tokens.size() && tokens[i][0] != '#'; ++i)
+    out << ' ' << tokens[i].substr(0, tokens[i].find('/'));
+  out << '\n';
+}
+
+long long count_of(const ObjPassthrough& source, ObjPassthrough::Kind kind) {
+  long long n = 0;
+  for (const ObjPassthrough::Run& run : source.runs)
+    if (run.kind == kind) n += run.count;
+  return n;
+}
+
+}  // namespace
+
 void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
-                       const Eigen::MatrixXi& UV_faces, const std::string& material_library) {
+                       const Eigen::MatrixXi& UV_faces, const std::string& material_library,
+                       const ObjPassthrough* source) {
+  using Kind = ObjPassthrough::Kind;
   check_corner_uv(mesh, UV, UV_faces);
+  if (source && (count_of(*source, Kind::kVertices) != mesh.num_vertices() ||
+                 count_of(*source, Kind::kFaces) != mesh.num_faces()))
+    throw OutputError("cannot write " + path + ": the OBJ source's vertex and face counts differ from the mesh's");
+  const bool own_material = !material_library.empty();
   write_file_atomically(path, [&](std::ostream& out) {
     out << std::setprecision(17);
     out << "# " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces, written by akvf\n";
-    if (!material_library.empty()) out << "mtllib " << material_library << '\n';
-    for (int i = 0; i < mesh.num_vertices(); ++i)
-      out << "v " << mesh.V(i, 0) << ' ' << mesh.V(i, 1) << ' ' << mesh.V(i, 2) << '\n';
-    for (int i = 0; i < UV.rows(); ++i) out << "vt " << UV(i, 0) << ' ' << UV(i, 1) << '\n';
-    if (!material_library.empty()) out << "usemtl checker\n";
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-      out << 'f';
-      for (int k = 0; k < 3; ++k) out << ' ' << mesh.F(f, k) + 1 << '/' << UV_faces(f, k) + 1;
-      out << '\n';
+    if (own_material) out << "mtllib " << material_library << '\n';
+    int v = 0, f = 0;
+    std::size_t tail = 0, statement = 0;
+    bool uv_written = false;
+    auto write_vertices = [&](long long count) {
+      for (; count > 0; --count, ++v) {
+        out << "v " << mesh.V(v, 0) << ' ' << mesh.V(v, 1) << ' ' << mesh.V(v, 2);
+        if (source && static_cast<std::size_t>(v) < source->vertex_tail_count.size())
+          for (int k = 0; k < source->vertex_tail_count[v]; ++k) out << ' ' << source->vertex_tail[tail++];
+        out << '\n';
+      }
+    };
+    auto write_faces = [&](long long count) {
+      if (!uv_written) {
+        for (int i = 0; i < UV.rows(); ++i) out << "vt " << UV(i, 0) << ' ' << UV(i, 1) << '\n';
+        if (own_material) out << "usemtl checker\n";
+        uv_written = true;
+      }
+      const std::size_t normals = source ? source->corner_normal.size() : 0;  // corners after these have none
+      for (; count > 0; --count, ++f) {
+        out << 'f';
+        for (int k = 0; k < 3; ++k) {
+          out << ' ' << mesh.F(f, k) + 1 << '/' << UV_faces(f, k) + 1;
+          const std::size_t corner = 3 * static_cast<std::size_t>(f) + k;
+          if (corner < normals && source->corner_normal[corner] >= 0) out << '/' << source->corner_normal[corner] + 1;
+        }
+        out << '\n';
+      }
+    };
+    if (!source || source->empty()) {
+      write_vertices(mesh.num_vertices());
+      write_faces(mesh.num_faces());
+      return;
+    }
+    for (const ObjPassthrough::Run& run : source->runs) {
+      if (run.kind == Kind::kVertices) write_vertices(run.count);
+      if (run.kind == Kind::kFaces) write_faces(run.count);
+      if (run.kind != Kind::kStatements) continue;
+      for (long long i = 0; i < run.count; ++i) {
+        const std::size_t end = source->statements.find('\n', statement);
+        write_statement(out, std::string_view(source->statements).substr(statement, end - statement), own_material);
+        statement = end + 1;
+      }
     }
   });
 }

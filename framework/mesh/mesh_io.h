@@ -5,6 +5,7 @@
 #include <string>
 
 #include "framework/mesh/mesh.h"
+#include "framework/mesh/obj_passthrough.h"
 
 namespace akvf {
 
@@ -14,8 +15,9 @@ namespace akvf {
 // (mesh_text.h); faces with more or fewer than three corners are rejected.
 // A leading UTF-8 byte-order mark is skipped by every reader.
 // `texture` (if given) receives the `vt` rows and each corner's row.
+// `passthrough` (if given) receives the rest (obj_passthrough.h).
 TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings = nullptr,
-                 MeshTexture* texture = nullptr);
+                 MeshTexture* texture = nullptr, ObjPassthrough* passthrough = nullptr);
 
 // OFF: header `OFF` (or COFF/NOFF), counts `#V #F [#E]`, vertex rows, then
 // face rows `3 i j k` (0-based). Counts that disagree with the file, in
@@ -25,8 +27,10 @@ TriMesh read_off(std::istream& in, const std::string& file_name);
 // Dispatches on the extension (.obj, .off, .ply or .stl, case-insensitive;
 // ply_reader.h, stl_reader.h).
 // `texture` (if given) receives the file's texture coordinates (OBJ vt,
-// PLY u,v), or stays empty.
-TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings = nullptr, MeshTexture* texture = nullptr);
+// PLY u,v), or stays empty; `passthrough` (if given) what an OBJ carries
+// besides.
+TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings = nullptr, MeshTexture* texture = nullptr,
+                           ObjPassthrough* passthrough = nullptr);
 
 // One UV per vertex from a file's texture (#V by 2, for --init file).
 // InputError naming the vertex when one has two different UVs (a seam),
@@ -38,15 +42,20 @@ Eigen::MatrixXd per_vertex_uv(const TriMesh& mesh, const MeshTexture& texture, c
 //   UV  #V by 2
 //   material_library  "" or an MTL file name (beside the OBJ) whose material
 //                     "checker" the faces use: `mtllib` and `usemtl` lines
+//                     that replace the source's
+//   source            what the OBJ the mesh was read from carries besides
+//                     (normals, groups, materials, colours, ...): written
+//                     back in the file's order, corners keep their `vn`
 void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
-                       const std::string& material_library = "");
+                       const std::string& material_library = "", const ObjPassthrough* source = nullptr);
 
 // The same with per-corner texture coordinates (seams: a vertex with one
 // `vt` per side): faces `f a/i b/j c/k` with i, j, k from UV_faces.
 //   UV        #T by 2
 //   UV_faces  #F by 3 rows of UV
 void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
-                       const Eigen::MatrixXi& UV_faces, const std::string& material_library = "");
+                       const Eigen::MatrixXi& UV_faces, const std::string& material_library = "",
+                       const ObjPassthrough* source = nullptr);
 
 // OutputError unless UV has 2 columns and UV_faces is #F by 3 rows of UV.
 void check_corner_uv(const TriMesh& mesh, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& UV_faces);

@@ -50,6 +50,53 @@ int obj_texture_index(std::string_view token, long long textures_so_far) {
   return resolved >= 0 && resolved < textures_so_far ? static_cast<int>(resolved) : -1;
 }
 
+// The `vn` index of a corner `a/b/c` or `a//c` (0-based), or -1 (none, or
+// one that names no `vn` read so far).
+int obj_normal_index(std::string_view token, long long normals_so_far) {
+  const std::size_t first = token.find('/');
+  if (first == std::string_view::npos) return -1;
+  const std::size_t second = token.find('/', first + 1);
+  if (second == std::string_view::npos) return -1;
+  long long index = 0;
+  if (!parse_integer(token.substr(second + 1), &index) || index == 0) return -1;
+  const long long resolved = index < 0 ? normals_so_far + index : index - 1;
+  return resolved >= 0 && resolved < normals_so_far ? static_cast<int>(resolved) : -1;
+}
+
+// Records the current line of `reader` in `passthrough`: its kind, and what
+// the OBJ writer needs to put it back (obj_passthrough.h).
+void keep_line(const TextReader& reader, long long vertices_so_far, long long normals_so_far, long long faces_so_far,
+               int corners, ObjPassthrough& passthrough) {
+  using Kind = ObjPassthrough::Kind;
+  const auto& t = reader.tokens();
+  if (t[0] == "v") {
+    passthrough.add(Kind::kVertices);
+    if (t.size() > 4 || !passthrough.vertex_tail_count.empty()) {  // none before: zeros up to here
+      passthrough.vertex_tail_count.resize(static_cast<std::size_t>(vertices_so_far), 0);
+      passthrough.vertex_tail_count.push_back(static_cast<std::uint8_t>(t.size() - 4));
+      for (std::size_t i = 4; i < t.size(); ++i) passthrough.vertex_tail.push_back(reader.real(i, "vertex colour"));
+    }
+  } else if (t[0] == "vt") {
+    passthrough.add(Kind::kTextures);
+  } else if (t[0] == "f") {
+    passthrough.add(Kind::kFaces);
+    std::vector<int>& normal = passthrough.corner_normal;
+    for (int i = 1; i <= corners; ++i) {
+      const int n = obj_normal_index(t[i], normals_so_far);
+      if (n < 0 && normal.empty()) continue;
+      normal.resize(static_cast<std::size_t>(corners * faces_so_far + i - 1), -1);  // none before: -1 up to here
+      normal.push_back(n);
+    }
+  } else {
+    passthrough.add(Kind::kStatements);
+    std::string_view line = reader.line();
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    passthrough.statements.append(line).push_back('\n');
+    if (t[0] == "mtllib")
+      for (std::size_t i = 1; i < t.size(); ++i) passthrough.material_libraries.emplace_back(t[i]);
+  }
+}
+
 // A UTF-16 byte-order mark at the start: a text reader of bytes would see
 // no statement at all.
 void refuse_utf16(std::istream& in, const std::string& file_name) {
@@ -65,7 +112,7 @@ void refuse_utf16(std::istream& in, const std::string& file_name) {
 }  // namespace
 
 RawElements read_obj_elements(std::istream& in, const std::string& file_name, int corners, const std::string& element,
-                              const std::string& advice, Warnings* warnings) {
+                              const std::string& advice, Warnings* warnings, ObjPassthrough* passthrough) {
   // Statements of the OBJ format that carry nothing a distortion energy uses.
   static const std::set<std::string, std::less<>> kIgnored = {"vn", "vp", "g", "o", "s", "usemtl", "mtllib", "l", "p"};
   refuse_utf16(in, file_name);
@@ -73,10 +120,13 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
   RawElements raw;
   std::vector<long> element_lines;
   std::map<std::string, std::pair<long, long>> unknown;  // statement -> (first line, count)
+  long long normals = 0;
   while (reader.next_line()) {
     const auto& t = reader.tokens();
     if (t[0].find('\0') != std::string_view::npos)
       reader.fail("a NUL byte: the file is not text (UTF-16? save it as UTF-8 or ASCII)");
+    const long long vertices_before = static_cast<long long>(raw.coords.size() / 3);
+    const long long elements_before = static_cast<long long>(element_lines.size());
     if (t[0] == "v") {
       // x y z, an optional weight w, or the common x y z r g b colour extension.
       if (t.size() < 4) reader.fail("vertex needs three coordinates, found " + std::to_string(t.size() - 1));
@@ -93,9 +143,8 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
     } else if (t[0] == "f") {
       if (static_cast<int>(t.size()) != corners + 1)
         reader.fail(element + " has " + std::to_string(t.size() - 1) + " corners; " + advice);
-      const long long vertices_so_far = static_cast<long long>(raw.coords.size() / 3);
       for (int i = 1; i <= corners; ++i) {
-        const long long index = obj_corner_index(reader, t[i], vertices_so_far, element);
+        const long long index = obj_corner_index(reader, t[i], vertices_before, element);
         if (index > std::numeric_limits<int>::max())
           reader.fail(element + " index " + std::to_string(index + 1) + " is too large");
         raw.corners.push_back(static_cast<int>(index));
@@ -106,6 +155,8 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
       auto [it, inserted] = unknown.try_emplace(std::string(t[0]), reader.line_number(), 0);
       ++it->second.second;
     }
+    if (passthrough) keep_line(reader, vertices_before, normals, elements_before, corners, *passthrough);
+    if (t[0] == "vn") ++normals;
   }
   if (warnings)
     for (const auto& [statement, where] : unknown)

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "framework/mesh/mesh.h"
+#include "framework/mesh/obj_passthrough.h"
 
 namespace akvf {
 
@@ -28,9 +29,9 @@ struct RawElements {
 // other statements OBJ allows (vt vn vp g o s usemtl mtllib l p) are skipped;
 // any other statement is skipped with one warning per kind. `element` names
 // the elements in messages ("face", "tet"); `advice` follows a wrong corner
-// count.
+// count. `passthrough` (if given) receives what the file carries besides.
 RawElements read_obj_elements(std::istream& in, const std::string& file_name, int corners, const std::string& element,
-                              const std::string& advice, Warnings* warnings);
+                              const std::string& advice, Warnings* warnings, ObjPassthrough* passthrough = nullptr);
 
 // Row-major rows to an Eigen matrix with `Cols` columns.
 template <class Scalar, int Cols>

@@ -21,6 +21,8 @@ class TextReader {
 
   const std::vector<std::string_view>& tokens() const { return tokens_; }
   long line_number() const { return line_number_; }
+  // The current line as read (comment and trailing '\r' included).
+  const std::string& line() const { return line_; }
   const std::string& file_name() const { return file_name_; }
 
   // Parsers for token i of the current line; they throw InputError naming
