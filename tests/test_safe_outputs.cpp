@@ -3,9 +3,11 @@
 // found before any work, temporaries never outlive a run; and the command-line
 // consistency items (threads, exit codes, extensions, ranges, aliases).
 #include <doctest/doctest.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -177,6 +179,55 @@ TEST_CASE("an output never replaces the material library or the texture the inpu
   r = akvf_run({"param", mesh, "-q", "--out", (dir / "out.obj").string(), "--texture", "none"});
   CHECK(r.code == akvf::kExitOk);
   CHECK(read_text(dir / "out.obj").find("mtllib shared.mtl\n") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a write that fails says why, and the side files of a failed OBJ go with it") {
+  const fs::path dir = scratch("full");
+  const std::string mesh = (dir / "m.obj").string();
+  akvf::test::write_obj(mesh, akvf::test::bumpy_disk(40, 40));
+  // A file size limit the MTL and the checkerboard fit in and the OBJ does not.
+  struct rlimit old_limit;
+  REQUIRE(::getrlimit(RLIMIT_FSIZE, &old_limit) == 0);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  struct rlimit limit = old_limit;
+  limit.rlim_cur = 20000;
+  REQUIRE(::setrlimit(RLIMIT_FSIZE, &limit) == 0);
+  const Outcome r = akvf_run({"param", mesh, "-q", "--out", (dir / "x.obj").string()});
+  ::setrlimit(RLIMIT_FSIZE, &old_limit);
+  std::signal(SIGXFSZ, old_handler);
+  CHECK(r.code == akvf::kExitOutputError);
+  CHECK(r.err == "error: error while writing " + (dir / "x.obj").string() + ": File too large\n");
+  CHECK_FALSE(fs::exists(dir / "x.obj"));
+  CHECK_FALSE(fs::exists(dir / "x.mtl"));
+  CHECK_FALSE(fs::exists(dir / "x_checker.png"));
+  CHECK(temporaries_in(dir) == 0);
+  // A device in place: the reason too.
+  if (fs::exists("/dev/full")) {
+    const Outcome full = akvf_run({"param", mesh, "-q", "--out", "/dev/full"});
+    CHECK(full.err == "error: error while writing /dev/full: No space left on device\n");
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("output names beyond the file system's limits are refused before any work") {
+  const fs::path dir = scratch("names");
+  const std::string mesh = (dir / "m.obj").string();
+  write_text(mesh, kSquare);
+  const std::string stem = (dir / std::string(250, 'a')).string();
+  // 250 + ".html" fits; its temporary name is shortened to fit too.
+  Outcome r = akvf_run({"param", mesh, "-q", "--view", stem + ".html", "--summary", stem + ".json"});
+  CHECK(r.code == akvf::kExitOk);
+  CHECK(fs::exists(stem + ".html"));
+  r = akvf_run({"param", mesh, "-q", "--out", stem + "x.obj"});  // the checkerboard's name would be too long
+  CHECK(r.code == akvf::kExitOutputError);
+  CHECK(r.err == "error: the checkerboard of --out: cannot write " + stem + "x_checker.png: its file name is 263 "
+                 "bytes long; the file system allows at most 255\n");
+  r = akvf_run({"param", mesh, "-q", "--summary", stem + "xxxxxxxxxx.json"});
+  CHECK(r.code == akvf::kExitOutputError);
+  CHECK(r.err == "error: cannot write " + stem + "xxxxxxxxxx.json: its file name is 265 bytes long; the file system "
+                 "allows at most 255\n");
+  CHECK(temporaries_in(dir) == 0);
   fs::remove_all(dir);
 }
 

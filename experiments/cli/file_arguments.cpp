@@ -29,7 +29,8 @@ bool same_file(const std::string& a, const std::string& b) {
 }
 
 void require_extension(const std::string& option, const std::string& path, const std::vector<std::string>& extensions) {
-  if (path.empty() || is_special_output(path) || fs::is_directory(resolve_output_path(path))) return;
+  std::error_code error;
+  if (path.empty() || is_special_output(path) || fs::is_directory(resolve_output_path(path), error)) return;
   const std::string found = lowercase_extension(path);
   std::string list;
   for (const std::string& e : extensions) {
@@ -54,7 +55,14 @@ void check_file_arguments(const std::vector<FileArgument>& inputs, const std::ve
         throw OptionsError(outputs[p].option + " and " + output.option + " both name " + output.path +
                            "; each output needs a file of its own");
   }
-  for (const FileArgument& output : outputs) check_output_writable(output.path);
+  for (const FileArgument& output : outputs) {
+    try {
+      check_output_writable(output.path);
+    } catch (const OutputError& error) {
+      if (output.option.rfind("--", 0) == 0) throw;
+      throw OutputError(output.option + ": " + error.what());  // a side file: say whose
+    }
+  }
 }
 
 }  // namespace akvf

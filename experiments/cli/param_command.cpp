@@ -118,9 +118,19 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
     }
   } else if (!outputs.obj.empty()) {
     if (outputs.texture) {
+      // The side files go first; when the OBJ then fails, those this run
+      // created are removed with it.
       const TextureFiles files = texture_files_for(outputs.obj);
-      write_checker_texture(files);
-      write_obj_with_uv(outputs.obj, input, unit_square_uv(UV), UV_faces, files.mtl_name, obj_source);
+      const bool mtl_existed = std::filesystem::exists(files.mtl), png_existed = std::filesystem::exists(files.png);
+      try {
+        write_checker_texture(files);
+        write_obj_with_uv(outputs.obj, input, unit_square_uv(UV), UV_faces, files.mtl_name, obj_source);
+      } catch (...) {
+        std::error_code ignored;
+        if (!mtl_existed) std::filesystem::remove(files.mtl, ignored);
+        if (!png_existed) std::filesystem::remove(files.png, ignored);
+        throw;
+      }
     } else {
       write_obj_with_uv(outputs.obj, input, UV, UV_faces, "", obj_source);
     }

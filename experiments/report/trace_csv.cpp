@@ -53,7 +53,7 @@ void write_trace_csv(const std::string& path, const OptimizerResult& result) {
 }
 
 GrowingTraceCsv::GrowingTraceCsv(std::string path) : path_(std::move(path)) {
-  if (!path_.empty() && !is_special_output(path_)) partial_path_ = resolve_output_path(path_) + ".partial";
+  if (!path_.empty() && !is_special_output(path_)) partial_path_ = sibling_path(resolve_output_path(path_), ".partial");
 }
 
 IterationCallback GrowingTraceCsv::callback() {

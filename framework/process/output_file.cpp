@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <climits>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -59,13 +60,25 @@ std::string folder_of(const std::string& path) {
   return parent.empty() ? "." : parent;
 }
 
+// The longest file name the file system of `folder` takes.
+std::size_t name_limit(const std::string& folder) {
+  const long limit = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  return limit > 0 ? static_cast<std::size_t>(limit) : 255;
+}
+
+// Why the last write to a stream failed, as far as errno tells.
+std::string write_failure(int error) {
+  return error != 0 ? std::strerror(error) : "the write failed (a full disk or a quota?)";
+}
+
 // Writes to an existing character device or FIFO in place.
 void write_in_place(const std::string& path, const std::function<void(std::ostream&)>& write) {
   std::ofstream out(path, std::ios::binary);
   if (!out) throw OutputError("cannot write " + path + ": " + std::strerror(errno));
+  errno = 0;
   write(out);
   out.flush();
-  if (!out) throw OutputError("error while writing " + path);
+  if (!out) throw OutputError("error while writing " + path + ": " + write_failure(errno));
 }
 
 }  // namespace
@@ -108,11 +121,26 @@ void check_output_writable(const std::string& path) {
   const std::string folder = folder_of(target);
   if (file_type(folder, true) != S_IFDIR)
     throw OutputError("cannot write " + shown + ": folder " + folder + " does not exist");
+  const std::size_t name = fs::path(target).filename().string().size(), limit = name_limit(folder);
+  if (name > limit)
+    throw OutputError("cannot write " + shown + ": its file name is " + std::to_string(name) +
+                      " bytes long; the file system allows at most " + std::to_string(limit));
+  if (target.size() >= PATH_MAX)
+    throw OutputError("cannot write " + shown + ": the path is " + std::to_string(target.size()) +
+                      " bytes long; the system allows at most " + std::to_string(PATH_MAX - 1));
   if (::access(folder.c_str(), W_OK | X_OK) != 0)
     throw OutputError("cannot write " + shown + ": folder " + folder + " is not writable (" + std::strerror(errno) +
                       ")");
   if (type == S_IFREG && ::access(target.c_str(), W_OK) != 0)
     throw OutputError("cannot write " + shown + ": the existing file is not writable (" + std::strerror(errno) + ")");
+}
+
+std::string sibling_path(const std::string& path, const std::string& suffix) {
+  const fs::path file(path);
+  std::string name = file.filename().string();
+  const std::size_t limit = name_limit(folder_of(path));
+  if (name.size() + suffix.size() > limit) name.resize(limit > suffix.size() ? limit - suffix.size() : 0);
+  return (file.parent_path() / (name + suffix)).string();
 }
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
@@ -121,7 +149,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   if (type == S_IFDIR) throw OutputError("cannot write " + path + ": it is a folder");
   if (type != 0 && type != S_IFREG) return write_in_place(target, write);
 
-  const std::string temporary = target + ".tmp" + std::to_string(::getpid());
+  const std::string temporary = sibling_path(target, ".tmp" + std::to_string(::getpid()));
   const int slot = register_pending(temporary);
   auto discard = [&] {
     std::remove(temporary.c_str());
@@ -134,6 +162,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
       unregister_pending(slot);
       throw OutputError("cannot write " + path + ": " + reason);
     }
+    errno = 0;
     try {
       write(out);
       out.flush();
@@ -142,9 +171,11 @@ void write_file_atomically(const std::string& path, const std::function<void(std
       discard();
       throw;
     }
+    if (out) out.close();  // a failure to write the last buffer shows here
+    const int error = errno;
     if (!out) {
       discard();
-      throw OutputError("error while writing " + path);
+      throw OutputError("error while writing " + path + ": " + write_failure(error));
     }
   }
   if (std::rename(temporary.c_str(), target.c_str()) != 0) {

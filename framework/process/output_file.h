@@ -17,9 +17,15 @@ namespace akvf {
 std::string resolve_output_path(const std::string& path);
 
 // OutputError naming `path` unless it can be written: its folder exists and
-// is writable, and the path is not a folder, a block device or a socket.
-// Writes nothing. "" is no output and passes.
+// is writable, the path is not a folder, a block device or a socket, and its
+// file name and whole length are within the file system's limits. Writes
+// nothing. "" is no output and passes.
 void check_output_writable(const std::string& path);
+
+// A file beside `path` named by its file name and `suffix` ("x.obj" ->
+// "x.obj.partial"), the name shortened from its end where the file system's
+// name limit asks for it.
+std::string sibling_path(const std::string& path, const std::string& suffix);
 
 // True when `path` exists and is not a regular file (after following links):
 // such an output is written in place and may be named more than once.
