@@ -212,6 +212,19 @@ TEST_CASE("STL: corners within the weld tolerance are one vertex, farther ones a
   CHECK(read_stl_text(near).num_vertices() == 4);  // 1e-7 apart: within the tolerance
 }
 
+TEST_CASE("STL: a plate thinner than the diagonal's ulps keeps its two sides (the tolerance follows the facets)") {
+  // A 10 x 10 plate's top facet and a side wall 1e-6 high: the diagonal's
+  // tolerance (4.8e-7 x 14) would weld across, a tenth of the shortest edge
+  // does not.
+  const std::string plate =
+      "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0.000001\nvertex 10 0 0.000001\nvertex 0 10 0.000001\n"
+      "endloop\nendfacet\nfacet normal 1 0 0\nouter loop\nvertex 0 0 0\nvertex 10 0 0\nvertex 10 0 0.000001\n"
+      "endloop\nendfacet\nendsolid s\n";
+  const akvf::TriMesh read = read_stl_text(plate);
+  CHECK(read.num_vertices() == 5);
+  CHECK(read.num_faces() == 2);
+}
+
 TEST_CASE("STL: keywords in any case, as some writers spell them") {
   std::string upper =
       "SOLID S\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 1 0\n"

@@ -135,6 +135,16 @@ TEST_CASE("a zero-area face is rejected with its vertices") {
   CHECK(validation_error(m).find("m.obj: face 0 (vertices 0, 4, 8) has zero area") == 0);
 }
 
+TEST_CASE("zero area is judged against the face's own edges, not the mesh's extent") {
+  TriMesh m = akvf::test::grid_disk(3, 3);
+  m.V.array() *= 0.25;  // faces of area 0.0078, then one vertex far away
+  m.V.conservativeResize(10, 3);
+  m.V.row(9) << 1e6, 1e6, 0;
+  m.F.conservativeResize(m.F.rows() + 1, 3);
+  m.F.row(m.F.rows() - 1) << 2, 9, 5;
+  CHECK(validation_error(m) == "");
+}
+
 TEST_CASE("non-finite coordinates are rejected") {
   TriMesh m = akvf::test::grid_disk(3, 3);
   m.V(3, 1) = std::numeric_limits<double>::quiet_NaN();

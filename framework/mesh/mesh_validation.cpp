@@ -61,14 +61,15 @@ DiskMesh compact(const TriMesh& input, const std::string& name) {
 void check_face_areas(const TriMesh& m, const std::string& name, const std::vector<int>& input_vertex) {
   const int base = m.index_base;
   auto at_input = [&](int v) { return file_number(input_vertex[v], base); };
-  const double diagonal = (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm();
   // A face is degenerate when its area is zero to working precision relative
-  // to the mesh's size: slivers are allowed, collapsed faces are not.
-  const double tolerance = 1e-14 * diagonal * diagonal;
+  // to its own edges (the cross product's rounding is about eps |b - a| |c - a|):
+  // slivers are allowed, collapsed faces are not, whatever the rest of the
+  // mesh's size.
   for (int f = 0; f < m.num_faces(); ++f) {
     const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
     const double area = 0.5 * (b - a).cross(c - a).norm();
-    if (!(area > tolerance))
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    if (!(area > 1e-14 * longest * longest))
       throw ValidationError(name + ": face " + file_number(f, base) + " (vertices " + at_input(m.F(f, 0)) + ", " +
                             at_input(m.F(f, 1)) + ", " + at_input(m.F(f, 2)) + ") has zero area" +
                             numbering_note(base) + "; remove degenerate faces first");

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -173,7 +174,15 @@ TriMesh read_stl(std::istream& in, const std::string& file_name) {
   const double diagonal = std::hypot(high[0] - low[0], high[1] - low[1], high[2] - low[2]);
   if (!(diagonal > 0)) throw InputError(file_name, 0, "every corner is the same point");
   if (!std::isfinite(diagonal)) throw InputError(file_name, 0, "the corners span more than a double can hold");
-  return weld(corners, low, kStlWeldTolerance * diagonal);
+  double shortest_edge = std::numeric_limits<double>::infinity();  // of the facets, zero lengths aside
+  for (std::size_t f = 0; f + 2 < corners.size(); f += 3)
+    for (int k = 0; k < 3; ++k) {
+      const Corner& p = corners[f + k];
+      const Corner& q = corners[f + (k + 1) % 3];
+      const double length = std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+      if (length > 0) shortest_edge = std::min(shortest_edge, length);
+    }
+  return weld(corners, low, std::min(kStlWeldTolerance * diagonal, kStlWeldEdgeFraction * shortest_edge));
 }
 
 }  // namespace akvf
