@@ -123,7 +123,10 @@ OptimizerResult minimize_lbfgs(const Objective& objective, Eigen::VectorXd x, co
   TraceCallback trace(objective, x, options, callbacks, &result);
   ceres_options.callbacks.push_back(&trace);
   ceres::GradientProblemSolver::Summary summary;
-  ceres::Solve(ceres_options, problem, x.data(), &summary);
+  {
+    const InterruptibleLoop interruptible;  // the callback ends the solve cleanly on a signal
+    ceres::Solve(ceres_options, problem, x.data(), &summary);
+  }
 
   result.x = std::move(x);
   if (trace.status()) {

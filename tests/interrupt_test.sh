@@ -33,3 +33,14 @@ uvs=$(grep -c '^vt ' "$dir/uv.obj")
 [ "$vertices" -eq 3600 ] && [ "$uvs" -eq 3600 ] || { echo "incomplete UV OBJ: $vertices v, $uvs vt"; exit 1; }
 ls "$dir" | grep -qv -e grid.obj -e uv.obj -e uv.mtl -e uv_checker.png -e trace.csv -e stdout -e stderr && { echo "temporary files left: $(ls "$dir")"; exit 1; }
 echo "interrupted cleanly after $(($(wc -l < "$dir/trace.csv") - 2)) iterations"
+
+# Before the first iteration (here: reading a FIFO nobody writes to) a signal
+# ends the process at once: `timeout` sends SIGTERM after 1 s and reports 124
+# when the command then ends (137 if it had to send SIGKILL 5 s later).
+mkfifo "$dir/pipe.obj"
+set +e
+timeout -k 5 1 "$akvf" param "$dir/pipe.obj" --quiet > /dev/null 2>&1
+code=$?
+set -e
+[ "$code" -eq 124 ] || { echo "reading a FIFO: SIGTERM did not end the run (exit $code)"; exit 1; }
+echo "a signal while reading ends the run at once"

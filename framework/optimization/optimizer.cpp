@@ -126,6 +126,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
   }
   if (notify(row)) return finish(TerminationStatus::kUserStopped, "stopped by a callback");
 
+  const InterruptibleLoop interruptible;  // a signal now ends the loop below cleanly
   int stalled_iterations = 0;
   bool backtracked = false;  // the last line search accepted less than its first trial
   Eigen::VectorXd previous = x;
