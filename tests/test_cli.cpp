@@ -12,6 +12,7 @@
 
 #include "akvf/demo_mesh.h"
 #include "experiments/cli/exit_codes.h"
+#include "experiments/report/html_view.h"
 #include "experiments/report/trace_csv.h"
 #include "framework/mesh/tet_mesh_io.h"
 #include "tests/cli_support.h"
@@ -318,7 +319,7 @@ TEST_CASE("--init file starts from the mesh file's texture coordinates, or says 
   // Without texture coordinates.
   const Outcome none = akvf_run({"param", (dir / "bar.obj").string(), "--init", "file", "-q"});
   CHECK(none.code == akvf::kExitInputError);
-  CHECK(none.err.find("has no texture coordinates (OBJ vt, PLY u,v)") != std::string::npos);
+  CHECK(none.err.find("has no texture coordinates (OBJ vt, PLY u,v or texcoord) for --init file") != std::string::npos);
   // Mirrored (every triangle inverted): mirrored back, with a warning.
   std::string text = read_text(uv), mirrored;
   std::istringstream lines(text);
@@ -403,4 +404,39 @@ TEST_CASE("counts read as a person writes them: 1 face, 3 vertices") {
   const Outcome r = akvf_run({"param", (dir / "one.obj").string(), "-q"});
   CHECK(r.code == akvf::kExitOk);
   CHECK(r.out.find("one.obj: 3 vertices, 1 face; energy") != std::string::npos);
+}
+
+TEST_CASE("view says what is wrong with its inputs: a vt out of range, an integer texcoord, a summary not an object") {
+  if (!akvf::html_view_available()) return akvf::test::skip("three.js was not found at configure time");
+  const fs::path dir = scratch_dir("view_inputs");
+  const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n";
+  write_text(dir / "a.obj", square + "f 1/1 2/2 3/3\nf 1/1 3/3 4/9\n");
+  Outcome r = akvf_run({"view", (dir / "a.obj").string()});
+  CHECK(r.code == akvf::kExitInputError);
+  CHECK(r.err == "error: " + (dir / "a.obj").string() +
+                     ": corner 3 of face 2 names a texture coordinate the file does not have (its `vt` index is out "
+                     "of range) (numbered from 1, as in the file); the view (write them with akvf param --out) needs "
+                     "one at every corner\n");
+  write_text(dir / "b.obj", square + "f 1/1 2/2 3/3\nf 1/1 3/3 4\n");
+  r = akvf_run({"view", (dir / "b.obj").string()});
+  CHECK(r.err.find("corner 3 of face 2 has no texture coordinate (numbered from 1") != std::string::npos);
+  write_text(dir / "c.ply",
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+             "element face 1\nproperty list uchar int vertex_indices\nproperty list uchar int texcoord\n"
+             "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 6 0 0 1 0 0 1\n");
+  r = akvf_run({"view", (dir / "c.ply").string()});
+  CHECK(r.code == akvf::kExitInputError);
+  CHECK(r.err == "error: line 7 of " + (dir / "c.ply").string() +
+                     ": the face property 'texcoord' is a list of integers; texture coordinates are a float or double "
+                     "list (u, v per corner)\n");
+  write_text(dir / "d.obj", square + "f 1/1 2/2 3/3\n");
+  write_text(dir / "array.json", "[1, 2]");
+  r = akvf_run({"view", (dir / "d.obj").string(), "--summary", (dir / "array.json").string()});
+  CHECK(r.code == akvf::kExitInputError);
+  CHECK(r.err == "error: " + (dir / "array.json").string() +
+                     ": not a run summary: a JSON object was expected, found an array\n");
+  r = akvf_run({"view", (dir / "d.obj").string()});
+  CHECK(r.code == akvf::kExitOk);
+  CHECK(r.out == "wrote " + (dir / "d.html").string() + " (1 face)\n");
+  fs::remove_all(dir);
 }

@@ -152,7 +152,7 @@ TEST_CASE("the view's data: any coordinate range, finite numbers, the distortion
     content.mesh.V *= scale;
     content.uv_faces = content.mesh.F;
     content.title = "bumpy </script> & <b> <!--<script>";
-    akvf::write_html_view((dir / "v.html").string(), content);
+    CHECK(akvf::write_html_view((dir / "v.html").string(), content) == content.mesh.num_faces());  // all shown
     const std::string page = akvf::test::read_text(dir / "v.html");
     CHECK(page.find("<title>bumpy &lt;/script&gt; &amp; &lt;b&gt; &lt;!--&lt;script&gt;</title>") != std::string::npos);
     const std::string open = "id=\"akvf-data\">";

@@ -45,20 +45,20 @@ int view_command(const std::vector<std::string>& args, std::ostream& out, std::o
   MeshTexture texture;
   content.mesh = read_triangle_mesh(path, &warnings, &texture);
   for (const auto& warning : warnings) err << "warning: " << warning << '\n';
-  if (texture.empty())
-    throw InputError(path +
-                     ": has no texture coordinates (OBJ vt, PLY u,v or texcoord); write one with akvf param --out");
-  for (int f = 0; f < texture.corner.rows(); ++f)
-    for (int k = 0; k < 3; ++k)
-      if (texture.corner(f, k) < 0)
-        throw InputError(path + ": face " + file_number(f, content.mesh.index_base) +
-                         numbering_note(content.mesh.index_base) + " has a corner without a texture coordinate");
+  require_corner_texture(content.mesh, texture, path, "the view (write them with akvf param --out)");
   content.uv = texture.uv;
   content.uv_faces = texture.corner;
   content.title = cl.text("title", std::filesystem::path(path).filename().string());
-  if (!summary_path.empty()) content.summary = read_json_file(summary_path);
-  write_html_view(out_path, content);
-  out << "wrote " << out_path << " (" << count_of(content.mesh.num_faces(), "face") << ")\n";
+  if (!summary_path.empty()) {
+    content.summary = read_json_file(summary_path);
+    if (!content.summary.is_object())
+      throw InputError(summary_path + ": not a run summary: a JSON object was expected, found " +
+                       (content.summary.is_array() ? std::string("an array") : "a " + std::string(content.summary.type_name())));
+  }
+  const int shown = write_html_view(out_path, content);
+  out << "wrote " << out_path << " (" << count_of(content.mesh.num_faces(), "face");
+  if (shown < content.mesh.num_faces()) out << ", " << shown << " shown: decimated for display";
+  out << ")\n";
   return kExitOk;
 }
 

@@ -137,6 +137,7 @@ nlohmann::json page_data(const ViewContent& content) {
           {"note", note},
           {"vertices", mesh.num_vertices()},
           {"faces", mesh.num_faces()},
+          {"faces_shown", split.mesh.num_faces()},
           {"mean_distortion", area_sum > 0 ? finite_sum / area_sum : 0.0},
           {"degenerate_or_inverted", inverted},
           {"positions", base64_of(positions)},
@@ -157,9 +158,10 @@ void require_html_view() {
         "scripts/setup.sh) and rebuild");
 }
 
-void write_html_view(const std::string& path, const ViewContent& content) {
+int write_html_view(const std::string& path, const ViewContent& content) {
   require_html_view();
-  const std::string data = script_safe(page_data(content).dump());
+  const nlohmann::json page = page_data(content);
+  const std::string data = script_safe(page.dump());
   write_file_atomically(path, [&](std::ostream& out) {
     out << "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
         << "<meta name=\"generator\" content=\"akvf\">\n<title>" << xml_escape(content.title) << "</title>\n<style>\n"
@@ -177,6 +179,7 @@ void write_html_view(const std::string& path, const ViewContent& content) {
         << "<script>\n"
         << embedded::view_page_js << "\n</script>\n</body>\n</html>\n";
   });
+  return page["faces_shown"].get<int>();
 }
 
 }  // namespace akvf

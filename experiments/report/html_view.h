@@ -32,8 +32,9 @@ bool html_view_available();
 // OptionsError saying what to install unless html_view_available().
 void require_html_view();
 
-// Writes the page atomically. OptionsError when three.js is not embedded
-// (require_html_view), OutputError when the file cannot be written.
-void write_html_view(const std::string& path, const ViewContent& content);
+// Writes the page atomically and returns the number of faces it shows
+// (fewer than the mesh's when decimated). OptionsError when three.js is not
+// embedded (require_html_view), OutputError when the file cannot be written.
+int write_html_view(const std::string& path, const ViewContent& content);
 
 }  // namespace akvf

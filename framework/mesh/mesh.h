@@ -22,7 +22,8 @@ struct TriMesh {
 
 // The texture coordinates a triangle mesh file carries (OBJ `vt` per
 // corner, PLY per-vertex u,v): rows of `uv`, and for every face corner the
-// row it uses (-1 where a corner has none). Empty when the file has none.
+// row it uses (-1 where a corner has none, -2 where its index names no row).
+// Empty when the file has none.
 struct MeshTexture {
   Eigen::MatrixXd uv;      // #T by 2
   Eigen::MatrixXi corner;  // #F by 3 rows of uv, or 0 rows

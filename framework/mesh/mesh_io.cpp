@@ -28,18 +28,32 @@ TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warni
   return {rows_to_matrix<double, 3>(raw.coords), rows_to_matrix<int, 3>(raw.corners), 1};
 }
 
-Eigen::MatrixXd per_vertex_uv(const TriMesh& mesh, const MeshTexture& texture, const std::string& file_name) {
+void require_corner_texture(const TriMesh& mesh, const MeshTexture& texture, const std::string& file_name,
+                            const std::string& use) {
   if (texture.empty())
-    throw InputError(file_name, 0, "has no texture coordinates (OBJ vt, PLY u,v) to start from (--init file)");
+    throw InputError(file_name, 0, "has no texture coordinates (OBJ vt, PLY u,v or texcoord) for " + use);
+  const int b = mesh.index_base;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int t = texture.corner(f, c);
+      if (t >= 0) continue;
+      const std::string corner = "corner " + std::to_string(c + 1) + " of face " + file_number(f, b);
+      throw InputError(file_name, 0,
+                       (t == -1 ? corner + " has no texture coordinate"
+                                : corner + " names a texture coordinate the file does not have (its `vt` index is "
+                                           "out of range)") +
+                           numbering_note(b) + "; " + use + " needs one at every corner");
+    }
+}
+
+Eigen::MatrixXd per_vertex_uv(const TriMesh& mesh, const MeshTexture& texture, const std::string& file_name) {
+  require_corner_texture(mesh, texture, file_name, "--init file");
   Eigen::MatrixXd uv(mesh.num_vertices(), 2);
   std::vector<int> row_of(mesh.num_vertices(), -1);
   const int b = mesh.index_base;
   for (int f = 0; f < mesh.num_faces(); ++f)
     for (int c = 0; c < 3; ++c) {
       const int v = mesh.F(f, c), t = texture.corner(f, c);
-      if (t < 0)
-        throw InputError(file_name, 0,
-                         "face " + std::to_string(f + b) + " has a corner without texture coordinates (--init file)");
       if (row_of[v] < 0) {
         row_of[v] = t;
         uv.row(v) = texture.uv.row(t);

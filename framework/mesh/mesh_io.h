@@ -32,6 +32,11 @@ TriMesh read_off(std::istream& in, const std::string& file_name);
 TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings = nullptr, MeshTexture* texture = nullptr,
                            ObjPassthrough* passthrough = nullptr);
 
+// InputError naming `file_name`, the face and the corner unless every face
+// corner has a texture coordinate; `use` ("--init file") says what needs them.
+void require_corner_texture(const TriMesh& mesh, const MeshTexture& texture, const std::string& file_name,
+                            const std::string& use);
+
 // One UV per vertex from a file's texture (#V by 2, for --init file).
 // InputError naming the vertex when one has two different UVs (a seam),
 // or the face corner that has none.

@@ -36,18 +36,19 @@ long long obj_corner_index(const TextReader& reader, std::string_view token, lon
   return index - 1;
 }
 
-// The `vt` index of a corner `a/b` or `a/b/c` (0-based), or -1 for `a` and
-// `a//c`, and for an index that names no `vt` read so far (the geometry is
-// still read; only --init file needs the texture, and it names the face).
+// The `vt` index of a corner `a/b` or `a/b/c` (0-based); -1 for `a` and
+// `a//c`; -2 for an index that names no `vt` read so far (the geometry is
+// still read; only what uses the texture needs it, and it names the face).
 int obj_texture_index(std::string_view token, long long textures_so_far) {
   const std::size_t slash = token.find('/');
   if (slash == std::string_view::npos) return -1;
   std::string_view rest = token.substr(slash + 1);
   rest = rest.substr(0, rest.find('/'));
+  if (rest.empty()) return -1;
   long long index = 0;
-  if (rest.empty() || !parse_integer(rest, &index) || index == 0) return -1;
+  if (!parse_integer(rest, &index) || index == 0) return -2;
   const long long resolved = index < 0 ? textures_so_far + index : index - 1;
-  return resolved >= 0 && resolved < textures_so_far ? static_cast<int>(resolved) : -1;
+  return resolved >= 0 && resolved < textures_so_far ? static_cast<int>(resolved) : -2;
 }
 
 // The `vn` index of a corner `a/b/c` or `a//c` (0-based), or -1 (none, or

@@ -20,7 +20,7 @@ struct RawElements {
   std::vector<double> coords;       // 3 per vertex
   std::vector<int> corners;         // `corners` per element, 0-based
   std::vector<double> texture;      // `vt` u v, 2 per row
-  std::vector<int> corner_texture;  // per corner the `vt` row (0-based), -1 for none
+  std::vector<int> corner_texture;  // per corner the `vt` row (0-based); -1 none, -2 no such row
 };
 
 // The OBJ `v` / `f` records with exactly `corners` indices per `f`

@@ -304,7 +304,11 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
   if (corners < 0 || !faces.properties[corners].list || faces.properties[corners].type.real)
     throw InputError(file_name, faces.header_line, "the face element has no integer list 'vertex_indices'");
   int texcoord = faces.find("texcoord");
-  if (texcoord >= 0 && (!faces.properties[texcoord].list || !faces.properties[texcoord].type.real)) texcoord = -1;
+  if (texcoord >= 0 && (!faces.properties[texcoord].list || !faces.properties[texcoord].type.real))
+    throw InputError(file_name, faces.header_line,
+                     "the face property 'texcoord' is " +
+                         std::string(faces.properties[texcoord].list ? "a list of integers" : "not a list") +
+                         "; texture coordinates are a float or double list (u, v per corner)");
   if (vertices.count == 0) throw InputError(file_name, vertices.header_line, "the file has no vertices");
   if (faces.count == 0) throw InputError(file_name, faces.header_line, "the file has no faces");
   // A binary file must hold at least what its header declares before any
