@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <filesystem>
+#include <exception>
 #include <set>
 
 #include "framework/process/error.h"
@@ -37,8 +38,18 @@ void load_extension(const std::string& path) {
   const auto register_parts = reinterpret_cast<Register>(dlsym(library, "akvf_register_extension"));
   if (!register_parts)
     throw InputError(path + ": not an akvf extension (no extern \"C\" void akvf_register_extension())");
+  // What a registration throws becomes an akvf error naming the file (a
+  // foreign type would reach Python as a bare RuntimeError).
+  try {
+    register_parts();
+  } catch (const OptionsError& e) {
+    throw OptionsError(path + ": the extension's registration failed: " + e.what());
+  } catch (const std::exception& e) {
+    throw InputError(path + ": the extension's registration failed: " + e.what());
+  } catch (...) {
+    throw InputError(path + ": the extension's registration failed with an exception that is not a std::exception");
+  }
   loaded.insert(canonical);
-  register_parts();
 }
 
 }  // namespace akvf::python

@@ -13,8 +13,9 @@
 namespace akvf::python {
 
 // Loads the extension (once per path) and calls its registration function.
-// InputError when the file cannot be loaded or lacks the function;
-// OptionsError from a registration (a name already taken).
+// InputError naming the file when it cannot be loaded, lacks the function or
+// its registration throws; OptionsError naming it when a registration is
+// refused (a name already taken).
 void load_extension(const std::string& path);
 
 }  // namespace akvf::python

@@ -68,6 +68,11 @@ def extension():
 
 
 @pytest.fixture
+def throwing_extension():
+    return built_file("AKVF_THROWING_EXTENSION", "the test extension whose registration throws")
+
+
+@pytest.fixture
 def meshes():
     folder = os.environ.get("AKVF_DATA_DIR") or str(pathlib.Path(__file__).resolve().parents[3] / "shared" / "meshes")
     if not os.path.isdir(folder):

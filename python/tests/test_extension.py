@@ -2,6 +2,8 @@
 against akvf's headers alone) loaded into the module, listed, and run by name
 with every preconditioner."""
 
+import shutil
+
 import pytest
 
 import akvf
@@ -33,3 +35,14 @@ def test_what_is_not_an_extension_is_refused(tmp_path):
         akvf.load_extension(not_elf)
     with pytest.raises(akvf.InputError, match="cannot load extension"):
         akvf.load_extension(tmp_path / "missing.so")
+
+
+def test_a_registration_that_throws_is_an_akvf_error_naming_the_file(extension, throwing_extension, tmp_path):
+    with pytest.raises(akvf.InputError, match="registration failed with an exception that is not a std::exception"):
+        akvf.load_extension(throwing_extension)
+    # The same energy again under another file name: refused, naming that file.
+    akvf.load_extension(extension)
+    copy = tmp_path / "copy.so"
+    shutil.copy(extension, copy)
+    with pytest.raises(akvf.OptionsError, match="copy.so: the extension's registration failed: .*area-symmetric"):
+        akvf.load_extension(copy)
