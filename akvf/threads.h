@@ -4,7 +4,8 @@
 // to what their environment variables give the `akvf` program
 // (docs/design.md, "Native runtime"): OpenBLAS single-threaded, and OpenMP's
 // dynamic adjustment on, so that Debian's CHOLMOD does not start a 4-thread
-// team per supernode on a 2-core machine. Both are restored afterwards.
+// team per supernode on a 2-core machine. Both are restored when the last
+// ThreadLimit alive ends, so runs side by side in one process keep them.
 #include <memory>
 
 namespace akvf {

@@ -182,6 +182,27 @@ def test_threads_are_honoured(disk):
     assert np.array_equal(one.uv, two.uv)  # the assembly is deterministic for any thread count
 
 
+def test_runs_side_by_side_with_other_thread_counts_give_the_same_bits_as_alone(meshes):
+    # The native libraries' settings are process-wide: a run that ends must
+    # not restore them under a neighbour still running.
+    import threading
+    V, F = akvf.read_mesh(meshes / "tri" / "camel_b.obj")
+    counts = (1, 2, 3)
+    alone = {t: akvf.parameterize(V, F, threads=t, max_iters=30, grad_tol=0).uv for t in counts}
+    for trial in range(3):
+        together = {}
+        def run(t):
+            together[t] = akvf.parameterize(V, F, threads=t, max_iters=30, grad_tol=0).uv
+        workers = [threading.Thread(target=run, args=(t,)) for t in counts]
+        for w in workers:
+            w.start()
+        for w in workers:
+            w.join()
+        for t in counts:
+            assert np.array_equal(together[t], alone[t]), (trial, t)
+        assert np.array_equal(alone[t], alone[1])
+
+
 def test_a_mesh_file_round_trip(disk, tmp_path):
     V, F = disk
     r = akvf.parameterize(V, F)
