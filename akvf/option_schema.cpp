@@ -175,7 +175,7 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                 &O::ls_rho, "in (0, 1)", [](double r) { return r > 0 && r < 1; }));
     f.push_back(text_field<O>("init", "init", "NAME",
                               "initial map: tutte (uniform weights), cotan, or file (the mesh file's texture "
-                              "coordinates: OBJ vt, PLY u,v)",
+                              "coordinates: OBJ vt, PLY u,v, taken at the energy's best uniform scale)",
                               &O::init, [](const O& o) {
                                 if (o.init != "file" && o.init != "tutte" && o.init != "uniform" && o.init != "cotan" &&
                                     o.init != "cotangent")

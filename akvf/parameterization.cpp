@@ -9,6 +9,7 @@
 #include "framework/mesh/chart_layout.h"
 #include "framework/mesh/vertex_graph.h"
 #include "framework/optimization/injective_objective.h"
+#include "framework/optimization/uniform_scale.h"
 #include "framework/process/error.h"
 #include "preconditioners/contact_preconditioner.h"
 #include "solvers/lbfgs_solver.h"
@@ -263,8 +264,9 @@ Eigen::VectorXd start_from_map(const ParamSetup& setup, const Eigen::MatrixXd& u
     throw ValidationError(what + (allow_mirror ? " invert a triangle: " : " inverts a triangle: ") +
                           setup.objective->first_bad_element(x0));
   }
-  // Scaled to the mesh's area (1 here), as every map the optimizer returns
-  // is: a texture's unit square or any other scale starts alike.
+  // Scaled to the mesh's area (1 here), then to the energy's best uniform
+  // scale: a texture's unit square or any other scale starts alike, and a
+  // saved result restarts at the energy it ended with.
   const Eigen::MatrixXi& F = setup.objective->elements();
   double area = 0;
   for (int f = 0; f < F.rows(); ++f) {
@@ -272,7 +274,8 @@ Eigen::VectorXd start_from_map(const ParamSetup& setup, const Eigen::MatrixXd& u
     const Eigen::RowVector2d e2 = compact.row(F(f, 2)) - compact.row(F(f, 0));
     area += 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
   }
-  return x0 / std::sqrt(area);
+  x0 /= std::sqrt(area);
+  return best_uniform_scale(*setup.objective, x0) * x0;
 }
 
 namespace {

@@ -114,7 +114,8 @@ Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x);
 Eigen::MatrixXi output_uv_faces(const ParamSetup& setup);
 
 // A start map of the input's vertices (#V by 2, any scale and placement) as
-// the optimizer's x (compacted, scaled to the mesh's area, area-1 units). OptionsError for another
+// the optimizer's x (compacted, in area-1 units, at the energy's best uniform
+// scale: uniform_scale.h). OptionsError for another
 // shape; ValidationError for a coordinate that is not finite or an inverted
 // triangle, named with `what` ("the start map inverts a triangle: triangle
 // 12 ..."). With `allow_mirror`, a map that inverts every triangle (a

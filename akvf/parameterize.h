@@ -120,8 +120,9 @@ class Parameterizer {
   // overflow there). `callbacks` are called for this solve only, after
   // options().callbacks.
   ParameterizeResult solve(const std::vector<IterationCallback>& callbacks = {});
-  // From `uv0` (#V by 2, any scale and placement): OptionsError if it is
-  // not of that shape, ValidationError naming the first inverted triangle.
+  // From `uv0` (#V by 2, any scale and placement; started at the energy's
+  // best uniform scale): OptionsError if it is not of that shape,
+  // ValidationError naming the first inverted triangle.
   ParameterizeResult solve(const Eigen::MatrixXd& uv0, const std::vector<IterationCallback>& callbacks = {});
 
   // New options for the next solves; the initial map is recomputed only if

@@ -361,6 +361,26 @@ TEST_CASE("--init file starts from the mesh file's texture coordinates, or says 
   fs::remove_all(dir);
 }
 
+TEST_CASE("a saved map restarts at the energy it ended with: --init file takes the energy's best uniform scale") {
+  const fs::path dir = scratch_dir("restart");
+  akvf::test::write_obj(dir / "bumpy.obj", akvf::test::bumpy_disk(12, 10));
+  for (const std::string energy : {"symmetric-dirichlet", "arap", "mips"}) {
+    CAPTURE(energy);
+    // The textured OBJ's vt are in the unit square: not the optimizer's scale.
+    REQUIRE(akvf_run({"param", (dir / "bumpy.obj").string(), "--energy", energy, "--out", (dir / "uv.obj").string(),
+                      "--summary", (dir / "first.json").string(), "-q"})
+                .code == akvf::kExitOk);
+    REQUIRE(akvf_run({"param", (dir / "uv.obj").string(), "--energy", energy, "--init", "file", "--trace",
+                      (dir / "again.csv").string(), "-q"})
+                .code == akvf::kExitOk);
+    const nlohmann::json first = nlohmann::json::parse(read_text(dir / "first.json"));
+    const double ended = first["final_energy"].get<double>();
+    const double started = akvf::read_trace_csv((dir / "again.csv").string()).column("energy", "again.csv")[0];
+    CHECK(std::abs(started - ended) <= 1e-9 * ended);
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("--out writes UV.mtl and a checkerboard beside the OBJ, vt in the unit square, --texture none does not") {
   const fs::path dir = scratch_dir("texture");
   akvf::test::write_obj(dir / "bar.obj", akvf::bent_bar(21, 5));
