@@ -4,7 +4,9 @@
 // run whose flip-free optimum overlaps itself kept free of overlap.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "akvf/akvf.h"
 #include "framework/mesh/box_pairs.h"
@@ -92,6 +94,37 @@ TEST_CASE("the first contact step: a corner moving onto the opposite edge, and n
   CHECK(loop.first_contact_step(square(), d, 10) == doctest::Approx(1).epsilon(1e-12));
   // Scaling the square up never brings a vertex to an edge.
   CHECK(std::isinf(loop.first_contact_step(square(), square(), 10)));
+}
+
+TEST_CASE("the first contact step of a long sweep (sliced): a vertex on an edge there, no crossing before") {
+  // A circle of 300 vertices, each moved by a random direction far longer
+  // than an edge: the sweep is cut into slices, the first contact must be
+  // exact all the same.
+  const int n = 300;
+  Eigen::VectorXd x(2 * n), d(2 * n);
+  for (int v = 0; v < n; ++v) x.segment<2>(2 * v) << std::cos(2 * M_PI * v / n), std::sin(2 * M_PI * v / n);
+  const BoundaryContact circle = loop_at_rest(x, Eigen::VectorXd::Constant(n, M_PI - 2 * M_PI / n));
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal(0, 1);
+  for (int trial = 0; trial < 20; ++trial) {
+    CAPTURE(trial);
+    for (int i = 0; i < 2 * n; ++i) d[i] = 0.05 * normal(random);
+    const double t = circle.first_contact_step(x, d, 100);
+    REQUIRE(std::isfinite(t));
+    for (const double before : {0.25, 0.5, 0.9, 0.999}) CHECK(circle.count_crossings(x + before * t * d) == 0);
+    // At t some vertex lies on an edge it is not an end of.
+    const Eigen::VectorXd y = x + t * d;
+    double closest = INFINITY;
+    for (int v = 0; v < n; ++v)
+      for (int e = 0; e < n; ++e) {
+        const int a = e, b = (e + 1) % n;
+        if (v == a || v == b) continue;
+        const Eigen::Vector2d p = y.segment<2>(2 * v), pa = y.segment<2>(2 * a), pb = y.segment<2>(2 * b);
+        const double s = std::clamp((p - pa).dot(pb - pa) / (pb - pa).squaredNorm(), 0.0, 1.0);
+        closest = std::min(closest, (p - (pa + s * (pb - pa))).norm());
+      }
+    CHECK(closest < 1e-9);
+  }
 }
 
 TEST_CASE("the barrier is zero far from contact and its gradient matches finite differences") {
