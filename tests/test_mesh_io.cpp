@@ -2,11 +2,14 @@
 // that checks the message names the file, the line and the problem.
 #include <doctest/doctest.h>
 
+#include <Eigen/Geometry>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "framework/mesh/mesh_io.h"
+#include "framework/mesh/polygon_triangulation.h"
 #include "tests/test_support.h"
 
 using akvf::test::error_message;
@@ -34,14 +37,21 @@ TEST_CASE("OBJ reads every face corner form and ignores vt and vn") {
   CHECK(mesh.V(2, 0) == 1.0);
 }
 
-TEST_CASE("OBJ rejects faces with more than three corners") {
-  CHECK(obj_error(kSquareVertices + "f 1 2 3 4\n") ==
-        "line 5 of bad.obj: face has 4 corners; only triangles are supported (triangulate the mesh first)");
+TEST_CASE("OBJ triangulates faces with more than three corners, with a warning") {
+  std::istringstream in(kSquareVertices + "v 2 0.5 0\nf 1 2 5 3 4\n");
+  akvf::Warnings warnings;
+  const akvf::TriMesh mesh = akvf::read_obj(in, "pentagon.obj", &warnings);
+  REQUIRE(mesh.num_faces() == 3);
+  CHECK(warnings == akvf::Warnings{"pentagon.obj: triangulated 1 face with more than three corners (up to 5) into "
+                                   "triangles; 3 triangles in all, numbered in messages as triangles"});
+  for (int f = 0; f < 3; ++f) {  // every triangle keeps the pentagon's orientation (+z)
+    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    CHECK((b - a).cross(c - a).z() > 0);
+  }
 }
 
 TEST_CASE("OBJ rejects faces with fewer than three corners") {
-  CHECK(obj_error(kSquareVertices + "f 1 2\n") ==
-        "line 5 of bad.obj: face has 2 corners; only triangles are supported (triangulate the mesh first)");
+  CHECK(obj_error(kSquareVertices + "f 1 2\n") == "line 5 of bad.obj: face has 2 corners; a face needs at least three");
 }
 
 TEST_CASE("OBJ rejects an index out of range, naming its line") {
@@ -122,11 +132,11 @@ TEST_CASE("OFF that declares more rows than it has fails fast without allocating
   CHECK(off_error("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") == "line 6 of bad.off: file ends after 1 of 2 faces");
 }
 
-TEST_CASE("OFF rejects polygons, short faces and bad indices") {
+TEST_CASE("OFF triangulates polygons, rejects short faces and bad indices") {
   const std::string head = "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
-  CHECK(off_error(head + "4 0 1 2 3\n") ==
-        "line 7 of bad.off: face has 4 corners; only triangles are supported (triangulate the mesh first)");
-  CHECK(off_error(head + "3 0 1\n") == "line 7 of bad.off: face lists fewer than 3 vertex indices");
+  CHECK(parse_mesh(head + "4 0 1 2 3\n", "quad.off").num_faces() == 2);
+  CHECK(off_error(head + "2 0 1\n") == "line 7 of bad.off: face has 2 corners; a face needs at least three");
+  CHECK(off_error(head + "3 0 1\n") == "line 7 of bad.off: face lists fewer than its 3 vertex indices");
   CHECK(off_error(head + "3 0 1 4\n") == "line 7 of bad.off: face index 4 out of range (4 vertices)");
   CHECK(off_error(head + "3 0 -1 2\n") == "line 7 of bad.off: face index -1 out of range (4 vertices)");
 }
@@ -181,5 +191,59 @@ TEST_CASE("OBJ writer keeps what the source carries besides: normals, groups, ma
         "# 4 vertices, 2 faces, written by akvf\nmtllib uv.mtl\no square\nv 0 0 0 1 0 0\nv 1 0 0\nv 1 1 0 0 0 1\n"
         "v 0 1 0\nvn 0 0 1\ng top\ns 1\nvt 0 0\nvt 2 0\nvt 2 2\nvt 0 2\nusemtl checker\nf 1/1 2/2/1 3/3/1\n"
         "f 1/1/1 3/3 4/4/1\nl 1 2\n");
+  std::filesystem::remove(path);
+}
+
+TEST_CASE("a quad split along its shorter diagonal, a concave polygon by ears inside it") {
+  Eigen::MatrixXd V(4, 3);
+  V << 0, 0, 0, 3, 0, 0, 3.2, 1, 0, 0, 1, 0;  // diagonal 0-2 is longer than 1-3
+  auto triangles = akvf::triangulate_polygon(V, {0, 1, 2, 3});
+  REQUIRE(triangles.size() == 2);
+  for (const auto& t : triangles) CHECK(std::count(t.begin(), t.end(), 1) + std::count(t.begin(), t.end(), 3) == 2);
+  // An arrow (reflex corner at 3): no triangle may cover the notch.
+  Eigen::MatrixXd arrow(5, 3);
+  arrow << 0, 0, 0, 2, 0, 0, 2, 2, 0, 1, 0.5, 0, 0, 2, 0;
+  triangles = akvf::triangulate_polygon(arrow, {0, 1, 2, 3, 4});
+  REQUIRE(triangles.size() == 3);
+  double area = 0;
+  for (const auto& t : triangles) {
+    const Eigen::Vector3d a = arrow.row(t[0]), b = arrow.row(t[1]), c = arrow.row(t[2]);
+    const double z = (b - a).cross(c - a).z();
+    CHECK(z > 0);
+    area += 0.5 * z;
+  }
+  CHECK(area == doctest::Approx(2 * 2 - 0.5 * 2 * 1.5));  // the square less the notch
+}
+
+TEST_CASE("OBJ polygons written back as polygons with per-corner vt, normals kept") {
+  const std::string source = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nvn 0 0 1\n"
+                             "f 1//1 2//1 3//1 4//1\nf 2 5 6 3\n";
+  std::istringstream in(source);
+  akvf::ObjPassthrough passthrough;
+  const akvf::TriMesh mesh = akvf::read_obj(in, "quads.obj", nullptr, nullptr, &passthrough);
+  REQUIRE(mesh.num_faces() == 4);
+  Eigen::MatrixXd UV = mesh.V.leftCols(2);
+  const auto path = (std::filesystem::temp_directory_path() / "akvf_quads_test.obj").string();
+  akvf::write_obj_with_uv(path, mesh, UV, "", &passthrough);
+  std::ifstream file(path);
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  CHECK(text.find("f 1/1/1 2/2/1 3/3/1 4/4/1\nf 2/2 5/5 6/6 3/3\n") != std::string::npos);
+  // A seam through the first quad (a corner of the diagonal with another
+  // texture row in one of its two triangles): that quad goes out as triangles.
+  Eigen::MatrixXd seam_uv(7, 2);
+  seam_uv.topRows(6) = UV;
+  seam_uv.row(6) << 9, 9;
+  Eigen::MatrixXi seam_faces = mesh.F;
+  for (int k = 0; k < 3; ++k)
+    if ((mesh.F.row(1).array() == mesh.F(0, k)).any()) {
+      seam_faces(0, k) = 6;
+      break;
+    }
+  akvf::write_obj_with_uv(path, mesh, seam_uv, seam_faces, "", &passthrough);
+  std::ifstream again(path);
+  const std::string seamed((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
+  CHECK(seamed.find("f 2/2 5/5 6/6 3/3\n") != std::string::npos);
+  CHECK(seamed.find("f 1/1/1 2/2/1 3/3/1 4/4/1") == std::string::npos);
+  CHECK(seamed.find("/7/1 ") != std::string::npos);
   std::filesystem::remove(path);
 }

@@ -165,7 +165,10 @@ TEST_CASE("PLY: malformed headers and bodies name the line or byte and the probl
   // A quad, an index out of range, a short row, a stray row (ASCII).
   std::string quad = good;
   quad.replace(quad.find("\n3 "), 3, "\n4 9 ");
-  CHECK(ply_error(quad).find("face 0 has 4 corners; only triangles are supported") != std::string::npos);
+  CHECK(ply_error(quad).find("face 0: vertex index 9 out of range") != std::string::npos);  // a quad is read
+  std::string two = good;
+  two.replace(two.find("\n3 "), 3, "\n2 ");
+  CHECK(ply_error(two).find("face 0 has 2 corners; a face needs at least three") != std::string::npos);
   std::string out_of_range = good;
   out_of_range.replace(out_of_range.find("\n3 ") + 3, 1, "99");
   CHECK(ply_error(out_of_range).find("face 0: vertex index 99") != std::string::npos);
@@ -291,5 +294,22 @@ TEST_CASE("PLY output after a cut: per-corner texcoord reads back as the mesh's 
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
       "element face 1\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\nend_header\n"
       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 4 0 0 1 0\n";
-  CHECK(ply_error(bad).find("face 0 has 4 texcoord values; a triangle has 6 (u, v per corner)") != std::string::npos);
+  CHECK(ply_error(bad).find("face 0 has 4 texcoord values; its 3 corners need 6 (u, v per corner)") != std::string::npos);
+}
+
+TEST_CASE("PLY: a quad with per-corner texcoord is triangulated, each triangle corner keeps its own u, v") {
+  const std::string quad =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\nend_header\n"
+      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 8 0 0 0.5 0 0.5 0.5 0 0.5\n";
+  std::istringstream in(quad);
+  Eigen::MatrixXd uv, corner_uv;
+  akvf::Warnings warnings;
+  const akvf::TriMesh mesh = akvf::read_ply(in, "q.ply", &uv, &corner_uv, &warnings);
+  REQUIRE(mesh.num_faces() == 2);
+  REQUIRE(corner_uv.rows() == 6);
+  CHECK(warnings.size() == 1);
+  for (int f = 0; f < 2; ++f)
+    for (int k = 0; k < 3; ++k)  // u, v = half of x, y here
+      CHECK((corner_uv.row(3 * f + k) - 0.5 * mesh.V.row(mesh.F(f, k)).head<2>()).norm() == 0);
 }

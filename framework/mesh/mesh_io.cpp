@@ -10,6 +10,7 @@
 
 #include "framework/mesh/mesh_text.h"
 #include "framework/mesh/ply_reader.h"
+#include "framework/mesh/polygon_triangulation.h"
 #include "framework/mesh/stl_reader.h"
 #include "framework/mesh/text_reader.h"
 #include "framework/process/error.h"
@@ -19,13 +20,29 @@ namespace akvf {
 
 TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings, MeshTexture* texture,
                  ObjPassthrough* passthrough) {
-  const RawElements raw = read_obj_elements(
-      in, file_name, 3, "face", "only triangles are supported (triangulate the mesh first)", warnings, passthrough);
+  RawElements raw =
+      read_obj_elements(in, file_name, 3, "face", "a face needs at least three", warnings, passthrough);
+  TriMesh mesh{rows_to_matrix<double, 3>(raw.coords), Eigen::MatrixXi(), 1};
+  if (std::any_of(raw.sizes.begin(), raw.sizes.end(), [](int n) { return n > 3; })) {
+    const TriangulatedPolygons triangulated = triangulate_faces(mesh.V, raw.corners, raw.sizes);
+    std::vector<int> corner_texture(triangulated.source_corner.size());
+    for (std::size_t k = 0; k < corner_texture.size(); ++k)
+      corner_texture[k] = raw.corner_texture[triangulated.source_corner[k]];
+    if (warnings) warnings->push_back(triangulation_note(triangulated, file_name));
+    if (passthrough) {
+      passthrough->face_sizes = raw.sizes;
+      passthrough->face_vertices = raw.corners;
+      passthrough->triangle_source_corner = triangulated.source_corner;
+    }
+    raw.corners = triangulated.triangles;
+    raw.corner_texture = std::move(corner_texture);
+  }
+  mesh.F = rows_to_matrix<int, 3>(raw.corners);
   if (texture && !raw.texture.empty()) {
     texture->uv = rows_to_matrix<double, 2>(raw.texture);
     texture->corner = rows_to_matrix<int, 3>(raw.corner_texture);
   }
-  return {rows_to_matrix<double, 3>(raw.coords), rows_to_matrix<int, 3>(raw.corners), 1};
+  return mesh;
 }
 
 void require_corner_texture(const TriMesh& mesh, const MeshTexture& texture, const std::string& file_name,
@@ -69,7 +86,7 @@ Eigen::MatrixXd per_vertex_uv(const TriMesh& mesh, const MeshTexture& texture, c
   return uv;
 }
 
-TriMesh read_off(std::istream& in, const std::string& file_name) {
+TriMesh read_off(std::istream& in, const std::string& file_name, Warnings* warnings) {
   TextReader reader(in, file_name);
   if (!reader.next_line()) throw InputError(file_name, 0, "empty file (expected an 'OFF' header)");
   const std::string header(reader.tokens()[0]);
@@ -89,7 +106,7 @@ TriMesh read_off(std::istream& in, const std::string& file_name) {
                 (nf == 1 ? " face" : " faces") + ") are too large");
 
   std::vector<double> coords;
-  std::vector<int> corners;
+  std::vector<int> corners, sizes;
   coords.reserve(3 * std::min(nv, kMaxReserve));
   corners.reserve(3 * std::min(nf, kMaxReserve));
   for (long long i = 0; i < nv; ++i) {
@@ -103,22 +120,29 @@ TriMesh read_off(std::istream& in, const std::string& file_name) {
       throw InputError(file_name, reader.line_number(),
                        "file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
     const long long n = reader.integer(0, "face corner count");
-    if (n != 3)
-      reader.fail("face has " + std::to_string(n) +
-                  " corners; only triangles are supported (triangulate the mesh first)");
-    if (reader.tokens().size() < 4) reader.fail("face lists fewer than 3 vertex indices");
-    for (std::size_t k = 1; k <= 3; ++k) {
+    if (n < 3) reader.fail("face has " + std::to_string(n) + " corners; a face needs at least three");
+    if (n > static_cast<long long>(reader.tokens().size()) - 1)
+      reader.fail("face lists fewer than its " + std::to_string(n) + " vertex indices");
+    for (std::size_t k = 1; k <= static_cast<std::size_t>(n); ++k) {
       const long long index = reader.integer(k, "face index");
       if (index < 0 || index >= nv)
         reader.fail("face index " + std::to_string(index) + " out of range (" + std::to_string(nv) + " vertices)");
       corners.push_back(static_cast<int>(index));
     }
+    sizes.push_back(static_cast<int>(n));
   }
   // The header's count must match the file in both directions.
   if (reader.next_line())
     reader.fail("more faces than the header's face count " + std::to_string(nf) +
                 " (or stray text after the last face); fix the count on the header line");
-  return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 3>(corners), 0};
+  TriMesh mesh{rows_to_matrix<double, 3>(coords), Eigen::MatrixXi(), 0};
+  if (std::any_of(sizes.begin(), sizes.end(), [](int n) { return n > 3; })) {
+    const TriangulatedPolygons triangulated = triangulate_faces(mesh.V, corners, sizes);
+    if (warnings) warnings->push_back(triangulation_note(triangulated, file_name));
+    corners = triangulated.triangles;
+  }
+  mesh.F = rows_to_matrix<int, 3>(corners);
+  return mesh;
 }
 
 TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings, MeshTexture* texture,
@@ -129,7 +153,7 @@ TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings, MeshText
   std::ifstream in = open_mesh_file(path);
   if (ext == ".ply") {
     Eigen::MatrixXd uv, corner_uv;
-    TriMesh mesh = read_ply(in, path, &uv, &corner_uv);
+    TriMesh mesh = read_ply(in, path, &uv, &corner_uv, warnings);
     if (texture && corner_uv.rows() > 0) {  // per corner: corner 3 f + k uses row 3 f + k
       Eigen::MatrixXi corner(mesh.num_faces(), 3);
       for (int f = 0; f < mesh.num_faces(); ++f) corner.row(f) << 3 * f, 3 * f + 1, 3 * f + 2;
@@ -140,7 +164,7 @@ TriMesh read_triangle_mesh(const std::string& path, Warnings* warnings, MeshText
     return mesh;
   }
   if (ext == ".stl") return read_stl(in, path);
-  return ext == ".obj" ? read_obj(in, path, warnings, texture, passthrough) : read_off(in, path);
+  return ext == ".obj" ? read_obj(in, path, warnings, texture, passthrough) : read_off(in, path, warnings);
 }
 
 void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& UV,
@@ -191,9 +215,15 @@ void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen
                        const ObjPassthrough* source) {
   using Kind = ObjPassthrough::Kind;
   check_corner_uv(mesh, UV, UV_faces);
-  if (source && (count_of(*source, Kind::kVertices) != mesh.num_vertices() ||
-                 count_of(*source, Kind::kFaces) != mesh.num_faces()))
-    throw OutputError("cannot write " + path + ": the OBJ source's vertex and face counts differ from the mesh's");
+  if (source) {
+    long long triangles = count_of(*source, Kind::kFaces);
+    if (!source->face_sizes.empty()) {
+      triangles = 0;
+      for (const int n : source->face_sizes) triangles += n - 2;
+    }
+    if (count_of(*source, Kind::kVertices) != mesh.num_vertices() || triangles != mesh.num_faces())
+      throw OutputError("cannot write " + path + ": the OBJ source's vertex and face counts differ from the mesh's");
+  }
   const bool own_material = !material_library.empty();
   write_file_atomically(path, [&](std::ostream& out) {
     out << std::setprecision(17);
@@ -210,21 +240,52 @@ void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen
         out << '\n';
       }
     };
-    auto write_faces = [&](long long count) {
+    // A corner: vertex / texture row / the source corner's normal.
+    const std::size_t normals = source ? source->corner_normal.size() : 0;  // corners after these have none
+    auto write_corner = [&](int vertex, int uv, long long source_corner) {
+      out << ' ' << vertex + 1 << '/' << uv + 1;
+      if (source_corner < static_cast<long long>(normals) && source->corner_normal[source_corner] >= 0)
+        out << '/' << source->corner_normal[source_corner] + 1;
+    };
+    const bool polygons = source && !source->face_sizes.empty();
+    long long polygon = 0, polygon_corner = 0;  // the next `f` line of a source with polygons, its first corner
+    auto write_faces = [&](long long count) {  // `count` faces of the source (triangles without a source)
       if (!uv_written) {
         for (int i = 0; i < UV.rows(); ++i) out << "vt " << UV(i, 0) << ' ' << UV(i, 1) << '\n';
         if (own_material) out << "usemtl checker\n";
         uv_written = true;
       }
-      const std::size_t normals = source ? source->corner_normal.size() : 0;  // corners after these have none
-      for (; count > 0; --count, ++f) {
+      for (; count > 0 && !polygons; --count, ++f) {
         out << 'f';
-        for (int k = 0; k < 3; ++k) {
-          out << ' ' << mesh.F(f, k) + 1 << '/' << UV_faces(f, k) + 1;
-          const std::size_t corner = 3 * static_cast<std::size_t>(f) + k;
-          if (corner < normals && source->corner_normal[corner] >= 0) out << '/' << source->corner_normal[corner] + 1;
-        }
+        for (int k = 0; k < 3; ++k) write_corner(mesh.F(f, k), UV_faces(f, k), 3LL * f + k);
         out << '\n';
+      }
+      // A polygon is written as itself when each of its corners has one
+      // texture row in all of its triangles (no seam inside it), else as
+      // its triangles.
+      for (; count > 0 && polygons; --count, ++polygon) {
+        const int n = source->face_sizes[polygon];
+        std::vector<int> row(n, -1);
+        bool whole = true;
+        for (int t = f; t < f + n - 2; ++t)
+          for (int k = 0; k < 3; ++k) {
+            int& r = row[source->triangle_source_corner[3LL * t + k] - polygon_corner];
+            whole = whole && (r < 0 || r == UV_faces(t, k));
+            r = UV_faces(t, k);
+          }
+        if (whole) {
+          out << 'f';
+          for (int k = 0; k < n; ++k) write_corner(source->face_vertices[polygon_corner + k], row[k], polygon_corner + k);
+          out << '\n';
+        } else {
+          for (int t = f; t < f + n - 2; ++t) {
+            out << 'f';
+            for (int k = 0; k < 3; ++k) write_corner(mesh.F(t, k), UV_faces(t, k), source->triangle_source_corner[3LL * t + k]);
+            out << '\n';
+          }
+        }
+        f += n - 2;
+        polygon_corner += n;
       }
     };
     if (!source || source->empty()) {

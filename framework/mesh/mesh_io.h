@@ -12,7 +12,8 @@ namespace akvf {
 // OBJ: `v x y z` and `f` with corners `a`, `a/b`, `a//c` or `a/b/c`
 // (1-based, negative = relative to the vertices read so far). `vt`, `vn` and
 // the other statements OBJ allows are ignored, unknown ones with a warning
-// (mesh_text.h); faces with more or fewer than three corners are rejected.
+// (mesh_text.h); faces with more than three corners are triangulated, with a
+// warning (polygon_triangulation.h), faces with fewer are rejected.
 // A leading UTF-8 byte-order mark is skipped by every reader.
 // `texture` (if given) receives the `vt` rows and each corner's row.
 // `passthrough` (if given) receives the rest (obj_passthrough.h).
@@ -20,9 +21,10 @@ TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warni
                  MeshTexture* texture = nullptr, ObjPassthrough* passthrough = nullptr);
 
 // OFF: header `OFF` (or COFF/NOFF), counts `#V #F [#E]`, vertex rows, then
-// face rows `3 i j k` (0-based). Counts that disagree with the file, in
-// either direction, are errors naming the line.
-TriMesh read_off(std::istream& in, const std::string& file_name);
+// face rows `n i j k ...` (0-based; polygons triangulated with a warning,
+// polygon_triangulation.h). Counts that disagree with the file, in either
+// direction, are errors naming the line.
+TriMesh read_off(std::istream& in, const std::string& file_name, Warnings* warnings = nullptr);
 
 // Dispatches on the extension (.obj, .off, .ply or .stl, case-insensitive;
 // ply_reader.h, stl_reader.h).

@@ -66,8 +66,8 @@ int obj_normal_index(std::string_view token, long long normals_so_far) {
 
 // Records the current line of `reader` in `passthrough`: its kind, and what
 // the OBJ writer needs to put it back (obj_passthrough.h).
-void keep_line(const TextReader& reader, long long vertices_so_far, long long normals_so_far, long long faces_so_far,
-               int corners, ObjPassthrough& passthrough) {
+void keep_line(const TextReader& reader, long long vertices_so_far, long long normals_so_far, long long corners_so_far,
+               ObjPassthrough& passthrough) {
   using Kind = ObjPassthrough::Kind;
   const auto& t = reader.tokens();
   if (t[0] == "v") {
@@ -82,10 +82,10 @@ void keep_line(const TextReader& reader, long long vertices_so_far, long long no
   } else if (t[0] == "f") {
     passthrough.add(Kind::kFaces);
     std::vector<int>& normal = passthrough.corner_normal;
-    for (int i = 1; i <= corners; ++i) {
+    for (std::size_t i = 1; i < t.size(); ++i) {
       const int n = obj_normal_index(t[i], normals_so_far);
       if (n < 0 && normal.empty()) continue;
-      normal.resize(static_cast<std::size_t>(corners * faces_so_far + i - 1), -1);  // none before: -1 up to here
+      normal.resize(static_cast<std::size_t>(corners_so_far) + i - 1, -1);  // none before: -1 up to here
       normal.push_back(n);
     }
   } else {
@@ -127,7 +127,7 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
     if (t[0].find('\0') != std::string_view::npos)
       reader.fail("a NUL byte: the file is not text (UTF-16? save it as UTF-8 or ASCII)");
     const long long vertices_before = static_cast<long long>(raw.coords.size() / 3);
-    const long long elements_before = static_cast<long long>(element_lines.size());
+    const long long corners_before = static_cast<long long>(raw.corners.size());
     if (t[0] == "v") {
       // x y z, an optional weight w, or the common x y z r g b colour extension.
       if (t.size() < 4) reader.fail("vertex needs three coordinates, found " + std::to_string(t.size() - 1));
@@ -142,9 +142,11 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
       raw.texture.push_back(reader.real(1, "texture coordinate"));
       raw.texture.push_back(t.size() > 2 ? reader.real(2, "texture coordinate") : 0.0);
     } else if (t[0] == "f") {
-      if (static_cast<int>(t.size()) != corners + 1)
-        reader.fail(element + " has " + std::to_string(t.size() - 1) + " corners; " + advice);
-      for (int i = 1; i <= corners; ++i) {
+      const int found = static_cast<int>(t.size()) - 1;
+      if (corners == 3 ? found < 3 : found != corners)
+        reader.fail(element + " has " + std::to_string(found) + (found == 1 ? " corner; " : " corners; ") + advice);
+      raw.sizes.push_back(found);
+      for (int i = 1; i <= found; ++i) {
         const long long index = obj_corner_index(reader, t[i], vertices_before, element);
         if (index > std::numeric_limits<int>::max())
           reader.fail(element + " index " + std::to_string(index + 1) + " is too large");
@@ -156,7 +158,7 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
       auto [it, inserted] = unknown.try_emplace(std::string(t[0]), reader.line_number(), 0);
       ++it->second.second;
     }
-    if (passthrough) keep_line(reader, vertices_before, normals, elements_before, corners, *passthrough);
+    if (passthrough) keep_line(reader, vertices_before, normals, corners_before, *passthrough);
     if (t[0] == "vn") ++normals;
   }
   if (warnings)
@@ -165,12 +167,12 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
                           statement + "' ignored (" + std::to_string(where.second) + " line" +
                           (where.second == 1 ? "" : "s") + ")");
   const long long nv = static_cast<long long>(raw.coords.size() / 3);
-  for (std::size_t e = 0; e < element_lines.size(); ++e)
-    for (int k = 0; k < corners; ++k)
-      if (raw.corners[corners * e + k] >= nv)
+  std::size_t first = 0;
+  for (std::size_t e = 0; e < element_lines.size(); first += raw.sizes[e], ++e)
+    for (int k = 0; k < raw.sizes[e]; ++k)
+      if (raw.corners[first + k] >= nv)
         throw InputError(file_name, element_lines[e],
-                         element + " index " +
-                             std::to_string(static_cast<long long>(raw.corners[corners * e + k]) + 1) +
+                         element + " index " + std::to_string(static_cast<long long>(raw.corners[first + k]) + 1) +
                              " out of range (" + std::to_string(nv) + " vertices)");
   if (nv == 0) throw InputError(file_name, 0, "no vertices");
   if (element_lines.empty()) throw InputError(file_name, 0, "no " + element + "s");

@@ -18,12 +18,14 @@ constexpr long long kMaxReserve = 1 << 20;
 // Vertex coordinates and element corner indices as read, row by row.
 struct RawElements {
   std::vector<double> coords;       // 3 per vertex
-  std::vector<int> corners;         // `corners` per element, 0-based
+  std::vector<int> corners;         // the elements' corners one after another, 0-based
+  std::vector<int> sizes;           // per element, its number of corners
   std::vector<double> texture;      // `vt` u v, 2 per row
   std::vector<int> corner_texture;  // per corner the `vt` row (0-based); -1 none, -2 no such row
 };
 
-// The OBJ `v` / `f` records with exactly `corners` indices per `f`
+// The OBJ `v` / `f` records with exactly `corners` indices per `f`, or at
+// least three for corners == 3 (polygons, for the caller to triangulate)
 // (`a`, `a/b`, `a//c`, `a/b/c`, negative = relative). A `v` has x y z, an
 // optional weight w, or x y z r g b (colour); other counts are refused. The
 // other statements OBJ allows (vt vn vp g o s usemtl mtllib l p) are skipped;

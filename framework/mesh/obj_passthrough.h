@@ -26,11 +26,18 @@ struct ObjPassthrough {
   // the end of vertex_tail_count have none.
   std::vector<std::uint8_t> vertex_tail_count;
   std::vector<double> vertex_tail;
-  // Per face corner (3 f + k) the `vn` row it names (0-based), or -1.
-  // Corners past its end name none.
+  // Per corner of the `f` lines (one after another) the `vn` row it names
+  // (0-based), or -1. Corners past its end name none.
   std::vector<int> corner_normal;
   // The `mtllib` file names, as written in the file.
   std::vector<std::string> material_libraries;
+  // Faces with more than three corners (triangulated for the mesh): per `f`
+  // line its corner count and vertices, and per corner of the mesh's
+  // triangles the `f` corner it comes from (polygon_triangulation.h). Empty
+  // when every face is a triangle.
+  std::vector<int> face_sizes;
+  std::vector<int> face_vertices;
+  std::vector<long long> triangle_source_corner;
 
   bool empty() const { return runs.empty(); }
   // Appends one line of `kind`; consecutive lines of a kind share a run.

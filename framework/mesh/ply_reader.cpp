@@ -11,6 +11,7 @@
 
 #include "framework/mesh/mesh_io.h"
 #include "framework/mesh/mesh_text.h"
+#include "framework/mesh/polygon_triangulation.h"
 #include "framework/mesh/text_reader.h"
 #include "framework/process/error.h"
 #include "framework/process/output_file.h"
@@ -271,7 +272,8 @@ std::vector<Element> read_header(const std::string& data, const std::string& fil
 
 }  // namespace
 
-TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd* uv, Eigen::MatrixXd* corner_uv) {
+TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd* uv, Eigen::MatrixXd* corner_uv,
+                 Warnings* warnings) {
   const std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   Format format = Format::kAscii;
   std::size_t body_start = 0;
@@ -323,7 +325,8 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
   }
 
   std::vector<double> coords, texture, corner_texture;
-  std::vector<int> triangle_corners;
+  std::vector<int> triangle_corners, sizes;  // the faces' corners one after another, and per face its count
+  std::vector<long long> texcoord_counts;
   coords.reserve(3 * std::min(vertices.count, kMaxReserve));
   if (u >= 0) texture.reserve(2 * std::min(vertices.count, kMaxReserve));
   if (texcoord >= 0) corner_texture.reserve(6 * std::min(faces.count, kMaxReserve));
@@ -347,12 +350,11 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
         if (count < 0) body.fail("negative list length in " + where.text());
         const bool is_corners = &element == &faces && static_cast<int>(p) == corners;
         const bool is_texcoord = &element == &faces && static_cast<int>(p) == texcoord;
-        if (is_corners && count != 3)
+        if (is_corners && count < 3)
           body.fail("face " + std::to_string(row) + " has " + std::to_string(static_cast<long long>(count)) +
-                    " corners; only triangles are supported (triangulate the mesh first)");
-        if (is_texcoord && count != 6)
-          body.fail("face " + std::to_string(row) + " has " + std::to_string(static_cast<long long>(count)) +
-                    " texcoord values; a triangle has 6 (u, v per corner)");
+                    " corners; a face needs at least three");
+        if (is_corners) sizes.push_back(static_cast<int>(count));
+        if (is_texcoord) texcoord_counts.push_back(static_cast<long long>(count));
         for (long long k = 0; k < static_cast<long long>(count); ++k) {
           where.item = static_cast<int>(std::min<long long>(k, std::numeric_limits<int>::max()));
           const double item = body.value(property.type, where);
@@ -381,10 +383,32 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
     }
   }
   body.finish();
+  for (std::size_t f = 0; f < texcoord_counts.size(); ++f)
+    if (texcoord_counts[f] != 2LL * sizes[f])
+      throw InputError(file_name, 0,
+                       "face " + std::to_string(f) + " has " + std::to_string(texcoord_counts[f]) +
+                           " texcoord values; its " + std::to_string(sizes[f]) + " corners need " +
+                           std::to_string(2 * sizes[f]) + " (u, v per corner)");
+  TriMesh mesh{rows_to_matrix<double, 3>(coords), Eigen::MatrixXi(), 0};
+  if (std::any_of(sizes.begin(), sizes.end(), [](int n) { return n > 3; })) {
+    const TriangulatedPolygons triangulated = triangulate_faces(mesh.V, triangle_corners, sizes);
+    if (warnings) warnings->push_back(triangulation_note(triangulated, file_name));
+    triangle_corners = triangulated.triangles;
+    if (texcoord >= 0) {
+      std::vector<double> by_triangle;
+      by_triangle.reserve(2 * triangulated.source_corner.size());
+      for (const long long c : triangulated.source_corner) {
+        by_triangle.push_back(corner_texture[2 * c]);
+        by_triangle.push_back(corner_texture[2 * c + 1]);
+      }
+      corner_texture = std::move(by_triangle);
+    }
+  }
+  mesh.F = rows_to_matrix<int, 3>(triangle_corners);
   if (uv) *uv = u >= 0 ? Eigen::MatrixXd(rows_to_matrix<double, 2>(texture)) : Eigen::MatrixXd(0, 2);
   if (corner_uv)
     *corner_uv = texcoord >= 0 ? Eigen::MatrixXd(rows_to_matrix<double, 2>(corner_texture)) : Eigen::MatrixXd(0, 2);
-  return {rows_to_matrix<double, 3>(coords), rows_to_matrix<int, 3>(triangle_corners), 0};
+  return mesh;
 }
 
 namespace {

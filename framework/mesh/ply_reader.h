@@ -22,10 +22,12 @@ namespace akvf {
 // file has none.
 // corner_uv (if given) receives the per-corner texture coordinates of a
 // face list property `texcoord` (u0 v0 u1 v1 u2 v2, as MeshLab writes and
-// write_ply_with_uv below for seams): 3 #F by 2, corner 3 f + k in row
-// 3 f + k; 0 rows when the file has none.
+// write_ply_with_uv below for seams): 3 #F by 2, corner 3 f + k of the
+// triangles in row 3 f + k; 0 rows when the file has none.
+// Faces with more than three corners are triangulated, with a warning in
+// `warnings` (polygon_triangulation.h).
 TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd* uv = nullptr,
-                 Eigen::MatrixXd* corner_uv = nullptr);
+                 Eigen::MatrixXd* corner_uv = nullptr, Warnings* warnings = nullptr);
 
 // Binary little-endian PLY with double x, y, z and per-vertex double s, t
 // (the names Blender writes; MeshLab and read_ply read them), faces as

@@ -1,0 +1,43 @@
+#pragma once
+// Faces with more than three corners (quads and n-gons of OBJ, OFF and PLY
+// files, as modelling tools write them) split into triangles that keep the
+// face's orientation.
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace akvf {
+
+// Triangles of the polygon `ring` (vertex indices into V's rows, in order):
+// ring.size() - 2 of them, each as three positions in `ring` (0-based), so a
+// caller can carry per-corner data (texture rows, normals) along. The
+// polygon is projected on the plane of its Newell normal and cut by ear
+// clipping, each step taking the valid ear with the shortest diagonal (for a
+// quad: the shorter diagonal that leaves two triangles of its orientation).
+// A polygon with no valid ear left (self-intersecting, or flat to a line) is
+// finished as a fan.
+std::vector<std::array<int, 3>> triangulate_polygon(const Eigen::MatrixXd& V, const std::vector<int>& ring);
+
+// Polygons from a file, triangulated.
+struct TriangulatedPolygons {
+  std::vector<int> triangles;  // 3 vertex indices per triangle
+  // Per triangle corner, the index of the file's face corner it comes from
+  // (into the flattened corners of every face), for per-corner data.
+  std::vector<long long> source_corner;
+  // Per triangle, the file's face (0-based).
+  std::vector<int> source_face;
+  int polygons = 0;   // faces with more than three corners
+  int largest = 3;    // the most corners of a face
+};
+
+// Triangulates faces given as `sizes[f]` consecutive entries of `corners`
+// (vertex indices into V). Faces of three corners pass as they are.
+TriangulatedPolygons triangulate_faces(const Eigen::MatrixXd& V, const std::vector<int>& corners,
+                                       const std::vector<int>& sizes);
+
+// "triangulated 12 faces with more than three corners (up to 6) into 30
+// triangles", for a reader's warnings; "" when there were none.
+std::string triangulation_note(const TriangulatedPolygons& t, const std::string& file_name);
+
+}  // namespace akvf
