@@ -17,8 +17,10 @@ bool inside(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vec
 }
 
 // Polygons with more corners take the first valid ear rather than the best
-// one (ear clipping stays quadratic).
+// one, and those with more than kEarCorners are cut as a fan: ear clipping
+// is cubic in the corners at worst.
 constexpr int kBestEarCorners = 32;
+constexpr int kEarCorners = 256;
 
 }  // namespace
 
@@ -34,6 +36,7 @@ std::vector<std::array<int, 3>> triangulate_polygon(const Eigen::MatrixXd& V, co
     normal += p.cross(q);
   }
   std::vector<Eigen::Vector2d> point(n);
+  if (n > kEarCorners) normal.setZero();  // a fan below
   if (normal.norm() > 0) {
     normal.normalize();
     const Eigen::Vector3d helper = std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();

@@ -16,7 +16,7 @@ namespace akvf {
 // clipping, each step taking the valid ear with the shortest diagonal (for a
 // quad: the shorter diagonal that leaves two triangles of its orientation).
 // A polygon with no valid ear left (self-intersecting, or flat to a line) is
-// finished as a fan.
+// finished as a fan, and one of more than 256 corners is cut as a fan.
 std::vector<std::array<int, 3>> triangulate_polygon(const Eigen::MatrixXd& V, const std::vector<int>& ring);
 
 // Polygons from a file, triangulated.
