@@ -49,11 +49,12 @@ TEST_CASE("demo writes the UV OBJ, the trace and the SVG and reaches the lower b
 
 TEST_CASE("param on a malformed mesh exits 1, names file and line, and writes nothing") {
   const fs::path dir = scratch_dir("bad");
-  write_text(dir / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3 4\n");
+  write_text(dir / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 1 2 x\n");
   const fs::path out = dir / "uv.obj", trace = dir / "trace.csv";
   const Outcome r = akvf_run({"param", (dir / "bad.obj").string(), "--out", out.string(), "--trace", trace.string()});
   CHECK(r.code == akvf::kExitInputError);
-  CHECK(r.err.find("line 5 of " + (dir / "bad.obj").string() + ": face has 4 corners") != std::string::npos);
+  CHECK(r.err.find("line 6 of " + (dir / "bad.obj").string() + ": face corner 'x' does not start with a vertex index") !=
+        std::string::npos);
   CHECK_FALSE(fs::exists(out));
   CHECK_FALSE(fs::exists(trace));
   fs::remove_all(dir);
