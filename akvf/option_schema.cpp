@@ -189,6 +189,14 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                 if (o.cut != "none" && o.cut != "auto")
                                   throw OptionsError("unknown cut '" + o.cut + "' (valid: none, auto)");
                               }));
+    f.push_back(text_field<O>("repair", "repair", "auto|none",
+                              "auto opens edges shared by three or more faces and splits non-manifold vertices into "
+                              "one copy per fan of faces (reported; the UV is then per corner); none refuses such "
+                              "meshes",
+                              &O::repair, [](const O& o) {
+                                if (o.repair != "auto" && o.repair != "none")
+                                  throw OptionsError("unknown repair '" + o.repair + "' (valid: auto, none)");
+                              }));
     f.push_back(text_field<O>("injectivity", "injectivity", "global|local",
                               "global keeps every chart's boundary from crossing itself (no overlap in UV: a "
                               "contact-free step and a boundary barrier, Smith & Schaefer 2015); local keeps "

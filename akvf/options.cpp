@@ -43,6 +43,7 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.optimize_flaps = o.flaps;
   c.global_injectivity = o.injectivity == "global";
   c.cut = o.cut == "auto";
+  c.repair = o.repair == "auto";
   c.optimizer.gradient_tolerance = o.grad_tol;
   c.optimizer.max_iterations = o.max_iters;
   c.optimizer.time_limit = o.time_limit;

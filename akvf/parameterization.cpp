@@ -122,7 +122,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
     throw OptionsError(
         "init 'file' and cut 'auto' cannot be combined: a file's texture coordinates bring their own "
         "seams; start from them without the cut, or cut and start from the Tutte map");
-  setup.disk = prepare_disk_mesh(unit_input, name, config.cut);
+  setup.disk = prepare_disk_mesh(unit_input, name, config.cut, config.repair);
   setup.warnings = setup.disk.warnings;
   TriMesh normalized = setup.disk.mesh;
   setup.normalization = normalize_to_unit_area(&normalized);
@@ -228,7 +228,7 @@ Eigen::MatrixXd chart_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
 
 Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
   const Eigen::MatrixXd UV = chart_uv(setup, x);
-  if (setup.disk.cut) return UV;
+  if (setup.disk.per_corner_uv()) return UV;
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(setup.disk.num_input_vertices, 2);
   for (int v = 0; v < UV.rows(); ++v) out.row(setup.disk.input_vertex[v]) = UV.row(v);
   return out;
@@ -236,7 +236,7 @@ Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
 
 Eigen::MatrixXi output_uv_faces(const ParamSetup& setup) {
   const Eigen::MatrixXi& F = setup.disk.mesh.F;
-  if (setup.disk.cut) return F;
+  if (setup.disk.per_corner_uv()) return F;
   return F.unaryExpr([&](int v) { return setup.disk.input_vertex[v]; });
 }
 

@@ -29,6 +29,9 @@ struct ParamConfig {
   // disks (one chart per component, framework/mesh/cut_to_disk.h) instead of
   // refusing it.
   bool cut = false;
+  // Open edges of three or more faces and split non-manifold vertices
+  // (framework/mesh/manifold_repair.h) instead of refusing them.
+  bool repair = true;
   // init "file": start from `start_uv` (#V of the input by 2, any scale and
   // placement; a file's texture coordinates) instead of Tutte and flaps.
   bool init_from_file = false;

@@ -40,6 +40,8 @@ struct ParameterizeOptions {
                                                // command line's (the API takes Parameterizer::solve(uv0))
   std::string cut = "none";                    // "auto": cut closed / multi-boundary / higher-genus /
                                                // multi-component meshes into disk charts (uv_faces)
+  std::string repair = "auto";                 // "auto": open edges of 3+ faces, split non-manifold vertices
+                                               // (per-corner uv_faces); "none": refuse such meshes
   bool flaps = true;                           // flap optimization of §5.4 after the Tutte map
   std::string injectivity = "global";          // "global": no UV overlap (boundary contact-free);
                                                // "local": flip-free only, the paper's Algorithm 1

@@ -27,6 +27,7 @@ std::string other_value(const akvf::OptionField<Options>& field, const Options& 
   if (field.key == "init") return "cotan";
   if (field.key == "flaps") return "off";
   if (field.key == "cut") return "auto";
+  if (field.key == "repair") return "none";
   if (field.key == "injectivity") return "local";
   if (field.key == "linear_solver") return "cholmod";
   if (field.key == "eigen_filter") return "adaptive";

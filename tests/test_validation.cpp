@@ -184,3 +184,38 @@ TEST_CASE("midpoint subdivision keeps a disk a disk and multiplies the faces by 
   const std::string expected = "would make " + std::to_string(64 * grid.num_faces()) + " faces (more than 100)";
   CHECK(akvf::test::error_message([&] { akvf::subdivide_midpoint(grid, 3, 100); }).find(expected) != std::string::npos);
 }
+
+TEST_CASE("repair: a vertex where two fans meet is split, an edge of three faces opened, or both refused") {
+  TriMesh bowtie;
+  bowtie.V.resize(7, 3);
+  bowtie.V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2, 1, 0.2, 2, 2, 0, 1, 2, 0;
+  bowtie.F.resize(4, 3);
+  bowtie.F << 0, 1, 2, 0, 2, 3, 2, 4, 5, 2, 5, 6;
+  CHECK(validation_error(bowtie) ==
+        "m.obj: vertex 2 (numbered from 0) is non-manifold: two separate boundary fans meet there");
+  const akvf::DiskMesh split = akvf::prepare_disk_mesh(bowtie, "m.obj", true, true);
+  CHECK(split.repair.split_vertices == 1);
+  CHECK(split.repair.added_copies == 1);
+  CHECK(split.repair.first_split == std::vector<int>{2});
+  CHECK(split.per_corner_uv());
+  CHECK(split.num_charts() == 2);
+  CHECK(split.mesh.num_vertices() == 8);
+  CHECK(split.input_vertex[7] == 2);  // the copy keeps its input vertex
+  CHECK(split.warnings.back() ==
+        "m.obj: repaired: split 1 non-manifold vertex (2) into one copy per fan of faces, 1 copy added (numbered "
+        "from 0); the UV is per corner there (--repair none refuses such input)");
+  // A fin: a third face on the diagonal of a square comes off, the square stays whole.
+  TriMesh fin;
+  fin.V.resize(5, 3);
+  fin.V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1;
+  fin.F.resize(3, 3);
+  fin.F << 0, 1, 2, 0, 2, 3, 0, 2, 4;
+  CHECK(validation_error(fin).find("is shared by 3 faces") != std::string::npos);
+  const akvf::DiskMesh opened = akvf::prepare_disk_mesh(fin, "m.obj", true, true);
+  CHECK(opened.repair.opened_edges == 1);
+  CHECK(opened.num_charts() == 2);
+  // A manifold mesh is left as it is.
+  const akvf::DiskMesh grid = akvf::prepare_disk_mesh(akvf::test::grid_disk(5, 4), "grid.obj", false, true);
+  CHECK_FALSE(grid.repair.any());
+  CHECK_FALSE(grid.per_corner_uv());
+}

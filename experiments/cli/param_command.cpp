@@ -65,6 +65,7 @@ Json param_summary(const std::string& mesh_file, const ParameterizeOptions& opti
   record["overlap"] = Json{{"boundary_crossings", run.boundary_crossings}, {"area_fraction", run.overlap.fraction()}};
   record["distortion_energy"] = run.distortion_energy;
   if (setup.disk.cut) record["cut"] = cut_record(setup.disk);
+  if (setup.disk.repair.any()) record["repair"] = repair_record(setup.disk.repair, setup.disk.mesh.index_base);
   if (texture_uv_scale > 0) record["texture_uv_scale"] = texture_uv_scale;
   return single_run_summary("param", mesh_file, settings, record);
 }
@@ -111,7 +112,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   if (!outputs.obj.empty() && out_kind == ".glb") {
     write_glb(outputs.obj, input, unit_square_uv(UV), UV_faces, checker_image());
   } else if (!outputs.obj.empty() && out_kind == ".ply") {
-    if (setup.disk.cut) {
+    if (setup.disk.per_corner_uv()) {
       write_ply_with_uv(outputs.obj, input, UV, UV_faces);
     } else {
       write_ply_with_uv(outputs.obj, input, UV);

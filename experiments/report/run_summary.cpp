@@ -91,6 +91,18 @@ Json cut_record(const DiskMesh& disk) {
           {"boundary_loops", disk.chart_input_loops}};
 }
 
+Json repair_record(const ManifoldRepair& repair, int index_base) {
+  Json opened = Json::array();
+  for (const auto& [a, b] : repair.first_opened) opened.push_back({a + index_base, b + index_base});
+  Json split = Json::array();
+  for (const int v : repair.first_split) split.push_back(v + index_base);
+  return {{"opened_edges", repair.opened_edges},
+          {"split_vertices", repair.split_vertices},
+          {"added_copies", repair.added_copies},
+          {"first_opened_edges", opened},
+          {"first_split_vertices", split}};
+}
+
 Json single_run_summary(const std::string& problem, const std::string& mesh_file, const Json& settings,
                         const Json& record) {
   Json summary;

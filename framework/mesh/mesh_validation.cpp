@@ -181,7 +181,7 @@ bool orientable(const Eigen::MatrixXi& F) {
 
 }  // namespace
 
-DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool cut) {
+DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool cut, bool repair) {
   if (input.num_faces() == 0) throw ValidationError(name + ": mesh has no faces");
   check_finite_and_indices(input, name);
   DiskMesh out = compact(input, name);
@@ -189,6 +189,10 @@ DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool c
   const int b = m.index_base;
   auto at_input = [&](int v) { return file_number(out.input_vertex[v], b); };
   check_face_areas(m, name, out.input_vertex);
+  if (repair) {
+    out.repair = repair_manifold(&out.mesh, &out.input_vertex);
+    if (out.repair.any()) out.warnings.push_back(repair_description(out.repair, name, b));
+  }
 
   const EdgeTopology topology = edge_topology(m.F);
   if (!topology.overused_edge.empty())

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/mesh/manifold_repair.h"
 #include "framework/mesh/mesh.h"
 
 namespace akvf {
@@ -21,18 +22,23 @@ struct DiskMesh {
   bool cut = false;                                 // the automatic cut was asked for
   int cut_edges = 0;                                // input edges opened by it
   std::vector<int> chart_genus, chart_input_loops;  // per chart, before the cut
+  ManifoldRepair repair;                            // what was repaired (repair asked for)
   Warnings warnings;
 
   int num_charts() const { return static_cast<int>(boundary_loops.size()); }
+  // Whether a vertex may have several UVs (seams of the cut, split
+  // vertices): outputs then carry per-corner texture coordinates.
+  bool per_corner_uv() const { return cut || repair.any(); }
 };
 
 // Validates `input` (read from `name`, used in messages) and drops
-// unreferenced vertices with a warning. With `cut`, a closed, multi-boundary,
-// higher-genus or multi-component manifold mesh is cut into disks
-// (cut_to_disk.h); without, it is refused with a message naming the option.
-// Throws ValidationError with a message that says what is wrong and what to
-// do about it.
-DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool cut = false);
+// unreferenced vertices with a warning. With `repair`, edges of three or more
+// faces are opened and non-manifold vertices split (manifold_repair.h), with
+// a warning. With `cut`, a closed, multi-boundary, higher-genus or
+// multi-component manifold mesh is cut into disks (cut_to_disk.h); without,
+// it is refused with a message naming the option. Throws ValidationError
+// with a message that says what is wrong and what to do about it.
+DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool cut = false, bool repair = false);
 
 // What the automatic cut did, in words: "cut into 2 charts along 40 edges
 // (chart 0: genus 1, no boundary; chart 1: genus 0, 2 boundary loops)".
