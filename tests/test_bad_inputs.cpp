@@ -111,16 +111,20 @@ TEST_CASE("OBJ: a vertex takes x y z, a weight w, or a colour, other extra token
 }
 
 TEST_CASE("validation names vertices and faces as the file numbers them") {
-  // Three faces around edge (1, 2) in OBJ numbering: 1-based in the message.
+  // Three faces around edge (1, 2) in OBJ numbering: 1-based in the message
+  // (repair none: the edge is refused rather than opened).
+  akvf::ParamConfig no_repair;
+  no_repair.repair = false;
   const std::string fan = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
-  const std::string obj_message = error_message([&] { akvf::prepare_parameterization(obj(fan), "m.obj", {}); });
+  const std::string obj_message =
+      error_message([&] { akvf::prepare_parameterization(obj(fan), "m.obj", no_repair); });
   CHECK(obj_message ==
         "m.obj: edge (1, 2) is shared by 3 faces (numbered from 1, as in the file); the mesh must be "
         "edge-manifold");
   // The same mesh as OFF: numbered from 0.
   const std::string off_message = error_message([&] {
     akvf::prepare_parameterization(off("OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n"),
-                                   "m.off", {});
+                                   "m.off", no_repair);
   });
   CHECK(off_message == "m.off: edge (0, 1) is shared by 3 faces (numbered from 0); the mesh must be edge-manifold");
   // A degenerate face after an unreferenced vertex: the file's numbers, not the compacted ones.
