@@ -419,6 +419,17 @@ TEST_CASE("--out writes UV.mtl and a checkerboard beside the OBJ, vt in the unit
   fs::remove_all(dir);
 }
 
+TEST_CASE("an OBJ named with spaces gets side files without them (readers split mtllib and map_Kd on spaces)") {
+  const fs::path dir = scratch_dir("spaces");
+  akvf::test::write_obj(dir / "bar.obj", akvf::bent_bar(11, 3));
+  REQUIRE(akvf_run({"param", (dir / "bar.obj").string(), "--out", (dir / "my uv.obj").string(), "-q"}).code ==
+          akvf::kExitOk);
+  CHECK(read_text(dir / "my uv.obj").find("mtllib my_uv.mtl\n") != std::string::npos);
+  CHECK(read_text(dir / "my_uv.mtl").find("map_Kd my_uv_checker.png\n") != std::string::npos);
+  CHECK(fs::exists(dir / "my_uv_checker.png"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("counts read as a person writes them: 1 face, 3 vertices") {
   const fs::path dir = scratch_dir("one_face");
   write_text(dir / "one.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0.2\nf 1 2 3\n");

@@ -247,3 +247,12 @@ TEST_CASE("OBJ polygons written back as polygons with per-corner vt, normals kep
   CHECK(seamed.find("/7/1 ") != std::string::npos);
   std::filesystem::remove(path);
 }
+
+TEST_CASE("OBJ: a line ending in a backslash goes on on the next, messages name the lines as the file has them") {
+  const auto mesh = parse_mesh("v 0 0 0\nv 1 0 \\\n  0\nv 0 1 0\nf 1 2 \\\n 3\n", "continued.obj");
+  CHECK(mesh.num_vertices() == 3);
+  CHECK(mesh.num_faces() == 1);
+  CHECK(mesh.V(1, 0) == 1.0);
+  CHECK(obj_error("v 0 0 0\nv 1 0 \\\n 0\nv 0 1 0\nf 1 2 \\\n3\nf 1 2 x\n") ==
+        "line 7 of bad.obj: face corner 'x' does not start with a vertex index (a whole number)");
+}

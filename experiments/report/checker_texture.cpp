@@ -1,6 +1,7 @@
 #include "experiments/report/checker_texture.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "experiments/report/png_image.h"
@@ -10,7 +11,9 @@ namespace akvf {
 
 TextureFiles texture_files_for(const std::string& obj_path) {
   const std::filesystem::path obj(obj_path);
-  const std::string stem = obj.stem().string();
+  // White space becomes '_': readers split `mtllib` and `map_Kd` lines on it.
+  std::string stem = obj.stem().string();
+  std::replace_if(stem.begin(), stem.end(), [](unsigned char c) { return std::isspace(c) != 0; }, '_');
   TextureFiles files;
   files.mtl_name = stem + ".mtl";
   files.png_name = stem + "_checker.png";

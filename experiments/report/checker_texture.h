@@ -15,7 +15,8 @@ struct TextureFiles {
   std::string mtl_name, png_name;  // as the OBJ and the MTL name them
 };
 
-// UV.obj -> UV.mtl and UV_checker.png in the same folder.
+// UV.obj -> UV.mtl and UV_checker.png in the same folder ("my uv.obj" ->
+// my_uv.mtl, my_uv_checker.png: OBJ and MTL readers split names on spaces).
 TextureFiles texture_files_for(const std::string& obj_path);
 
 // A 1024-pixel image of 16 x 16 squares, grey 40 and 235.

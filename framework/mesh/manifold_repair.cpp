@@ -53,7 +53,8 @@ ManifoldRepair repair_manifold(TriMesh* mesh, std::vector<int>* input_vertex) {
     ++repair.opened_edges;
     if (repair.first_opened.size() < kListed)
       repair.first_opened.push_back({(*input_vertex)[edge.first], (*input_vertex)[edge.second]});
-    auto forward = [&](const std::pair<int, int>& corner) { return F(corner.first, corner.second) == edge.first; };
+    const int first_end = edge.first;  // (a structured binding cannot be captured before C++20)
+    auto forward = [&](const std::pair<int, int>& corner) { return F(corner.first, corner.second) == first_end; };
     bool joined = false;
     for (std::size_t i = 0; i < faces.size() && !joined; ++i)
       for (std::size_t j = i + 1; j < faces.size() && !joined; ++j)

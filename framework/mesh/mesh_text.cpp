@@ -117,7 +117,7 @@ RawElements read_obj_elements(std::istream& in, const std::string& file_name, in
   // Statements of the OBJ format that carry nothing a distortion energy uses.
   static const std::set<std::string, std::less<>> kIgnored = {"vn", "vp", "g", "o", "s", "usemtl", "mtllib", "l", "p"};
   refuse_utf16(in, file_name);
-  TextReader reader(in, file_name);
+  TextReader reader(in, file_name, 0, true);
   RawElements raw;
   std::vector<long> element_lines;
   std::map<std::string, std::pair<long, long>> unknown;  // statement -> (first line, count)

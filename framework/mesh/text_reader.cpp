@@ -7,8 +7,8 @@
 
 namespace akvf {
 
-TextReader::TextReader(std::istream& in, std::string file_name, long lines_already_read)
-    : in_(in), file_name_(std::move(file_name)), line_number_(lines_already_read) {
+TextReader::TextReader(std::istream& in, std::string file_name, long lines_already_read, bool continue_lines)
+    : in_(in), file_name_(std::move(file_name)), line_number_(lines_already_read), continue_lines_(continue_lines) {
   if (lines_already_read == 0) skip_utf8_bom(in_);
 }
 
@@ -25,8 +25,18 @@ void skip_utf8_bom(std::istream& in) {
 }
 
 bool TextReader::next_line() {
+  line_number_ += pending_lines_;  // the continuation lines of the last statement
+  pending_lines_ = 0;
   while (std::getline(in_, line_)) {
     ++line_number_;
+    long joined = 0;  // continuation lines read into this one
+    for (std::string more; continue_lines_;) {
+      const std::size_t end = line_.find_last_not_of(" \t\r");
+      if (end == std::string::npos || line_[end] != '\\' || !std::getline(in_, more)) break;
+      line_.resize(end);
+      line_ += ' ' + more;
+      ++joined;
+    }
     tokens_.clear();
     std::string_view rest(line_);
     if (auto hash = rest.find('#'); hash != std::string_view::npos) rest = rest.substr(0, hash);
@@ -38,7 +48,11 @@ bool TextReader::next_line() {
       if (end > pos) tokens_.push_back(rest.substr(pos, end - pos));
       pos = end;
     }
-    if (!tokens_.empty()) return true;
+    if (!tokens_.empty()) {
+      pending_lines_ = joined;
+      return true;
+    }
+    line_number_ += joined;
   }
   if (in_.bad()) throw InputError(file_name_, line_number_, "read error");
   return false;

@@ -12,8 +12,10 @@ namespace akvf {
 class TextReader {
  public:
   // lines_already_read: lines of `in` consumed before, for the line numbers;
-  // when 0, a leading UTF-8 byte-order mark is skipped.
-  TextReader(std::istream& in, std::string file_name, long lines_already_read = 0);
+  // when 0, a leading UTF-8 byte-order mark is skipped. continue_lines: a
+  // line ending in '\\' goes on on the next line (OBJ); messages name the
+  // line where the statement starts.
+  TextReader(std::istream& in, std::string file_name, long lines_already_read = 0, bool continue_lines = false);
 
   // Advances to the next line that has at least one token. Returns false at
   // the end of the input.
@@ -38,6 +40,8 @@ class TextReader {
   std::string line_;
   std::vector<std::string_view> tokens_;
   long line_number_ = 0;
+  bool continue_lines_ = false;
+  long pending_lines_ = 0;  // continuation lines of the current statement, counted at the next
 };
 
 // Consumes a UTF-8 byte-order mark at the current position of `in`, if there
