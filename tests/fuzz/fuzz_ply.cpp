@@ -7,7 +7,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       data, size,
       [](std::istream& in, const std::string& name) {
         Eigen::MatrixXd uv, corner_uv;
-        return akvf::read_ply(in, name, &uv, &corner_uv);
+        akvf::Warnings warnings;
+        return akvf::read_ply(in, name, &uv, &corner_uv, &warnings);
       },
       "fuzz.ply");
 }
