@@ -14,13 +14,20 @@ namespace akvf {
 
 namespace {
 
+// The objective for Ceres. A point is a failed evaluation (Ceres' line
+// search then shortens the step) when an element is inverted there, or when
+// the segment from the last accepted iterate to it leaves the objective's
+// feasible region on the way (Objective::max_feasible_step: an element
+// inverted and back, or a boundary contact under global injectivity).
 class ObjectiveFunction final : public ceres::FirstOrderFunction {
  public:
-  explicit ObjectiveFunction(const Objective& objective)
-      : objective_(objective), x_(objective.num_variables()), gradient_(objective.num_variables()) {}
+  //   accepted  the last accepted iterate (Ceres updates it every iteration)
+  ObjectiveFunction(const Objective& objective, const Eigen::VectorXd& accepted)
+      : objective_(objective), accepted_(accepted), x_(objective.num_variables()), gradient_(objective.num_variables()) {}
 
   bool Evaluate(const double* parameters, double* cost, double* gradient) const override {
     x_ = Eigen::Map<const Eigen::VectorXd>(parameters, x_.size());
+    if (x_ != accepted_ && !(objective_.max_feasible_step(accepted_, x_ - accepted_) >= 1)) return false;
     if (gradient) {
       *cost = objective_.value_and_gradient(x_, &gradient_);
       Eigen::Map<Eigen::VectorXd>(gradient, x_.size()) = gradient_;
@@ -33,6 +40,7 @@ class ObjectiveFunction final : public ceres::FirstOrderFunction {
 
  private:
   const Objective& objective_;
+  const Eigen::VectorXd& accepted_;
   mutable Eigen::VectorXd x_, gradient_;
 };
 
@@ -109,7 +117,7 @@ OptimizerResult minimize_lbfgs(const Objective& objective, Eigen::VectorXd x, co
     result.status = TerminationStatus::kNumericalFailure;
     return result;
   }
-  ceres::GradientProblem problem(new ObjectiveFunction(objective));
+  ceres::GradientProblem problem(new ObjectiveFunction(objective, x));
   ceres::GradientProblemSolver::Options ceres_options;
   ceres_options.line_search_direction_type = ceres::LBFGS;
   ceres_options.max_lbfgs_rank = lbfgs.memory;

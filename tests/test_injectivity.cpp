@@ -190,4 +190,12 @@ TEST_CASE("a helicoid strip of 1.5 turns: flip-free alone overlaps, global injec
   for (const IterationSummary& row : injective.trace) CHECK(row.flips == 0);
   // Held apart, the map is more distorted than the overlapping one.
   CHECK(injective.energy() > overlapping.energy());
+
+  // L-BFGS too: its line search refuses a point past a contact.
+  ParameterizeOptions lbfgs;
+  lbfgs.preconditioner = "lbfgs";
+  lbfgs.max_iters = 300;
+  const ParameterizeResult quasi_newton = parameterize(strip.V, strip.F, lbfgs);
+  CHECK(quasi_newton.boundary_crossings == 0);
+  CHECK(quasi_newton.overlap_fraction == 0);
 }

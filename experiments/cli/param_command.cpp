@@ -100,8 +100,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   if (run.boundary_crossings > 0 || run.overlap.overlapped_samples > 0)
     err << "warning: the UV map overlaps itself: " << run.boundary_crossings << " pairs of boundary edges cross, "
         << 100 * run.overlap.fraction() << " % of its area lies over another part"
-        << (config.global_injectivity ? " (global injectivity keeps only a start without overlap so, and L-BFGS only "
-                                        "by its barrier)\n"
+        << (config.global_injectivity ? " (global injectivity keeps only a start without overlap so)\n"
                                       : " (--injectivity global prevents it)\n");
 
   const Eigen::MatrixXd UV = output_uv(setup, result.x);
