@@ -14,16 +14,14 @@ double best_uniform_scale(const Objective& objective, const Eigen::VectorXd& x) 
     *finite = std::isfinite(value) && std::isfinite(d);
     return d;
   };
+  Eigen::VectorXd gradient;
+  const double value = objective.value_and_gradient(x, &gradient);
+  const double d0 = gradient.dot(x);
+  if (!std::isfinite(value) || !std::isfinite(d0)) return 1;
+  // A slope at rounding level: the energy does not see the scale (or x is
+  // already at its best one).
+  if (std::abs(d0) <= 1e-12 * gradient.norm() * x.norm()) return 1;
   bool finite = false;
-  const double d0 = slope(0, &finite);
-  if (!finite) return 1;
-  {
-    Eigen::VectorXd gradient;
-    objective.value_and_gradient(x, &gradient);
-    // A slope at rounding level: the energy does not see the scale (or x is
-    // already at its best one).
-    if (std::abs(d0) <= 1e-12 * gradient.norm() * x.norm()) return 1;
-  }
   // Downhill: t grows where the slope is negative.
   const double direction = d0 < 0 ? 1 : -1;
   double inner = 0, outer = 0;
