@@ -98,9 +98,9 @@ void Parameterizer::set_options(const ParameterizeOptions& options) {
   const Busy busy(&state_->busy, "set_options");
   const ParameterizeOptions& old = state_->options;
   const bool new_start = options.init != old.init || options.cut != old.cut || options.repair != old.repair ||
-                         options.flaps != old.flaps ||
-                         options.energy != old.energy || options.exponent != old.exponent ||
-                         options.warm_start_iters != old.warm_start_iters || options.injectivity != old.injectivity;
+                         options.flaps != old.flaps || options.energy != old.energy ||
+                         options.exponent != old.exponent || options.warm_start_iters != old.warm_start_iters ||
+                         options.injectivity != old.injectivity;
   const ParameterizeOptions previous = state_->options;
   state_->options = options;
   try {

@@ -2,8 +2,8 @@
 
 #include <dlfcn.h>
 
-#include <filesystem>
 #include <exception>
+#include <filesystem>
 #include <set>
 
 #include "framework/process/error.h"

@@ -23,7 +23,10 @@ class ObjectiveFunction final : public ceres::FirstOrderFunction {
  public:
   //   accepted  the last accepted iterate (Ceres updates it every iteration)
   ObjectiveFunction(const Objective& objective, const Eigen::VectorXd& accepted)
-      : objective_(objective), accepted_(accepted), x_(objective.num_variables()), gradient_(objective.num_variables()) {}
+      : objective_(objective),
+        accepted_(accepted),
+        x_(objective.num_variables()),
+        gradient_(objective.num_variables()) {}
 
   bool Evaluate(const double* parameters, double* cost, double* gradient) const override {
     x_ = Eigen::Map<const Eigen::VectorXd>(parameters, x_.size());

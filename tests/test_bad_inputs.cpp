@@ -116,8 +116,7 @@ TEST_CASE("validation names vertices and faces as the file numbers them") {
   akvf::ParamConfig no_repair;
   no_repair.repair = false;
   const std::string fan = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
-  const std::string obj_message =
-      error_message([&] { akvf::prepare_parameterization(obj(fan), "m.obj", no_repair); });
+  const std::string obj_message = error_message([&] { akvf::prepare_parameterization(obj(fan), "m.obj", no_repair); });
   CHECK(obj_message ==
         "m.obj: edge (1, 2) is shared by 3 faces (numbered from 1, as in the file); the mesh must be "
         "edge-manifold");

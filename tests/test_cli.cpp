@@ -53,8 +53,8 @@ TEST_CASE("param on a malformed mesh exits 1, names file and line, and writes no
   const fs::path out = dir / "uv.obj", trace = dir / "trace.csv";
   const Outcome r = akvf_run({"param", (dir / "bad.obj").string(), "--out", out.string(), "--trace", trace.string()});
   CHECK(r.code == akvf::kExitInputError);
-  CHECK(r.err.find("line 6 of " + (dir / "bad.obj").string() + ": face corner 'x' does not start with a vertex index") !=
-        std::string::npos);
+  CHECK(r.err.find("line 6 of " + (dir / "bad.obj").string() +
+                   ": face corner 'x' does not start with a vertex index") != std::string::npos);
   CHECK_FALSE(fs::exists(out));
   CHECK_FALSE(fs::exists(trace));
   fs::remove_all(dir);

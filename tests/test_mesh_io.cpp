@@ -216,8 +216,9 @@ TEST_CASE("a quad split along its shorter diagonal, a concave polygon by ears in
 }
 
 TEST_CASE("OBJ polygons written back as polygons with per-corner vt, normals kept") {
-  const std::string source = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nvn 0 0 1\n"
-                             "f 1//1 2//1 3//1 4//1\nf 2 5 6 3\n";
+  const std::string source =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nvn 0 0 1\n"
+      "f 1//1 2//1 3//1 4//1\nf 2 5 6 3\n";
   std::istringstream in(source);
   akvf::ObjPassthrough passthrough;
   const akvf::TriMesh mesh = akvf::read_obj(in, "quads.obj", nullptr, nullptr, &passthrough);

@@ -294,7 +294,8 @@ TEST_CASE("PLY output after a cut: per-corner texcoord reads back as the mesh's 
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
       "element face 1\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\nend_header\n"
       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 4 0 0 1 0\n";
-  CHECK(ply_error(bad).find("face 0 has 4 texcoord values; its 3 corners need 6 (u, v per corner)") != std::string::npos);
+  CHECK(ply_error(bad).find("face 0 has 4 texcoord values; its 3 corners need 6 (u, v per corner)") !=
+        std::string::npos);
 }
 
 TEST_CASE("PLY: a quad with per-corner texcoord is triangulated, each triangle corner keeps its own u, v") {

@@ -221,12 +221,14 @@ TEST_CASE("output names beyond the file system's limits are refused before any w
   CHECK(fs::exists(stem + ".html"));
   r = akvf_run({"param", mesh, "-q", "--out", stem + "x.obj"});  // the checkerboard's name would be too long
   CHECK(r.code == akvf::kExitOutputError);
-  CHECK(r.err == "error: the checkerboard of --out: cannot write " + stem + "x_checker.png: its file name is 263 "
-                 "bytes long; the file system allows at most 255\n");
+  CHECK(r.err == "error: the checkerboard of --out: cannot write " + stem +
+                     "x_checker.png: its file name is 263 "
+                     "bytes long; the file system allows at most 255\n");
   r = akvf_run({"param", mesh, "-q", "--summary", stem + "xxxxxxxxxx.json"});
   CHECK(r.code == akvf::kExitOutputError);
-  CHECK(r.err == "error: cannot write " + stem + "xxxxxxxxxx.json: its file name is 265 bytes long; the file system "
-                 "allows at most 255\n");
+  CHECK(r.err == "error: cannot write " + stem +
+                     "xxxxxxxxxx.json: its file name is 265 bytes long; the file system "
+                     "allows at most 255\n");
   CHECK(temporaries_in(dir) == 0);
   fs::remove_all(dir);
 }

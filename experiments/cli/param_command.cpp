@@ -73,8 +73,8 @@ Json param_summary(const std::string& mesh_file, const ParameterizeOptions& opti
 //   start_uv    the file's texture coordinates per vertex for --init file, or empty
 //   obj_source  what the input OBJ carries besides (kept in an OBJ output), or null
 int run_and_write(const TriMesh& input, const std::string& name, const ParameterizeOptions& options,
-                  const Eigen::MatrixXd& start_uv, const ObjPassthrough* obj_source, const Outputs& outputs,
-                  bool quiet, std::ostream& out, std::ostream& err) {
+                  const Eigen::MatrixXd& start_uv, const ObjPassthrough* obj_source, const Outputs& outputs, bool quiet,
+                  std::ostream& out, std::ostream& err) {
   ParamConfig config = param_config(options);
   config.start_uv = start_uv;
   const ParamSetup setup = prepare_parameterization(input, name, config);

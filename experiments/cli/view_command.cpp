@@ -52,8 +52,9 @@ int view_command(const std::vector<std::string>& args, std::ostream& out, std::o
   if (!summary_path.empty()) {
     content.summary = read_json_file(summary_path);
     if (!content.summary.is_object())
-      throw InputError(summary_path + ": not a run summary: a JSON object was expected, found " +
-                       (content.summary.is_array() ? std::string("an array") : "a " + std::string(content.summary.type_name())));
+      throw InputError(
+          summary_path + ": not a run summary: a JSON object was expected, found " +
+          (content.summary.is_array() ? std::string("an array") : "a " + std::string(content.summary.type_name())));
   }
   const int shown = write_html_view(out_path, content);
   out << "wrote " << out_path << " (" << count_of(content.mesh.num_faces(), "face");

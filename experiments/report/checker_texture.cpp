@@ -13,7 +13,8 @@ TextureFiles texture_files_for(const std::string& obj_path) {
   const std::filesystem::path obj(obj_path);
   // White space becomes '_': readers split `mtllib` and `map_Kd` lines on it.
   std::string stem = obj.stem().string();
-  std::replace_if(stem.begin(), stem.end(), [](unsigned char c) { return std::isspace(c) != 0; }, '_');
+  std::replace_if(
+      stem.begin(), stem.end(), [](unsigned char c) { return std::isspace(c) != 0; }, '_');
   TextureFiles files;
   files.mtl_name = stem + ".mtl";
   files.png_name = stem + "_checker.png";

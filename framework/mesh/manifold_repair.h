@@ -15,9 +15,9 @@
 namespace akvf {
 
 struct ManifoldRepair {
-  int opened_edges = 0;     // edges shared by three or more faces
-  int split_vertices = 0;   // vertices whose faces form several fans
-  int added_copies = 0;     // the copies those splits added
+  int opened_edges = 0;    // edges shared by three or more faces
+  int split_vertices = 0;  // vertices whose faces form several fans
+  int added_copies = 0;    // the copies those splits added
   // The first few of each, as input vertex indices (0-based).
   std::vector<int> first_split;
   std::vector<std::array<int, 2>> first_opened;

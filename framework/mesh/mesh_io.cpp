@@ -20,8 +20,7 @@ namespace akvf {
 
 TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warnings, MeshTexture* texture,
                  ObjPassthrough* passthrough) {
-  RawElements raw =
-      read_obj_elements(in, file_name, 3, "face", "a face needs at least three", warnings, passthrough);
+  RawElements raw = read_obj_elements(in, file_name, 3, "face", "a face needs at least three", warnings, passthrough);
   TriMesh mesh{rows_to_matrix<double, 3>(raw.coords), Eigen::MatrixXi(), 1};
   if (std::any_of(raw.sizes.begin(), raw.sizes.end(), [](int n) { return n > 3; })) {
     const TriangulatedPolygons triangulated = triangulate_faces(mesh.V, raw.corners, raw.sizes);
@@ -249,7 +248,7 @@ void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen
     };
     const bool polygons = source && !source->face_sizes.empty();
     long long polygon = 0, polygon_corner = 0;  // the next `f` line of a source with polygons, its first corner
-    auto write_faces = [&](long long count) {  // `count` faces of the source (triangles without a source)
+    auto write_faces = [&](long long count) {   // `count` faces of the source (triangles without a source)
       if (!uv_written) {
         for (int i = 0; i < UV.rows(); ++i) out << "vt " << UV(i, 0) << ' ' << UV(i, 1) << '\n';
         if (own_material) out << "usemtl checker\n";
@@ -275,12 +274,14 @@ void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen
           }
         if (whole) {
           out << 'f';
-          for (int k = 0; k < n; ++k) write_corner(source->face_vertices[polygon_corner + k], row[k], polygon_corner + k);
+          for (int k = 0; k < n; ++k)
+            write_corner(source->face_vertices[polygon_corner + k], row[k], polygon_corner + k);
           out << '\n';
         } else {
           for (int t = f; t < f + n - 2; ++t) {
             out << 'f';
-            for (int k = 0; k < 3; ++k) write_corner(mesh.F(t, k), UV_faces(t, k), source->triangle_source_corner[3LL * t + k]);
+            for (int k = 0; k < 3; ++k)
+              write_corner(mesh.F(t, k), UV_faces(t, k), source->triangle_source_corner[3LL * t + k]);
             out << '\n';
           }
         }

@@ -27,8 +27,8 @@ struct TriangulatedPolygons {
   std::vector<long long> source_corner;
   // Per triangle, the file's face (0-based).
   std::vector<int> source_face;
-  int polygons = 0;   // faces with more than three corners
-  int largest = 3;    // the most corners of a face
+  int polygons = 0;  // faces with more than three corners
+  int largest = 3;   // the most corners of a face
 };
 
 // Triangulates faces given as `sizes[f]` consecutive entries of `corners`

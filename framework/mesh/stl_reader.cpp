@@ -95,24 +95,26 @@ std::vector<Corner> ascii_corners(const std::string& data, const std::string& fi
   return corners;
 }
 
-// Welds corners within `tolerance` (grid cells of that size from the
-// bounding box's low corner, so cell numbers stay below diagonal /
-// tolerance; a corner joins the first earlier vertex within the tolerance
-// in its own or a neighbouring cell).
-TriMesh weld(const std::vector<Corner>& corners, const Corner& low, double tolerance) {
+// Welds corners within `tolerance` (grid cells at least that large from the
+// bounding box's low corner, and at least 2^-40 of the diagonal, so cell
+// numbers stay below 2^40; a corner joins the first earlier vertex within
+// the tolerance in its own or a neighbouring cell).
+TriMesh weld(const std::vector<Corner>& corners, const Corner& low, double diagonal, double tolerance) {
   struct CellHash {
     std::size_t operator()(const std::array<long long, 3>& c) const {
-      return std::hash<long long>()(c[0] * 73856093LL ^ c[1] * 19349663LL ^ c[2] * 83492791LL);
+      const auto u = [](long long v) { return static_cast<unsigned long long>(v); };  // wraps, never overflows
+      return std::hash<unsigned long long>()(u(c[0]) * 73856093ULL ^ u(c[1]) * 19349663ULL ^ u(c[2]) * 83492791ULL);
     }
   };
+  const double cell = std::max(tolerance, std::ldexp(diagonal, -40));
   std::unordered_map<std::array<long long, 3>, std::vector<int>, CellHash> grid;
   std::vector<Corner> vertices;
   std::vector<int> index;
   index.reserve(corners.size());
   const auto cell_of = [&](const Corner& p) {
-    return std::array<long long, 3>{static_cast<long long>(std::floor((p[0] - low[0]) / tolerance)),
-                                    static_cast<long long>(std::floor((p[1] - low[1]) / tolerance)),
-                                    static_cast<long long>(std::floor((p[2] - low[2]) / tolerance))};
+    return std::array<long long, 3>{static_cast<long long>(std::floor((p[0] - low[0]) / cell)),
+                                    static_cast<long long>(std::floor((p[1] - low[1]) / cell)),
+                                    static_cast<long long>(std::floor((p[2] - low[2]) / cell))};
   };
   for (const Corner& p : corners) {
     const auto cell = cell_of(p);
@@ -182,7 +184,7 @@ TriMesh read_stl(std::istream& in, const std::string& file_name) {
       const double length = std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
       if (length > 0) shortest_edge = std::min(shortest_edge, length);
     }
-  return weld(corners, low, std::min(kStlWeldTolerance * diagonal, kStlWeldEdgeFraction * shortest_edge));
+  return weld(corners, low, diagonal, std::min(kStlWeldTolerance * diagonal, kStlWeldEdgeFraction * shortest_edge));
 }
 
 }  // namespace akvf

@@ -4,9 +4,9 @@
 #include <unistd.h>
 
 #include <array>
-#include <climits>
 #include <atomic>
 #include <cerrno>
+#include <climits>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
