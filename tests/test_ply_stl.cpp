@@ -314,3 +314,10 @@ TEST_CASE("PLY: a quad with per-corner texcoord is triangulated, each triangle c
     for (int k = 0; k < 3; ++k)  // u, v = half of x, y here
       CHECK((corner_uv.row(3 * f + k) - 0.5 * mesh.V.row(mesh.F(f, k)).head<2>()).norm() == 0);
 }
+
+TEST_CASE("PLY: an element with rows but no property is refused at its header line (nothing to read per row)") {
+  CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                  "element junk 1996345774\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                  "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
+        "line 7 of m.ply: element 'junk' declares 1996345774 rows but no property");
+}

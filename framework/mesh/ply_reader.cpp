@@ -265,6 +265,13 @@ std::vector<Element> read_header(const std::string& data, const std::string& fil
     }
   }
   if (!have_format) throw InputError(file, line, "the header has no 'format' line");
+  // Rows of no property hold nothing to read: billions of them would be
+  // counted one by one.
+  for (const Element& element : elements)
+    if (element.count > 0 && element.properties.empty())
+      throw InputError(file, element.header_line,
+                       "element '" + element.name + "' declares " + std::to_string(element.count) +
+                           " rows but no property");
   *body_start = position;
   *body_line = line;
   return elements;
