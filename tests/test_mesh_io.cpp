@@ -10,6 +10,7 @@
 
 #include "framework/mesh/mesh_io.h"
 #include "framework/mesh/polygon_triangulation.h"
+#include "tests/cli_support.h"
 #include "tests/test_support.h"
 
 using akvf::test::error_message;
@@ -176,10 +177,7 @@ TEST_CASE("OBJ writer keeps what the source carries besides: normals, groups, ma
   Eigen::MatrixXd UV(4, 2);
   UV << 0, 0, 2, 0, 2, 2, 0, 2;
   const auto path = (std::filesystem::temp_directory_path() / "akvf_passthrough_test.obj").string();
-  auto written = [&] {
-    std::ifstream file(path);
-    return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  };
+  auto written = [&] { return akvf::test::read_text(path); };
   akvf::write_obj_with_uv(path, mesh, UV, "", &passthrough);
   CHECK(written() ==
         "# 4 vertices, 2 faces, written by akvf\nmtllib a.mtl\no square\nv 0 0 0 1 0 0\nv 1 0 0\nv 1 1 0 0 0 1\n"
@@ -226,8 +224,7 @@ TEST_CASE("OBJ polygons written back as polygons with per-corner vt, normals kep
   Eigen::MatrixXd UV = mesh.V.leftCols(2);
   const auto path = (std::filesystem::temp_directory_path() / "akvf_quads_test.obj").string();
   akvf::write_obj_with_uv(path, mesh, UV, "", &passthrough);
-  std::ifstream file(path);
-  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string text = akvf::test::read_text(path);
   CHECK(text.find("f 1/1/1 2/2/1 3/3/1 4/4/1\nf 2/2 5/5 6/6 3/3\n") != std::string::npos);
   // A seam through the first quad (a corner of the diagonal with another
   // texture row in one of its two triangles): that quad goes out as triangles.
@@ -241,8 +238,7 @@ TEST_CASE("OBJ polygons written back as polygons with per-corner vt, normals kep
       break;
     }
   akvf::write_obj_with_uv(path, mesh, seam_uv, seam_faces, "", &passthrough);
-  std::ifstream again(path);
-  const std::string seamed((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
+  const std::string seamed = akvf::test::read_text(path);
   CHECK(seamed.find("f 2/2 5/5 6/6 3/3\n") != std::string::npos);
   CHECK(seamed.find("f 1/1/1 2/2/1 3/3/1 4/4/1") == std::string::npos);
   CHECK(seamed.find("/7/1 ") != std::string::npos);

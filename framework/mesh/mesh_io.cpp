@@ -22,19 +22,16 @@ TriMesh read_obj(std::istream& in, const std::string& file_name, Warnings* warni
                  ObjPassthrough* passthrough) {
   RawElements raw = read_obj_elements(in, file_name, 3, "face", "a face needs at least three", warnings, passthrough);
   TriMesh mesh{rows_to_matrix<double, 3>(raw.coords), Eigen::MatrixXi(), 1};
-  if (std::any_of(raw.sizes.begin(), raw.sizes.end(), [](int n) { return n > 3; })) {
-    const TriangulatedPolygons triangulated = triangulate_faces(mesh.V, raw.corners, raw.sizes);
-    std::vector<int> corner_texture(triangulated.source_corner.size());
+  if (auto triangulated = triangulate_polygons(mesh.V, &raw.corners, raw.sizes, file_name, warnings)) {
+    std::vector<int> corner_texture(triangulated->source_corner.size());
     for (std::size_t k = 0; k < corner_texture.size(); ++k)
-      corner_texture[k] = raw.corner_texture[triangulated.source_corner[k]];
-    if (warnings) warnings->push_back(triangulation_note(triangulated, file_name));
+      corner_texture[k] = raw.corner_texture[triangulated->source_corner[k]];
+    raw.corner_texture = std::move(corner_texture);
     if (passthrough) {
       passthrough->face_sizes = raw.sizes;
-      passthrough->face_vertices = raw.corners;
-      passthrough->triangle_source_corner = triangulated.source_corner;
+      passthrough->face_vertices = std::move(triangulated->file_corners);
+      passthrough->triangle_source_corner = triangulated->source_corner;
     }
-    raw.corners = triangulated.triangles;
-    raw.corner_texture = std::move(corner_texture);
   }
   mesh.F = rows_to_matrix<int, 3>(raw.corners);
   if (texture && !raw.texture.empty()) {
@@ -135,11 +132,7 @@ TriMesh read_off(std::istream& in, const std::string& file_name, Warnings* warni
     reader.fail("more faces than the header's face count " + std::to_string(nf) +
                 " (or stray text after the last face); fix the count on the header line");
   TriMesh mesh{rows_to_matrix<double, 3>(coords), Eigen::MatrixXi(), 0};
-  if (std::any_of(sizes.begin(), sizes.end(), [](int n) { return n > 3; })) {
-    const TriangulatedPolygons triangulated = triangulate_faces(mesh.V, corners, sizes);
-    if (warnings) warnings->push_back(triangulation_note(triangulated, file_name));
-    corners = triangulated.triangles;
-  }
+  triangulate_polygons(mesh.V, &corners, sizes, file_name, warnings);
   mesh.F = rows_to_matrix<int, 3>(corners);
   return mesh;
 }

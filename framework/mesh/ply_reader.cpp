@@ -397,14 +397,12 @@ TriMesh read_ply(std::istream& in, const std::string& file_name, Eigen::MatrixXd
                            " texcoord values; its " + std::to_string(sizes[f]) + " corners need " +
                            std::to_string(2 * sizes[f]) + " (u, v per corner)");
   TriMesh mesh{rows_to_matrix<double, 3>(coords), Eigen::MatrixXi(), 0};
-  if (std::any_of(sizes.begin(), sizes.end(), [](int n) { return n > 3; })) {
-    const TriangulatedPolygons triangulated = triangulate_faces(mesh.V, triangle_corners, sizes);
-    if (warnings) warnings->push_back(triangulation_note(triangulated, file_name));
-    triangle_corners = triangulated.triangles;
+  const auto triangulated = triangulate_polygons(mesh.V, &triangle_corners, sizes, file_name, warnings);
+  if (triangulated) {
     if (texcoord >= 0) {
       std::vector<double> by_triangle;
-      by_triangle.reserve(2 * triangulated.source_corner.size());
-      for (const long long c : triangulated.source_corner) {
+      by_triangle.reserve(2 * triangulated->source_corner.size());
+      for (const long long c : triangulated->source_corner) {
         by_triangle.push_back(corner_texture[2 * c]);
         by_triangle.push_back(corner_texture[2 * c + 1]);
       }

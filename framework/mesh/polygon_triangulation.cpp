@@ -1,6 +1,7 @@
 #include "framework/mesh/polygon_triangulation.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -100,12 +101,19 @@ TriangulatedPolygons triangulate_faces(const Eigen::MatrixXd& V, const std::vect
   return out;
 }
 
-std::string triangulation_note(const TriangulatedPolygons& t, const std::string& file_name) {
-  if (t.polygons == 0) return "";
-  const std::size_t triangles = t.triangles.size() / 3;
-  return file_name + ": triangulated " + std::to_string(t.polygons) + (t.polygons == 1 ? " face" : " faces") +
-         " with more than three corners (up to " + std::to_string(t.largest) + ") into triangles; " +
-         std::to_string(triangles) + " triangles in all, numbered in messages as triangles";
+std::optional<TriangulatedPolygons> triangulate_polygons(const Eigen::MatrixXd& V, std::vector<int>* corners,
+                                                         const std::vector<int>& sizes, const std::string& file_name,
+                                                         std::vector<std::string>* warnings) {
+  if (std::none_of(sizes.begin(), sizes.end(), [](int n) { return n > 3; })) return std::nullopt;
+  TriangulatedPolygons t = triangulate_faces(V, *corners, sizes);
+  if (warnings)
+    warnings->push_back(file_name + ": triangulated " + std::to_string(t.polygons) +
+                        (t.polygons == 1 ? " face" : " faces") + " with more than three corners (up to " +
+                        std::to_string(t.largest) + ") into triangles; " + std::to_string(t.triangles.size() / 3) +
+                        " triangles in all, numbered in messages as triangles");
+  t.file_corners = std::move(*corners);
+  *corners = std::move(t.triangles);
+  return t;
 }
 
 }  // namespace akvf

@@ -4,6 +4,7 @@
 // face's orientation.
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct TriangulatedPolygons {
   // Per triangle corner, the index of the file's face corner it comes from
   // (into the flattened corners of every face), for per-corner data.
   std::vector<long long> source_corner;
+  // The faces' corners as the file gives them (filled by triangulate_polygons).
+  std::vector<int> file_corners;
   // Per triangle, the file's face (0-based).
   std::vector<int> source_face;
   int polygons = 0;  // faces with more than three corners
@@ -36,8 +39,13 @@ struct TriangulatedPolygons {
 TriangulatedPolygons triangulate_faces(const Eigen::MatrixXd& V, const std::vector<int>& corners,
                                        const std::vector<int>& sizes);
 
-// "triangulated 12 faces with more than three corners (up to 6) into 30
-// triangles", for a reader's warnings; "" when there were none.
-std::string triangulation_note(const TriangulatedPolygons& t, const std::string& file_name);
+// What the readers do with a file's faces: when one has more than three
+// corners, `corners` becomes the triangles' corners, one warning goes to
+// `warnings` (if given), and the triangulation is returned for per-corner
+// data (its `triangles` moved to `corners`, `file_corners` holding what
+// `corners` held); otherwise nothing changes and nullopt is returned.
+std::optional<TriangulatedPolygons> triangulate_polygons(const Eigen::MatrixXd& V, std::vector<int>* corners,
+                                                         const std::vector<int>& sizes, const std::string& file_name,
+                                                         std::vector<std::string>* warnings);
 
 }  // namespace akvf
