@@ -175,6 +175,16 @@ TEST_CASE("an output never replaces the material library or the texture the inpu
   CHECK(read_text(dir / "shared.mtl") == "newmtl a\nmap_Kd out_checker.png\n");
   CHECK(read_text(dir / "out_checker.png") == "image");
   CHECK_FALSE(fs::exists(dir / "shared.obj"));
+  // Whatever the output format: the layout image or the summary is checked too.
+  r = akvf_run({"param", mesh, "-q", "--png", (dir / "out_checker.png").string()});
+  CHECK(r.code == akvf::kExitUsageError);
+  CHECK(r.err.find("--png " + (dir / "out_checker.png").string() + " is the same file as the input's material file") !=
+        std::string::npos);
+  r = akvf_run({"param", mesh, "-q", "--out", (dir / "m.ply").string(), "--summary", (dir / "shared.mtl").string()});
+  CHECK(r.code == akvf::kExitUsageError);
+  CHECK(read_text(dir / "out_checker.png") == "image");
+  CHECK(read_text(dir / "shared.mtl") == "newmtl a\nmap_Kd out_checker.png\n");
+  CHECK_FALSE(fs::exists(dir / "m.ply"));
   // Without a material of its own the output keeps the input's.
   r = akvf_run({"param", mesh, "-q", "--out", (dir / "out.obj").string(), "--texture", "none"});
   CHECK(r.code == akvf::kExitOk);
