@@ -227,7 +227,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   // files are checked against every output.
   ObjPassthrough obj_source;
   const bool obj_output = lowercase_extension(outputs.obj) == ".obj";
-  const bool any_output = std::any_of(written.begin(), written.end(), [](const FileArgument& f) { return !f.path.empty(); });
+  const bool any_output =
+      std::any_of(written.begin(), written.end(), [](const FileArgument& f) { return !f.path.empty(); });
   const bool keep_obj = lowercase_extension(path) == ".obj" && any_output;
   const TriMesh input = read_triangle_mesh(path, &warnings, &texture, keep_obj ? &obj_source : nullptr);
   for (const auto& warning : warnings) err << "warning: " << warning << '\n';
@@ -237,8 +238,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
     materials.push_back({"the input's material file", file});
   if (!materials.empty()) check_file_arguments(materials, written);
   const Eigen::MatrixXd start_uv = options.init == "file" ? per_vertex_uv(input, texture, path) : Eigen::MatrixXd();
-  return run_and_write(input, path, options, start_uv, obj_output && !obj_source.empty() ? &obj_source : nullptr, outputs,
-                       cl.has("quiet"), out, err);
+  return run_and_write(input, path, options, start_uv, obj_output && !obj_source.empty() ? &obj_source : nullptr,
+                       outputs, cl.has("quiet"), out, err);
 }
 
 int demo_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
