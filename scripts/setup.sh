@@ -2,18 +2,28 @@
 # Installs the Debian 12 packages the project builds with. Idempotent: packages
 # already present are left alone, and apt-get is skipped entirely when nothing
 # is missing.
+#   bash scripts/setup.sh          everything: the library, tests, Python, browser
+#   bash scripts/setup.sh --demo   only what the `akvf` program needs (scripts/demo.sh)
 set -euo pipefail
-packages=(
+packages=(  # the library and the `akvf` program
   build-essential cmake pkg-config
-  libeigen3-dev libsuitesparse-dev libtbb-dev doctest-dev
-  libbenchmark-dev libceres-dev libopenblas-dev nlohmann-json3-dev libpng-dev
+  libeigen3-dev libsuitesparse-dev libtbb-dev libceres-dev libopenblas-dev nlohmann-json3-dev libpng-dev
+  libjs-three  # three.js, embedded in the HTML views (akvf view)
+)
+if [ "${1:-}" = "--demo" ]; then
+  :
+elif [ -n "${1:-}" ]; then
+  echo "usage: bash scripts/setup.sh [--demo]" >&2
+  exit 2
+else packages+=(
+  doctest-dev libbenchmark-dev
   pybind11-dev python3-dev python3-pybind11 python3-numpy python3-pytest  # the Python module (python/)
   python3-jsonschema  # the tests check every --summary against docs/run_summary.schema.json
   clang libclang-rt-14-dev  # scripts/sanitize.sh: ASan, UBSan and libFuzzer
   libhypre-dev  # algebraic multigrid (hypre's BoomerAMG) for --linear-solver amg
-  libjs-three  # three.js, embedded in the HTML views (akvf view)
   chromium  # the browser test of the views (tests/browser/check_pages.py), headless
 )
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
