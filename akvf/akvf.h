@@ -18,6 +18,6 @@
 #include "akvf/parameterize.h"
 #include "akvf/threads.h"
 #include "akvf/version.h"
-#include "framework/mesh/mesh_io.h"
-#include "framework/mesh/tet_mesh_io.h"
+#include "io/mesh_io.h"
+#include "io/tet_mesh_io.h"
 #include "framework/process/error.h"

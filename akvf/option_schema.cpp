@@ -6,7 +6,7 @@
 
 #include "akvf/catalog.h"
 #include "framework/mesh/initialization.h"
-#include "framework/mesh/text_reader.h"
+#include "io/text_reader.h"
 #include "framework/process/error.h"
 
 namespace akvf {

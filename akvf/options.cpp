@@ -1,7 +1,7 @@
 #include "akvf/options.h"
 
 #include "akvf/catalog.h"
-#include "framework/mesh/text_reader.h"
+#include "io/text_reader.h"
 #include "framework/process/error.h"
 
 namespace akvf {

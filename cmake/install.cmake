@@ -6,10 +6,10 @@
 include(CMakePackageConfigHelpers)
 set(AKVF_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/akvf)
 
-foreach(part headers framework energies solvers preconditioners)
+foreach(part headers framework io energies solvers preconditioners)
   set_target_properties(akvf_${part} PROPERTIES EXPORT_NAME ${part})
 endforeach()
-install(TARGETS akvf_headers akvf_framework akvf_energies akvf_solvers akvf_preconditioners akvf_api
+install(TARGETS akvf_headers akvf_framework akvf_io akvf_energies akvf_solvers akvf_preconditioners akvf_api
   EXPORT akvfTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -18,7 +18,7 @@ install(TARGETS akvf RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # The facade at include/akvf/*.h, the library folders below it.
 install(DIRECTORY akvf/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/akvf FILES_MATCHING PATTERN "*.h")
-foreach(folder framework energies solvers preconditioners)
+foreach(folder framework io energies solvers preconditioners)
   install(DIRECTORY ${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/akvf/${folder} FILES_MATCHING PATTERN "*.h")
 endforeach()
 

@@ -4,7 +4,7 @@
 #include <iterator>
 #include <sstream>
 
-#include "experiments/cli/akvf_cli.h"
+#include "cli/akvf_cli.h"
 
 namespace akvf::test {
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "akvf/akvf.h"
-#include "experiments/cli/akvf_cli.h"
+#include "cli/akvf_cli.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
 

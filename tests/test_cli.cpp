@@ -11,10 +11,10 @@
 #include <nlohmann/json.hpp>
 
 #include "akvf/demo_mesh.h"
-#include "experiments/cli/exit_codes.h"
-#include "experiments/report/html_view.h"
+#include "cli/exit_codes.h"
+#include "pictures/html_view.h"
 #include "experiments/report/trace_csv.h"
-#include "framework/mesh/tet_mesh_io.h"
+#include "io/tet_mesh_io.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
 

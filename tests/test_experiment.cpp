@@ -9,9 +9,9 @@
 #include <regex>
 #include <sstream>
 
-#include "experiments/cli/akvf_cli.h"
-#include "experiments/cli/exit_codes.h"
-#include "experiments/report/text_utilities.h"
+#include "cli/akvf_cli.h"
+#include "cli/exit_codes.h"
+#include "io/text_utilities.h"
 #include "experiments/runner/manifest.h"
 #include "solvers/algebraic_multigrid.h"
 #include "tests/cli_support.h"

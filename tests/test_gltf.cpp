@@ -9,10 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include "akvf/parameterize.h"
-#include "experiments/report/checker_texture.h"
-#include "experiments/report/display_decimation.h"
-#include "experiments/report/gltf_writer.h"
-#include "experiments/report/html_view.h"
+#include "io/checker_texture.h"
+#include "pictures/display_decimation.h"
+#include "io/gltf_writer.h"
+#include "pictures/html_view.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
 

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "akvf/deform.h"
-#include "framework/mesh/gmsh_reader.h"
+#include "io/gmsh_reader.h"
 #include "tests/test_support.h"
 
 using akvf::test::error_message;

@@ -1,7 +1,7 @@
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
-#include "experiments/cli/native_runtime.h"
+#include "framework/process/native_runtime.h"
 
 // The tests run with the same native thread settings as the akvf program.
 int main(int argc, char** argv) {

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "framework/mesh/mesh_io.h"
-#include "framework/mesh/polygon_triangulation.h"
+#include "io/mesh_io.h"
+#include "io/polygon_triangulation.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
 

@@ -7,8 +7,8 @@
 
 #include "akvf/option_schema.h"
 #include "akvf/options.h"
-#include "experiments/cli/command_line.h"
-#include "experiments/cli/schema_options.h"
+#include "cli/command_line.h"
+#include "cli/schema_options.h"
 #include "experiments/runner/manifest.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"

@@ -13,9 +13,9 @@
 #include <sstream>
 
 #include "akvf/parameterize.h"
-#include "framework/mesh/mesh_io.h"
-#include "framework/mesh/ply_reader.h"
-#include "framework/mesh/stl_reader.h"
+#include "io/mesh_io.h"
+#include "io/ply_reader.h"
+#include "io/stl_reader.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
 

@@ -8,9 +8,9 @@
 #include <filesystem>
 
 #include "akvf/demo_mesh.h"
-#include "experiments/cli/exit_codes.h"
-#include "experiments/report/distortion_color.h"
-#include "experiments/report/uv_png.h"
+#include "cli/exit_codes.h"
+#include "pictures/distortion_color.h"
+#include "pictures/uv_png.h"
 #include "tests/cli_support.h"
 
 namespace fs = std::filesystem;

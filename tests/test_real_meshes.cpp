@@ -14,9 +14,9 @@
 #include "akvf/deformation.h"
 #include "akvf/parameterization.h"
 #include "akvf/slim_cube.h"
-#include "framework/mesh/constraints_io.h"
-#include "framework/mesh/mesh_io.h"
-#include "framework/mesh/tet_mesh_io.h"
+#include "io/constraints_io.h"
+#include "io/mesh_io.h"
+#include "io/tet_mesh_io.h"
 #include "tests/test_support.h"
 
 namespace {

@@ -9,9 +9,9 @@
 #include <sstream>
 
 #include "akvf/parameterization.h"
-#include "experiments/cli/akvf_cli.h"
-#include "experiments/cli/exit_codes.h"
-#include "experiments/cli/run_reporting.h"
+#include "cli/akvf_cli.h"
+#include "cli/exit_codes.h"
+#include "cli/run_reporting.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/runner/manifest.h"
 #include "tests/cli_support.h"

@@ -13,8 +13,8 @@
 #include <sstream>
 #include <thread>
 
-#include "experiments/cli/exit_codes.h"
-#include "experiments/cli/file_arguments.h"
+#include "cli/exit_codes.h"
+#include "cli/file_arguments.h"
 #include "framework/process/error.h"
 #include "framework/process/output_file.h"
 #include "tests/cli_support.h"

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "framework/mesh/mesh_io.h"
+#include "io/mesh_io.h"
 #include "framework/mesh/mesh_subdivision.h"
 #include "framework/mesh/tet_validation.h"
 #include "framework/process/error.h"

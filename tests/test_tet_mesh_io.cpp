@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "framework/mesh/tet_mesh_io.h"
+#include "io/tet_mesh_io.h"
 #include "framework/mesh/tet_validation.h"
 #include "tests/test_support.h"
 

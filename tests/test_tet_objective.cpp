@@ -9,7 +9,7 @@
 
 #include "akvf/deformation.h"
 #include "energies/symmetric_dirichlet.h"
-#include "framework/mesh/constraints_io.h"
+#include "io/constraints_io.h"
 #include "framework/optimization/constrained_objective.h"
 #include "framework/optimization/distortion_objective.h"
 #include "preconditioners/akvf_preconditioner_3d.h"

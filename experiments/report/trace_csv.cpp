@@ -7,7 +7,7 @@
 #include <limits>
 #include <sstream>
 
-#include "framework/mesh/text_reader.h"
+#include "io/text_reader.h"
 #include "framework/optimization/trace_columns.h"
 #include "framework/process/error.h"
 #include "framework/process/output_file.h"

@@ -10,8 +10,8 @@
 
 #include "akvf/catalog.h"
 #include "akvf/option_schema.h"
-#include "experiments/report/json_text.h"
-#include "experiments/report/text_utilities.h"
+#include "io/json_text.h"
+#include "io/text_utilities.h"
 #include "framework/process/error.h"
 
 namespace akvf {

@@ -191,4 +191,12 @@ void remove_pending_temporary_files() noexcept {
     if (slot.state.load() == 2) ::unlink(slot.path);
 }
 
+void create_output_folder(const std::string& folder) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw OutputError("cannot create the output folder " + folder + ": " + error.message());
+  if (!std::filesystem::is_directory(folder))
+    throw OutputError("cannot use " + folder + " as the output folder: it is not a folder");
+}
+
 }  // namespace akvf

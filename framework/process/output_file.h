@@ -37,4 +37,8 @@ void write_file_atomically(const std::string& path, const std::function<void(std
 // interrupt handler calls it before a second signal ends the process.
 void remove_pending_temporary_files() noexcept;
 
+// Creates `folder` and its parents if needed; OutputError naming it if that
+// fails or it is not a folder.
+void create_output_folder(const std::string& folder);
+
 }  // namespace akvf

@@ -2,7 +2,7 @@
 // for a mesh of 100 vertices, the count the seed corpus is written for.
 #include <sstream>
 
-#include "framework/mesh/constraints_io.h"
+#include "io/constraints_io.h"
 #include "tests/fuzz/fuzz_text_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,5 +1,5 @@
 // libFuzzer target: the PLY reader (ASCII and binary), then disk validation (the path of `akvf param mesh.ply`).
-#include "framework/mesh/ply_reader.h"
+#include "io/ply_reader.h"
 #include "tests/fuzz/fuzz_mesh_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
