@@ -9,15 +9,15 @@
 //   akvf::register_autodiff_energy<2>(...)   user-defined energies (extend.h)
 //   akvf::energies_2d(), preconditioners_2d(), line_searches()   the names (catalog.h)
 //   akvf::read_triangle_mesh, read_tet_mesh, write_obj_with_uv   files (framework/*_io.h)
-//   akvf::InputError, ValidationError, OptionsError, NumericalError   errors (framework/process/error.h)
+//   akvf::InputError, ValidationError, OptionsError, NumericalError   errors (akvf/error.h)
 //
 // docs/api.md describes shapes, ownership, threads and errors.
 #include "akvf/catalog.h"
 #include "akvf/deform.h"
+#include "akvf/error.h"
 #include "akvf/extend.h"
+#include "akvf/mesh_io.h"
 #include "akvf/parameterize.h"
+#include "akvf/tet_mesh_io.h"
 #include "akvf/threads.h"
 #include "akvf/version.h"
-#include "io/mesh_io.h"
-#include "io/tet_mesh_io.h"
-#include "framework/process/error.h"

@@ -1,5 +1,7 @@
 #include "akvf/catalog.h"
+#include "akvf/internal/preconditioner_settings.h"
 
+#include "akvf/backtracking_line_search.h"
 #include "energies/amips.h"
 #include "energies/arap.h"
 #include "energies/exp_symmetric_dirichlet.h"
@@ -12,7 +14,6 @@
 #include "preconditioners/newton_preconditioner.h"
 #include "preconditioners/slim_preconditioner.h"
 #include "preconditioners/switching_preconditioner.h"
-#include "solvers/backtracking_line_search.h"
 #include "solvers/wolfe_bisection_line_search.h"
 
 namespace akvf {
@@ -263,5 +264,15 @@ const DensityRegistry3D& energies_3d() { return mutable_energies_3d(); }
 const PreconditionerRegistry3D& preconditioners_3d() { return mutable_preconditioners_3d(); }
 const PreconditionerRegistry2D& preconditioners_2d() { return mutable_preconditioners_2d(); }
 const LineSearchRegistry& line_searches() { return mutable_line_searches(); }
+
+const PreconditionerSettings2D& default_preconditioner_settings_2d() {
+  static const PreconditionerSettings2D settings;
+  return settings;
+}
+
+const PreconditionerSettings3D& default_preconditioner_settings_3d() {
+  static const PreconditionerSettings3D settings;
+  return settings;
+}
 
 }  // namespace akvf

@@ -5,15 +5,11 @@
 // interfaces. User code adds its own through the mutable_ accessors.
 #include <memory>
 
-#include "framework/optimization/distortion_density.h"
-#include "framework/optimization/line_search.h"
-#include "framework/optimization/mesh_objective.h"
-#include "framework/optimization/preconditioner.h"
-#include "framework/optimization/registry.h"
-#include "preconditioners/akvf_preconditioner_2d.h"
-#include "preconditioners/akvf_preconditioner_3d.h"
-#include "preconditioners/newton_preconditioner.h"
-#include "preconditioners/switching_preconditioner.h"
+#include "akvf/distortion_density.h"
+#include "akvf/line_search.h"
+#include "akvf/mesh_objective.h"
+#include "akvf/preconditioner.h"
+#include "akvf/registry.h"
 
 namespace akvf {
 
@@ -23,40 +19,15 @@ struct EnergySettings {
 };
 
 using DensityRegistry2D = Registry<DistortionDensity2D, const EnergySettings&>;
-// Options of the preconditioners that have them, set from the command line.
-struct PreconditionerSettings2D {
-  AkvfOptions2D akvf;
-  FactorOptions newton;  // factored every iteration unless reuse is set
-  // The Newton phase of akvf-newton: reuses factorizations as AKVF does
-  // (docs/performance.md, "Factorization reuse in the Newton phase").
-  FactorOptions newton_phase = AkvfOptions2D{}.factor;
-  FactorOptions laplacian;  // constant: factored once
-  FactorOptions slim;       // factored every iteration unless reuse is set
-  // When akvf-newton switches; its isometric step is the energy's (set by
-  // the catalog), its backtracking factor the line search's.
-  SwitchRule akvf_newton_switch;
-  EigenvalueFilter newton_filter = EigenvalueFilter::kClamp;  // newton
-  // akvf-newton's Newton phase: the exact Hessian while it is positive
-  // definite (newton_preconditioner.h; docs/design.md says why).
-  EigenvalueFilter newton_phase_filter = EigenvalueFilter::kExact;
-
-  // Every factored preconditioner takes its symbolic analyses from `cache`.
-  void share_analyses(const std::shared_ptr<SymbolicAnalysisCache>& cache) {
-    for (FactorOptions* options : {&akvf.factor, &newton, &newton_phase, &laplacian, &slim})
-      options->analysis_cache = cache;
-  }
-  // Every factored preconditioner solves with `solver`.
-  void set_linear_solver(LinearSolver solver) {
-    for (FactorOptions* options : {&akvf.factor, &newton, &newton_phase, &laplacian, &slim})
-      options->linear_solver = solver;
-  }
-  // Every factored preconditioner's analysis eliminates the vertices in
-  // `ordering` (the mesh's, computed once; null: each orders its own).
-  void share_vertex_ordering(const std::shared_ptr<const BlockOrdering>& ordering) {
-    for (FactorOptions* options : {&akvf.factor, &newton, &newton_phase, &laplacian, &slim})
-      options->vertex_ordering = ordering;
-  }
-};
+// The options of the built-in preconditioners (akvf/internal/preconditioner_settings.h);
+// a registered preconditioner receives them and may ignore them.
+struct PreconditionerSettings2D;
+struct PreconditionerSettings3D;
+// The settings the built-in preconditioners take by default, to create one
+// by name outside a run: preconditioners_3d().create("newton", objective,
+// default_preconditioner_settings_3d()).
+const PreconditionerSettings2D& default_preconditioner_settings_2d();
+const PreconditionerSettings3D& default_preconditioner_settings_3d();
 
 using PreconditionerRegistry2D = Registry<Preconditioner, const MeshObjective2D&, const PreconditionerSettings2D&>;
 using LineSearchRegistry = Registry<LineSearch, const LineSearchSettings&>;
@@ -83,7 +54,6 @@ void require_method(const std::string& name);
 // preconditioners/factored_preconditioner.h; CHOLMOD when this build has no
 // multigrid). OptionsError for any other name.
 void require_linear_solver(const std::string& name);
-LinearSolver linear_solver_for(const std::string& name);
 
 // The registry tag of preconditioners that AQP's momentum accompanies by
 // default (the Laplacian, as AQP pairs them).
@@ -95,32 +65,6 @@ inline constexpr const char* kMomentumByDefault = "momentum-by-default";
 double acceleration_eta(const std::string& mode, bool momentum_by_default);
 
 using DensityRegistry3D = Registry<DistortionDensity<3>, const EnergySettings&>;
-// Options of the 3D preconditioners. In deformation, newton, laplacian and
-// slim carry the constraint term's Hessian in their extra_diagonal.
-struct PreconditionerSettings3D {
-  AkvfOptions3D akvf;
-  FactorOptions newton = shifted_factor_options(1e-4);
-  FactorOptions laplacian = shifted_factor_options(1e-4);
-  FactorOptions slim = shifted_factor_options(1e-4);
-  SwitchRule akvf_newton_switch;  // as in 2D
-  EigenvalueFilter newton_filter = EigenvalueFilter::kClamp;
-  EigenvalueFilter newton_phase_filter = EigenvalueFilter::kExact;  // as in 2D
-
-  // Jacobi-CG to this relative residual instead of factoring, for every
-  // matrix that changes per iteration (akvf, newton, slim; the Laplacian is
-  // factored once). 0 = factor.
-  void set_cg_tolerance(double tolerance) {
-    for (FactorOptions* options : {&akvf.factor, &newton, &slim}) options->cg_tolerance = tolerance;
-  }
-  // Every factored preconditioner takes its symbolic analyses from `cache`.
-  void share_analyses(const std::shared_ptr<SymbolicAnalysisCache>& cache) {
-    for (FactorOptions* options : {&akvf.factor, &newton, &laplacian, &slim}) options->analysis_cache = cache;
-  }
-  // Every factored preconditioner solves with `solver`.
-  void set_linear_solver(LinearSolver solver) {
-    for (FactorOptions* options : {&akvf.factor, &newton, &laplacian, &slim}) options->linear_solver = solver;
-  }
-};
 using PreconditionerRegistry3D = Registry<Preconditioner, const MeshObjective3D&, const PreconditionerSettings3D&>;
 
 const DensityRegistry2D& energies_2d();

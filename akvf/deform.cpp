@@ -2,10 +2,10 @@
 
 #include <vector>
 
-#include "akvf/deformation.h"
-#include "akvf/options.h"
+#include "akvf/error.h"
+#include "akvf/internal/deformation.h"
+#include "akvf/internal/options.h"
 #include "framework/optimization/distortion_objective.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

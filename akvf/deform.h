@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "akvf/constrained_objective.h"
 #include "akvf/parameterize.h"
-#include "framework/optimization/constrained_objective.h"
 
 namespace akvf {
 

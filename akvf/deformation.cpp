@@ -1,11 +1,11 @@
-#include "akvf/deformation.h"
+#include "akvf/internal/deformation.h"
 
 #include <cmath>
 
+#include "akvf/error.h"
+#include "akvf/rest_geometry.h"
 #include "akvf/threads.h"
-#include "framework/mesh/rest_geometry.h"
 #include "framework/optimization/distortion_objective.h"
-#include "framework/process/error.h"
 #include "preconditioners/fixed_vertices_preconditioner.h"
 
 namespace akvf {

@@ -1,4 +1,4 @@
-#include "akvf/demo_mesh.h"
+#include "akvf/internal/demo_mesh.h"
 
 #include <cmath>
 

@@ -8,14 +8,14 @@
 #include <memory>
 #include <string>
 
+#include "akvf/autodiff_density.h"
 #include "akvf/catalog.h"
-#include "energies/autodiff_density.h"
 
 namespace akvf {
 
 // An energy from its density alone: `functor` maps J (Dim x Dim, scalar
 // type T, det J > 0) to D(J), written once as a template over T (see
-// energies/autodiff_density.h); gradient, Hessian, PSD projection and the
+// akvf/autodiff_density.h); gradient, Hessian, PSD projection and the
 // singular-value derivative SLIM needs come from automatic differentiation.
 // `lower_bound` is inf_J D(J) (the value at J = I for isometric energies),
 // reported as the energy's lower bound.
@@ -51,7 +51,7 @@ inline void register_preconditioner_3d(const std::string& name, const std::strin
                                        PreconditionerRegistry3D::Factory factory) {
   mutable_preconditioners_3d().add(name, description, std::move(factory));
 }
-// A line search, from the line-search settings (framework/optimization/line_search.h).
+// A line search, from the line-search settings (akvf/line_search.h).
 inline void register_line_search(const std::string& name, const std::string& description,
                                  LineSearchRegistry::Factory factory) {
   mutable_line_searches().add(name, description, std::move(factory));

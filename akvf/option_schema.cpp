@@ -1,13 +1,14 @@
-#include "akvf/option_schema.h"
+#include "akvf/internal/option_schema.h"
 
 #include <cmath>
 #include <limits>
 #include <sstream>
 
 #include "akvf/catalog.h"
+#include "akvf/error.h"
+#include "akvf/internal/preconditioner_settings.h"
 #include "framework/mesh/initialization.h"
 #include "io/text_reader.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -1,8 +1,8 @@
-#include "akvf/options.h"
+#include "akvf/internal/options.h"
 
 #include "akvf/catalog.h"
+#include "akvf/error.h"
 #include "io/text_reader.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 namespace {

@@ -1,16 +1,17 @@
-#include "akvf/parameterization.h"
+#include "akvf/internal/parameterization.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "akvf/catalog.h"
+#include "akvf/error.h"
+#include "akvf/internal/preconditioner_settings.h"
 #include "akvf/threads.h"
 #include "framework/mesh/chart_layout.h"
 #include "framework/mesh/vertex_graph.h"
 #include "framework/optimization/injective_objective.h"
 #include "framework/optimization/uniform_scale.h"
-#include "framework/process/error.h"
 #include "preconditioners/contact_preconditioner.h"
 #include "solvers/lbfgs_solver.h"
 #include "solvers/sparse_cholesky.h"

@@ -3,9 +3,9 @@
 #include <atomic>
 
 #include "akvf/catalog.h"
-#include "akvf/options.h"
-#include "akvf/parameterization.h"
-#include "framework/process/error.h"
+#include "akvf/error.h"
+#include "akvf/internal/options.h"
+#include "akvf/internal/parameterization.h"
 
 namespace akvf {
 

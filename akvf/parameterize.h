@@ -6,7 +6,7 @@
 //   akvf::ParameterizeResult r = akvf::parameterize(V, F);
 //   r.uv;               // #V by 2, at the input's scale (the optimized map, r.energy() of this V, F)
 //
-// Errors are the typed exceptions of <framework/process/error.h>: InputError and
+// Errors are the typed exceptions of <akvf/error.h>: InputError and
 // ValidationError for the mesh (messages name the element as the arrays
 // number it, from 0), OptionsError for options, NumericalError. Nothing is
 // printed; progress goes through options.callbacks. A run that ends early
@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "framework/mesh/mesh.h"
-#include "framework/optimization/optimizer.h"
-#include "framework/optimization/preconditioner.h"
+#include "akvf/mesh.h"
+#include "akvf/optimizer.h"
+#include "akvf/preconditioner.h"
 
 namespace akvf {
 

@@ -1,10 +1,10 @@
-#include "akvf/slim_cube.h"
+#include "akvf/internal/slim_cube.h"
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

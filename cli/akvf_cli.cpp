@@ -5,7 +5,8 @@
 #include <vector>
 
 #include "akvf/catalog.h"
-#include "akvf/option_schema.h"
+#include "akvf/error.h"
+#include "akvf/internal/option_schema.h"
 #include "akvf/version.h"
 #include "cli/command_line.h"
 #include "cli/deform_command.h"
@@ -14,7 +15,6 @@
 #include "cli/param_command.h"
 #include "cli/plot_command.h"
 #include "cli/view_command.h"
-#include "framework/process/error.h"
 
 namespace {
 

@@ -4,8 +4,8 @@
 #include <limits>
 #include <sstream>
 
+#include "akvf/error.h"
 #include "io/text_reader.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

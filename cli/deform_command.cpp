@@ -1,9 +1,11 @@
 #include "cli/deform_command.h"
 
 #include "akvf/catalog.h"
-#include "akvf/deformation.h"
-#include "akvf/options.h"
-#include "akvf/slim_cube.h"
+#include "akvf/error.h"
+#include "akvf/internal/deformation.h"
+#include "akvf/internal/options.h"
+#include "akvf/internal/slim_cube.h"
+#include "akvf/tet_mesh_io.h"
 #include "akvf/threads.h"
 #include "cli/command_line.h"
 #include "cli/exit_codes.h"
@@ -11,12 +13,10 @@
 #include "cli/run_reporting.h"
 #include "cli/schema_options.h"
 #include "experiments/report/run_summary.h"
-#include "io/text_utilities.h"
 #include "experiments/report/trace_csv.h"
 #include "io/constraints_io.h"
 #include "io/mesh_text.h"
-#include "io/tet_mesh_io.h"
-#include "framework/process/error.h"
+#include "io/text_utilities.h"
 
 namespace akvf {
 
@@ -49,7 +49,7 @@ int deform_command(const std::vector<std::string>& args, std::ostream& out, std:
   if (cl.has("preset") && preset != "slim-cube")
     throw OptionsError("unknown preset '" + preset + "' (valid: slim-cube)");
   if (cl.has("hard") && cl.has("weight")) throw OptionsError("option --weight has no effect with --hard");
-  // Checked by the schema, converted as for library users (akvf/options.h).
+  // Checked by the schema, converted as for library users (akvf/internal/options.h).
   const DeformOptions options = schema_options_from(cl, deform_option_fields());
   const DeformConfig config = deform_config(options);
   const std::string out_path = cl.text("out", ""), trace_path = cl.text("trace", ""),

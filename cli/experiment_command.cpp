@@ -3,15 +3,15 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "akvf/error.h"
 #include "akvf/threads.h"
 #include "cli/command_line.h"
 #include "cli/exit_codes.h"
 #include "cli/run_reporting.h"
-#include "framework/process/output_file.h"
 #include "experiments/runner/experiment_report.h"
-#include "pictures/html_view.h"
 #include "experiments/runner/experiment_runner.h"
-#include "framework/process/error.h"
+#include "framework/process/output_file.h"
+#include "pictures/html_view.h"
 
 namespace akvf {
 

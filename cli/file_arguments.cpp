@@ -2,9 +2,9 @@
 
 #include <filesystem>
 
-#include "io/mesh_text.h"
-#include "framework/process/error.h"
+#include "akvf/error.h"
 #include "framework/process/output_file.h"
+#include "io/mesh_text.h"
 
 namespace akvf {
 

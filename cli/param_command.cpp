@@ -5,30 +5,30 @@
 #include <filesystem>
 
 #include "akvf/catalog.h"
-#include "akvf/demo_mesh.h"
-#include "akvf/options.h"
-#include "akvf/parameterization.h"
+#include "akvf/error.h"
+#include "akvf/internal/demo_mesh.h"
+#include "akvf/internal/options.h"
+#include "akvf/internal/parameterization.h"
+#include "akvf/mesh_io.h"
 #include "akvf/threads.h"
 #include "cli/command_line.h"
 #include "cli/exit_codes.h"
 #include "cli/file_arguments.h"
 #include "cli/run_reporting.h"
 #include "cli/schema_options.h"
+#include "experiments/report/run_summary.h"
+#include "experiments/report/trace_csv.h"
+#include "framework/process/output_file.h"
 #include "io/checker_texture.h"
 #include "io/gltf_writer.h"
-#include "pictures/html_view.h"
-#include "pictures/layout.h"
-#include "experiments/report/run_summary.h"
-#include "io/text_utilities.h"
-#include "experiments/report/trace_csv.h"
-#include "pictures/uv_png.h"
-#include "pictures/uv_svg.h"
-#include "io/mesh_io.h"
 #include "io/mesh_text.h"
 #include "io/ply_reader.h"
 #include "io/text_reader.h"
-#include "framework/process/error.h"
-#include "framework/process/output_file.h"
+#include "io/text_utilities.h"
+#include "pictures/html_view.h"
+#include "pictures/layout.h"
+#include "pictures/uv_png.h"
+#include "pictures/uv_svg.h"
 
 namespace akvf {
 
@@ -48,7 +48,7 @@ std::vector<OptionSpec> optimization_options() {
 }
 
 // The command line's values into the API's options, checked by the schema
-// (and converted as for library users, akvf/options.h, when run).
+// (and converted as for library users, akvf/internal/options.h, when run).
 ParameterizeOptions options_from(const CommandLine& cl) {
   return schema_options_from(cl, parameterize_option_fields());
 }
@@ -106,35 +106,12 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
 
   const Eigen::MatrixXd UV = output_uv(setup, result.x);
   const Eigen::MatrixXi UV_faces = output_uv_faces(setup);
-  const std::string out_kind = lowercase_extension(outputs.obj);
-  const bool unit_square = !outputs.obj.empty() && (out_kind == ".glb" || (out_kind == ".obj" && outputs.texture));
-  const double texture_uv_scale = unit_square ? unit_square_scale(UV) : 0;
-  if (!outputs.obj.empty() && out_kind == ".glb") {
-    write_glb(outputs.obj, input, unit_square_uv(UV), UV_faces, checker_image());
-  } else if (!outputs.obj.empty() && out_kind == ".ply") {
-    if (setup.disk.per_corner_uv()) {
-      write_ply_with_uv(outputs.obj, input, UV, UV_faces);
-    } else {
-      write_ply_with_uv(outputs.obj, input, UV);
-    }
-  } else if (!outputs.obj.empty()) {
-    if (outputs.texture) {
-      // The side files go first; when the OBJ then fails, those this run
-      // created are removed with it.
-      const TextureFiles files = texture_files_for(outputs.obj);
-      const bool mtl_existed = std::filesystem::exists(files.mtl), png_existed = std::filesystem::exists(files.png);
-      try {
-        write_checker_texture(files);
-        write_obj_with_uv(outputs.obj, input, unit_square_uv(UV), UV_faces, files.mtl_name, obj_source);
-      } catch (...) {
-        std::error_code ignored;
-        if (!mtl_existed) std::filesystem::remove(files.mtl, ignored);
-        if (!png_existed) std::filesystem::remove(files.png, ignored);
-        throw;
-      }
-    } else {
-      write_obj_with_uv(outputs.obj, input, UV, UV_faces, "", obj_source);
-    }
+  double texture_uv_scale = 0;
+  if (!outputs.obj.empty()) {
+    MeshWriteOptions write_options;
+    write_options.texture = outputs.texture ? "checker" : "none";
+    write_options.obj_source = obj_source;
+    texture_uv_scale = write_mesh(outputs.obj, input, UV, UV_faces, write_options);
   }
   trace.finish(result);
   if (!outputs.svg.empty())

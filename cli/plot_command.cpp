@@ -1,12 +1,12 @@
 #include "cli/plot_command.h"
 
+#include "akvf/error.h"
 #include "cli/command_line.h"
 #include "cli/exit_codes.h"
 #include "cli/file_arguments.h"
-#include "pictures/line_plot.h"
 #include "experiments/report/trace_csv.h"
-#include "framework/process/error.h"
 #include "framework/process/output_file.h"
+#include "pictures/line_plot.h"
 
 namespace akvf {
 

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "akvf/error.h"
 #include "cli/exit_codes.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -4,7 +4,7 @@
 #include <ostream>
 #include <string>
 
-#include "framework/optimization/optimizer.h"
+#include "akvf/optimizer.h"
 
 namespace akvf {
 

@@ -1,13 +1,13 @@
 #pragma once
-// The command line's side of the options schema (akvf/option_schema.h):
+// The command line's side of the options schema (akvf/internal/option_schema.h):
 // the flags and their --help lines, and the API options read from a parsed
 // command line and checked, with messages that name the flag.
 #include <string>
 #include <vector>
 
-#include "akvf/option_schema.h"
+#include "akvf/error.h"
+#include "akvf/internal/option_schema.h"
 #include "cli/command_line.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

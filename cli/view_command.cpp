@@ -2,14 +2,14 @@
 
 #include <filesystem>
 
+#include "akvf/error.h"
+#include "akvf/mesh_io.h"
 #include "cli/command_line.h"
 #include "cli/exit_codes.h"
 #include "cli/file_arguments.h"
-#include "pictures/html_view.h"
 #include "io/json_text.h"
 #include "io/text_utilities.h"
-#include "io/mesh_io.h"
-#include "framework/process/error.h"
+#include "pictures/html_view.h"
 
 namespace akvf {
 

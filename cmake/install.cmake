@@ -1,4 +1,4 @@
-# `cmake --install build --prefix P`: the headers under P/include/akvf, the
+# `cmake --install build --prefix P`: the public headers in P/include/akvf, the
 # libraries, the `akvf` program, and the CMake package akvf (config, version
 # file, targets akvf::akvf and its parts) so that another project can write
 #   find_package(akvf 0.2 CONFIG REQUIRED)
@@ -16,11 +16,10 @@ install(TARGETS akvf_headers akvf_framework akvf_io akvf_energies akvf_solvers a
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS akvf RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
-# The facade at include/akvf/*.h, the library folders below it.
-install(DIRECTORY akvf/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/akvf FILES_MATCHING PATTERN "*.h")
-foreach(folder framework io energies solvers preconditioners)
-  install(DIRECTORY ${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/akvf/${folder} FILES_MATCHING PATTERN "*.h")
-endforeach()
+# The public headers alone, at include/akvf/*.h; akvf/internal/ and the
+# library folders (framework/, energies/, ...) stay in the source tree.
+file(GLOB akvf_public_headers ${PROJECT_SOURCE_DIR}/akvf/*.h)
+install(FILES ${akvf_public_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/akvf)
 
 install(EXPORT akvfTargets NAMESPACE akvf:: DESTINATION ${AKVF_CMAKE_DIR})
 configure_package_config_file(cmake/akvfConfig.cmake.in ${PROJECT_BINARY_DIR}/akvfConfig.cmake

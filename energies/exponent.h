@@ -4,9 +4,9 @@
 // exp(k u) from those of u.
 #include <cmath>
 
+#include "akvf/error.h"
 #include "energies/invariant_density_2d.h"
 #include "energies/invariant_density_3d.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -6,7 +6,7 @@
 //   d2D/dvec(J)2 = 2 f_s I + f_g H_det + [2j c] [[f_ss f_sg] [f_sg f_gg]] [2j c]^T
 // with j = vec(J), c = d det / dvec(J) (the cofactor) and H_det the constant
 // Hessian of det. +infinity when g <= 0 (inverted or degenerate elements).
-#include "framework/optimization/distortion_density.h"
+#include "akvf/distortion_density.h"
 
 namespace akvf {
 

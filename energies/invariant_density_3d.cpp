@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "akvf/error.h"
 #include "energies/singular_eigensystem_3d.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

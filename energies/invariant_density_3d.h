@@ -7,7 +7,7 @@
 // dg = vec(cof J); H_s = 2 I, H_c and H_g (linear in J) as derived in the
 // .cpp. +infinity when g <= 0. The energies built on it: symmetric_dirichlet.h,
 // exp_symmetric_dirichlet.h, mips.h, amips.h.
-#include "framework/optimization/distortion_density.h"
+#include "akvf/distortion_density.h"
 
 namespace akvf {
 

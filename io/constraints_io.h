@@ -5,7 +5,7 @@
 #include <istream>
 #include <string>
 
-#include "framework/mesh/position_constraints.h"
+#include "akvf/position_constraints.h"
 
 namespace akvf {
 

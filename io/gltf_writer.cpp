@@ -8,9 +8,9 @@
 #include <sstream>
 #include <vector>
 
-#include "io/seam_split_mesh.h"
-#include "framework/process/error.h"
+#include "akvf/error.h"
 #include "framework/process/output_file.h"
+#include "io/seam_split_mesh.h"
 
 namespace akvf {
 

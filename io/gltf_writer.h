@@ -6,8 +6,8 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "akvf/mesh.h"
 #include "io/png_image.h"
-#include "framework/mesh/mesh.h"
 
 namespace akvf {
 

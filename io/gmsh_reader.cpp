@@ -5,9 +5,9 @@
 #include <unordered_map>
 #include <vector>
 
+#include "akvf/error.h"
 #include "io/mesh_text.h"
 #include "io/text_reader.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

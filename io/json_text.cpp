@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "akvf/error.h"
 #include "io/text_utilities.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

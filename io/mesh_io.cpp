@@ -1,4 +1,4 @@
-#include "io/mesh_io.h"
+#include "akvf/mesh_io.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -8,13 +8,13 @@
 #include <string_view>
 #include <vector>
 
+#include "akvf/error.h"
+#include "framework/process/output_file.h"
 #include "io/mesh_text.h"
 #include "io/ply_reader.h"
 #include "io/polygon_triangulation.h"
 #include "io/stl_reader.h"
 #include "io/text_reader.h"
-#include "framework/process/error.h"
-#include "framework/process/output_file.h"
 
 namespace akvf {
 

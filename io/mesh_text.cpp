@@ -7,8 +7,8 @@
 #include <map>
 #include <set>
 
+#include "akvf/error.h"
 #include "io/text_reader.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

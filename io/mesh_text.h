@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "framework/mesh/mesh.h"
-#include "io/obj_passthrough.h"
+#include "akvf/mesh.h"
+#include "akvf/obj_passthrough.h"
 
 namespace akvf {
 

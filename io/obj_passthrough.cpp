@@ -1,4 +1,4 @@
-#include "io/obj_passthrough.h"
+#include "akvf/obj_passthrough.h"
 
 #include <filesystem>
 #include <fstream>

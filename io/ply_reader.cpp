@@ -9,12 +9,12 @@
 #include <optional>
 #include <vector>
 
-#include "io/mesh_io.h"
+#include "akvf/error.h"
+#include "akvf/mesh_io.h"
+#include "framework/process/output_file.h"
 #include "io/mesh_text.h"
 #include "io/polygon_triangulation.h"
 #include "io/text_reader.h"
-#include "framework/process/error.h"
-#include "framework/process/output_file.h"
 
 namespace akvf {
 

@@ -14,7 +14,7 @@
 #include <istream>
 #include <string>
 
-#include "framework/mesh/mesh.h"
+#include "akvf/mesh.h"
 
 namespace akvf {
 

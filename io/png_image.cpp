@@ -5,7 +5,7 @@
 #include <csetjmp>
 #include <ostream>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 #include "framework/process/output_file.h"
 
 namespace akvf {

@@ -3,7 +3,7 @@
 #include <map>
 #include <vector>
 
-#include "io/mesh_io.h"
+#include "akvf/mesh_io.h"
 
 namespace akvf {
 

@@ -3,7 +3,7 @@
 // (vertex, texture coordinate) pair, so a seam vertex appears once per side.
 #include <Eigen/Core>
 
-#include "framework/mesh/mesh.h"
+#include "akvf/mesh.h"
 
 namespace akvf {
 

@@ -1,14 +1,14 @@
-#include "io/tet_mesh_io.h"
+#include "akvf/tet_mesh_io.h"
 
 #include <cctype>
 #include <iomanip>
 #include <limits>
 
+#include "akvf/error.h"
+#include "framework/process/output_file.h"
 #include "io/gmsh_reader.h"
 #include "io/mesh_text.h"
 #include "io/text_reader.h"
-#include "framework/process/error.h"
-#include "framework/process/output_file.h"
 
 namespace akvf {
 

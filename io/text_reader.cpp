@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

@@ -3,7 +3,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

@@ -5,14 +5,14 @@
 #include <limits>
 #include <vector>
 
+#include "akvf/error.h"
+#include "akvf/rest_geometry.h"
+#include "framework/process/output_file.h"
 #include "io/checker_texture.h"
-#include "pictures/display_decimation.h"
-#include "pictures/distortion_color.h"
 #include "io/seam_split_mesh.h"
 #include "io/text_utilities.h"
-#include "framework/mesh/rest_geometry.h"
-#include "framework/process/error.h"
-#include "framework/process/output_file.h"
+#include "pictures/display_decimation.h"
+#include "pictures/distortion_color.h"
 
 namespace akvf {
 

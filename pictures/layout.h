@@ -4,7 +4,7 @@
 // distortion D(J_f) - lower bound; and the content of its HTML view.
 #include <Eigen/Core>
 
-#include "akvf/parameterization.h"
+#include "akvf/internal/parameterization.h"
 #include "pictures/html_view.h"
 
 namespace akvf {

@@ -6,8 +6,8 @@
 #include <limits>
 #include <sstream>
 
+#include "akvf/error.h"
 #include "io/text_utilities.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

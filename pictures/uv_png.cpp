@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "akvf/error.h"
+#include "io/png_image.h"
 #include "pictures/distortion_color.h"
 #include "pictures/layout.h"
-#include "io/png_image.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

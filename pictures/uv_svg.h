@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "akvf/parameterization.h"
+#include "akvf/internal/parameterization.h"
 
 namespace akvf {
 

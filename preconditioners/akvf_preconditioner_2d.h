@@ -3,7 +3,7 @@
 // d = -K(x)^+ grad E (Eq. 11-12), with K(x) of Eq. (5), area-scaled
 // (§4.2.1). Its null space is exactly the rigid motions of x. Shift,
 // projection and factorization reuse: factored_preconditioner.h.
-#include "framework/optimization/mesh_objective.h"
+#include "akvf/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 #include "preconditioners/killing_operator_2d.h"
 

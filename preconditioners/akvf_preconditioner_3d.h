@@ -15,7 +15,7 @@
 // it (secant_scaling = false, s = 1) the direction is off by the energy's
 // scale (exp(6k) for the exponential energies) and the descent crawls; see
 // docs/deformation.md.
-#include "framework/optimization/mesh_objective.h"
+#include "akvf/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 #include "preconditioners/killing_operator_3d.h"
 

@@ -14,8 +14,8 @@
 #include <memory>
 #include <vector>
 
+#include "akvf/preconditioner.h"
 #include "framework/optimization/boundary_contact.h"
-#include "framework/optimization/preconditioner.h"
 
 namespace akvf {
 

@@ -7,7 +7,7 @@
 // deformation) the proxy must be brought to the energy's curvature, or one
 // of the two dominates every direction. This is the energy's curvature at
 // rest along a unit shear, the reference both proxies are scaled to.
-#include "framework/optimization/distortion_density.h"
+#include "akvf/distortion_density.h"
 
 namespace akvf {
 

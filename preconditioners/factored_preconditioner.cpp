@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "akvf/error.h"
 #include "framework/mesh/mesh_topology.h"
-#include "framework/process/error.h"
 #include "framework/process/physical_memory.h"
 
 namespace akvf {

@@ -75,10 +75,10 @@
 #include <memory>
 #include <string>
 
+#include "akvf/mesh_objective.h"
+#include "akvf/motion_bases.h"
+#include "akvf/preconditioner.h"
 #include "framework/optimization/element_matrix.h"
-#include "framework/optimization/mesh_objective.h"
-#include "framework/optimization/preconditioner.h"
-#include "preconditioners/motion_bases.h"
 #include "solvers/algebraic_multigrid.h"
 #include "solvers/sparse_cholesky.h"
 #include "solvers/symbolic_analysis_cache.h"

@@ -8,7 +8,7 @@
 // preconditioner restricted to the free coordinates.
 #include <memory>
 
-#include "framework/optimization/preconditioner.h"
+#include "akvf/preconditioner.h"
 
 namespace akvf {
 

@@ -1,6 +1,6 @@
 #pragma once
 // P = I: plain gradient descent, the baseline the paper improves on.
-#include "framework/optimization/preconditioner.h"
+#include "akvf/preconditioner.h"
 
 namespace akvf {
 

@@ -5,7 +5,7 @@
 // translations (projected in 2D; in 3D deformation the constraint term's
 // Hessian, FactorOptions::extra_diagonal, fixes them). The momentum of AQP
 // lives in the optimizer (OptimizerOptions::acceleration_eta).
-#include "framework/optimization/mesh_objective.h"
+#include "akvf/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {

@@ -1,10 +1,10 @@
-#include "preconditioners/motion_bases.h"
+#include "akvf/motion_bases.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/QR>
 #include <cmath>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

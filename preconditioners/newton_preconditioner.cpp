@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 #include "preconditioners/element_derivatives.h"
 
 namespace akvf {

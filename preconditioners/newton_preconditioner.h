@@ -66,7 +66,7 @@
 // (FactorOptions) kExact clamps.
 #include <string>
 
-#include "framework/optimization/mesh_objective.h"
+#include "akvf/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {

@@ -15,7 +15,7 @@
 // gradient property holds only approximately, as in SLIM's own code. In 3D
 // deformation SLIM's soft constraints enter through
 // FactorOptions::extra_diagonal, as in SLIM's own solve.
-#include "framework/optimization/mesh_objective.h"
+#include "akvf/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 
 namespace akvf {

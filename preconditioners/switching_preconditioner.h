@@ -113,7 +113,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/optimization/preconditioner.h"
+#include "akvf/preconditioner.h"
 
 namespace akvf {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace py = pybind11;
 

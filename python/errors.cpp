@@ -1,6 +1,6 @@
 #include "python/errors.h"
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace py = pybind11;
 

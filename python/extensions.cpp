@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <set>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf::python {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Keyword arguments to ParameterizeOptions / DeformOptions through the options
-// schema (akvf/option_schema.h): each keyword is a schema key, its Python
+// schema (akvf/internal/option_schema.h): each keyword is a schema key, its Python
 // value is turned into the text the command line and the manifests parse,
 // and the schema's parse and range checks run on it, so the three accept the
 // same values with the same messages. None stands for the default (no time
@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "akvf/option_schema.h"
-#include "akvf/options.h"
-#include "framework/process/error.h"
+#include "akvf/error.h"
+#include "akvf/internal/option_schema.h"
+#include "akvf/internal/options.h"
 
 namespace akvf::python {
 

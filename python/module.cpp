@@ -1,6 +1,6 @@
 // The Python module akvf._akvf: the public C++ API (akvf/akvf.h) for NumPy
 // arrays. Options arrive as keyword arguments named by the options schema
-// (akvf/option_schema.h), so every option of the command line is a keyword
+// (akvf/internal/option_schema.h), so every option of the command line is a keyword
 // with the same checks and messages. The package akvf/__init__.py wraps this
 // module (results as objects, docstrings from the schema).
 //
@@ -17,7 +17,7 @@
 #include <optional>
 
 #include "akvf/akvf.h"
-#include "akvf/option_schema.h"
+#include "akvf/internal/option_schema.h"
 #include "framework/optimization/trace_columns.h"
 #include "framework/process/interrupt.h"
 #include "python/arrays.h"

@@ -1,6 +1,6 @@
 #include "solvers/algebraic_multigrid.h"
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 #ifdef AKVF_WITH_HYPRE
 #include <HYPRE.h>

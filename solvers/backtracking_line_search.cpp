@@ -1,9 +1,9 @@
-#include "solvers/backtracking_line_search.h"
+#include "akvf/backtracking_line_search.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <string>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 // BLAS and LAPACK (Fortran interface, 32-bit integers: Debian's OpenBLAS and
 // reference BLAS, the ones CHOLMOD calls).

@@ -4,7 +4,7 @@
 
 #include <tbb/parallel_invoke.h>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

@@ -7,7 +7,7 @@
 #include <limits>
 #include <optional>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 #include "framework/process/interrupt.h"
 
 namespace akvf {

@@ -6,7 +6,7 @@
 // off. Our stopping rules (gradient tolerance, time limit) and callbacks run
 // from a Ceres iteration callback; the result has the same trace and
 // statuses as minimize().
-#include "framework/optimization/optimizer.h"
+#include "akvf/optimizer.h"
 
 namespace akvf {
 

@@ -13,7 +13,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 #include "framework/process/physical_memory.h"
 #include "solvers/fill_reducing_ordering.h"
 #include "solvers/supernodal_factorization.h"

@@ -13,7 +13,7 @@
 #include <memory>
 #include <string>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 #include "solvers/fill_reducing_ordering.h"
 
 namespace akvf {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

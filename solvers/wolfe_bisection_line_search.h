@@ -6,7 +6,7 @@
 // and alpha moves to the bracket's midpoint (or doubles while hi is
 // unbounded), until both hold. If the evaluations run out after some step
 // satisfied Armijo, that step is taken; otherwise the search fails.
-#include "framework/optimization/line_search.h"
+#include "akvf/line_search.h"
 
 namespace akvf {
 

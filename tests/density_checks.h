@@ -8,7 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <random>
 
-#include "framework/optimization/distortion_density.h"
+#include "akvf/distortion_density.h"
 
 namespace akvf::test {
 

@@ -1,5 +1,5 @@
 // Every built-in energy against the same density written once as a template
-// and differentiated automatically (energies/autodiff_density.h): values,
+// and differentiated automatically (akvf/autodiff_density.h): values,
 // gradients and Hessians agree; the automatic densities pass the finite-
 // difference checker; a registered user energy appears in the registry and
 // is refused a second time.

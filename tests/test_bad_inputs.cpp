@@ -8,14 +8,14 @@
 #include <fstream>
 #include <sstream>
 
-#include "akvf/deformation.h"
-#include "akvf/parameterization.h"
+#include "akvf/internal/deformation.h"
+#include "akvf/internal/parameterization.h"
+#include "akvf/mesh_io.h"
+#include "akvf/tet_mesh_io.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/runner/manifest.h"
-#include "io/constraints_io.h"
-#include "io/mesh_io.h"
-#include "io/tet_mesh_io.h"
 #include "framework/mesh/tet_validation.h"
+#include "io/constraints_io.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
 

@@ -10,11 +10,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "akvf/demo_mesh.h"
+#include "akvf/internal/demo_mesh.h"
+#include "akvf/tet_mesh_io.h"
 #include "cli/exit_codes.h"
-#include "pictures/html_view.h"
 #include "experiments/report/trace_csv.h"
-#include "io/tet_mesh_io.h"
+#include "pictures/html_view.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
 

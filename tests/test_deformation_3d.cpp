@@ -6,22 +6,23 @@
 #include <Eigen/Geometry>
 #include <random>
 
+#include "akvf/backtracking_line_search.h"
 #include "akvf/catalog.h"
-#include "akvf/deformation.h"
+#include "akvf/constrained_objective.h"
+#include "akvf/internal/deformation.h"
+#include "akvf/internal/preconditioner_settings.h"
 #include "akvf/threads.h"
 #include "energies/amips.h"
 #include "energies/arap.h"
 #include "energies/exp_symmetric_dirichlet.h"
 #include "energies/mips.h"
 #include "energies/symmetric_dirichlet.h"
-#include "framework/optimization/constrained_objective.h"
 #include "framework/optimization/distortion_objective.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "preconditioners/energy_scale.h"
 #include "preconditioners/laplacian_preconditioner.h"
 #include "preconditioners/newton_preconditioner.h"
 #include "preconditioners/slim_preconditioner.h"
-#include "solvers/backtracking_line_search.h"
 #include "tests/density_checks.h"
 #include "tests/test_support.h"
 

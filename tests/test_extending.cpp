@@ -7,10 +7,11 @@
 #include <algorithm>
 
 #include "akvf/akvf.h"
+#include "akvf/backtracking_line_search.h"
+#include "akvf/internal/preconditioner_settings.h"
+#include "akvf/optimizer.h"
 #include "framework/optimization/distortion_objective.h"
-#include "framework/optimization/optimizer.h"
 #include "preconditioners/factored_preconditioner.h"
-#include "solvers/backtracking_line_search.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -75,7 +76,7 @@ TEST_CASE("a preconditioner and a line search of one's own run by name through t
 namespace {
 
 // An objective of one's own, written against the interface the
-// preconditioners see (framework/optimization/mesh_objective.h): the volume
+// preconditioners see (akvf/mesh_objective.h): the volume
 // distortion of a tet mesh plus w sum |x_v - p_v|^2 over some vertices v with
 // targets p_v, with that term's Hessian diagonal as the added one.
 class PulledVertices final : public akvf::MeshObjective3D {
@@ -156,7 +157,8 @@ TEST_CASE("every 3D preconditioner, by name, runs on an objective of one's own t
   for (const auto& entry : akvf::preconditioners_3d().entries()) {
     const std::string& name = entry.first;  // not a structured binding: clang 14 cannot capture one
     CAPTURE(name);
-    const auto preconditioner = akvf::preconditioners_3d().create(name, objective, akvf::PreconditionerSettings3D{});
+    const auto preconditioner =
+        akvf::preconditioners_3d().create(name, objective, akvf::default_preconditioner_settings_3d());
     const akvf::OptimizerResult r = akvf::minimize(objective, *preconditioner, line_search, rest, options);
     CHECK(objective.count_inverted(r.x) == 0);
     if (name == "identity") continue;  // gradient descent: slow, only safe

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "akvf/parameterization.h"
+#include "akvf/internal/parameterization.h"
 #include "tests/test_support.h"
 
 namespace {

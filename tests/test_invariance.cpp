@@ -10,8 +10,8 @@
 #include <numeric>
 #include <random>
 
-#include "akvf/deformation.h"
-#include "akvf/parameterization.h"
+#include "akvf/internal/deformation.h"
+#include "akvf/internal/parameterization.h"
 #include "tests/test_support.h"
 
 namespace {

@@ -5,9 +5,9 @@
 #include <Eigen/Geometry>
 #include <random>
 
+#include "akvf/motion_bases.h"
 #include "framework/mesh/tet_validation.h"
 #include "preconditioners/killing_operator_3d.h"
-#include "preconditioners/motion_bases.h"
 #include "tests/test_support.h"
 
 namespace {

@@ -4,10 +4,10 @@
 #include <limits>
 #include <random>
 
+#include "akvf/backtracking_line_search.h"
 #include "energies/symmetric_dirichlet.h"
 #include "framework/optimization/distortion_objective.h"
 #include "framework/optimization/flip_free_step.h"
-#include "solvers/backtracking_line_search.h"
 #include "solvers/wolfe_bisection_line_search.h"
 #include "tests/test_support.h"
 

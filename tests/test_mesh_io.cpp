@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/mesh_io.h"
+#include "akvf/mesh_io.h"
 #include "io/polygon_triangulation.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"

@@ -7,15 +7,15 @@
 #include <cmath>
 #include <limits>
 
+#include "akvf/backtracking_line_search.h"
 #include "akvf/catalog.h"
-#include "akvf/demo_mesh.h"
-#include "akvf/parameterization.h"
-#include "framework/mesh/rest_geometry.h"
-#include "framework/process/error.h"
+#include "akvf/error.h"
+#include "akvf/internal/demo_mesh.h"
+#include "akvf/internal/parameterization.h"
+#include "akvf/rest_geometry.h"
 #include "framework/process/interrupt.h"
 #include "preconditioners/identity_preconditioner.h"
 #include "preconditioners/switching_preconditioner.h"
-#include "solvers/backtracking_line_search.h"
 #include "tests/test_support.h"
 
 using akvf::ParamConfig;

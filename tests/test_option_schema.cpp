@@ -5,8 +5,8 @@
 
 #include <fstream>
 
-#include "akvf/option_schema.h"
-#include "akvf/options.h"
+#include "akvf/internal/option_schema.h"
+#include "akvf/internal/options.h"
 #include "cli/command_line.h"
 #include "cli/schema_options.h"
 #include "experiments/runner/manifest.h"

@@ -12,8 +12,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "akvf/mesh_io.h"
 #include "akvf/parameterize.h"
-#include "io/mesh_io.h"
 #include "io/ply_reader.h"
 #include "io/stl_reader.h"
 #include "tests/cli_support.h"

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "akvf/demo_mesh.h"
+#include "akvf/internal/demo_mesh.h"
 #include "cli/exit_codes.h"
 #include "pictures/distortion_color.h"
 #include "pictures/uv_png.h"

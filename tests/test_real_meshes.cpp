@@ -11,12 +11,12 @@
 #include <limits>
 
 #include "akvf/catalog.h"
-#include "akvf/deformation.h"
-#include "akvf/parameterization.h"
-#include "akvf/slim_cube.h"
+#include "akvf/internal/deformation.h"
+#include "akvf/internal/parameterization.h"
+#include "akvf/internal/slim_cube.h"
+#include "akvf/mesh_io.h"
+#include "akvf/tet_mesh_io.h"
 #include "io/constraints_io.h"
-#include "io/mesh_io.h"
-#include "io/tet_mesh_io.h"
 #include "tests/test_support.h"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "akvf/parameterization.h"
+#include "akvf/internal/parameterization.h"
 #include "cli/akvf_cli.h"
 #include "cli/exit_codes.h"
 #include "cli/run_reporting.h"

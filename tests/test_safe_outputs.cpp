@@ -13,9 +13,9 @@
 #include <sstream>
 #include <thread>
 
+#include "akvf/error.h"
 #include "cli/exit_codes.h"
 #include "cli/file_arguments.h"
-#include "framework/process/error.h"
 #include "framework/process/output_file.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"

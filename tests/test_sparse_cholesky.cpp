@@ -4,8 +4,8 @@
 
 #include <tbb/global_control.h>
 
+#include "akvf/error.h"
 #include "framework/optimization/distortion_objective.h"
-#include "framework/process/error.h"
 #include "preconditioners/killing_operator_2d.h"
 #include "solvers/sparse_cholesky.h"
 #include "tests/test_support.h"

@@ -7,10 +7,10 @@
 #include <iostream>
 #include <sstream>
 
-#include "io/mesh_io.h"
+#include "akvf/error.h"
+#include "akvf/mesh_io.h"
 #include "framework/mesh/mesh_subdivision.h"
 #include "framework/mesh/tet_validation.h"
-#include "framework/process/error.h"
 
 namespace akvf::test {
 

@@ -5,7 +5,7 @@
 #include <random>
 #include <string>
 
-#include "framework/mesh/mesh.h"
+#include "akvf/mesh.h"
 
 namespace akvf::test {
 

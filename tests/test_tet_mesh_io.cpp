@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/tet_mesh_io.h"
+#include "akvf/tet_mesh_io.h"
 #include "framework/mesh/tet_validation.h"
 #include "tests/test_support.h"
 

@@ -7,11 +7,11 @@
 #include <random>
 #include <sstream>
 
-#include "akvf/deformation.h"
+#include "akvf/constrained_objective.h"
+#include "akvf/internal/deformation.h"
 #include "energies/symmetric_dirichlet.h"
-#include "io/constraints_io.h"
-#include "framework/optimization/constrained_objective.h"
 #include "framework/optimization/distortion_objective.h"
+#include "io/constraints_io.h"
 #include "preconditioners/akvf_preconditioner_3d.h"
 #include "solvers/lbfgs_solver.h"
 #include "tests/test_support.h"

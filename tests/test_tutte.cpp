@@ -4,10 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "akvf/rest_geometry.h"
 #include "framework/mesh/chart_layout.h"
 #include "framework/mesh/initialization.h"
 #include "framework/mesh/mesh_validation.h"
-#include "framework/mesh/rest_geometry.h"
 #include "framework/optimization/distortion_objective.h"
 #include "solvers/sparse_cholesky.h"
 #include "tests/test_support.h"

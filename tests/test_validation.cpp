@@ -4,9 +4,9 @@
 
 #include <limits>
 
+#include "akvf/rest_geometry.h"
 #include "framework/mesh/mesh_subdivision.h"
 #include "framework/mesh/mesh_validation.h"
-#include "framework/mesh/rest_geometry.h"
 #include "tests/test_support.h"
 
 using akvf::TriMesh;

@@ -18,17 +18,17 @@
 #include <memory>
 #include <random>
 
-#include "akvf/parameterization.h"
+#include "akvf/autodiff_density.h"
+#include "akvf/backtracking_line_search.h"
+#include "akvf/internal/parameterization.h"
+#include "akvf/mesh_io.h"
 #include "energies/arap.h"
-#include "energies/autodiff_density.h"
 #include "energies/symmetric_dirichlet.h"
 #include "experiments/bench/gamg_solve.h"
-#include "framework/process/native_runtime.h"
-#include "io/mesh_io.h"
 #include "framework/mesh/mesh_subdivision.h"
+#include "framework/process/native_runtime.h"
 #include "preconditioners/akvf_preconditioner_2d.h"
 #include "solvers/algebraic_multigrid.h"
-#include "solvers/backtracking_line_search.h"
 #include "solvers/dense_block_kernels.h"
 #include "solvers/sparse_cholesky.h"
 
@@ -262,7 +262,7 @@ void BM_GamgSolve(benchmark::State& state, const std::string& mesh, int subdivid
 #endif
 
 // The symmetric Dirichlet density written once as a template, for automatic
-// differentiation (energies/autodiff_density.h).
+// differentiation (akvf/autodiff_density.h).
 struct TemplateSymmetricDirichlet {
   template <class T>
   T operator()(const Eigen::Matrix<T, 2, 2>& J) const {

@@ -30,12 +30,12 @@
 #include <vector>
 
 #include "akvf/akvf.h"
-#include "akvf/parameterization.h"
-#include "akvf/slim_cube.h"
+#include "akvf/internal/parameterization.h"
+#include "akvf/internal/slim_cube.h"
+#include "akvf/mesh_io.h"
+#include "akvf/rest_geometry.h"
+#include "akvf/tet_mesh_io.h"
 #include "akvf/threads.h"
-#include "io/mesh_io.h"
-#include "framework/mesh/rest_geometry.h"
-#include "io/tet_mesh_io.h"
 #include "preconditioners/killing_operator_2d.h"
 #include "preconditioners/killing_operator_3d.h"
 #include "solvers/sparse_cholesky.h"

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "akvf/option_schema.h"
+#include "akvf/internal/option_schema.h"
+#include "akvf/optimizer.h"
+#include "akvf/preconditioner.h"
 #include "framework/mesh/mesh_validation.h"
-#include "framework/optimization/optimizer.h"
-#include "framework/optimization/preconditioner.h"
 
 namespace akvf {
 

@@ -7,10 +7,10 @@
 #include <limits>
 #include <sstream>
 
-#include "io/text_reader.h"
+#include "akvf/error.h"
 #include "framework/optimization/trace_columns.h"
-#include "framework/process/error.h"
 #include "framework/process/output_file.h"
+#include "io/text_reader.h"
 
 namespace akvf {
 

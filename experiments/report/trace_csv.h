@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/optimization/optimizer.h"
+#include "akvf/optimizer.h"
 #include "framework/optimization/trace_columns.h"
 
 namespace akvf {

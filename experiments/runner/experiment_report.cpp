@@ -10,15 +10,15 @@
 #include <sstream>
 #include <utility>
 
-#include "pictures/html_view.h"
-#include "io/json_text.h"
-#include "pictures/line_plot.h"
-#include "io/text_utilities.h"
+#include "akvf/error.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/runner/experiment_runner.h"
 #include "experiments/runner/manifest.h"
-#include "framework/process/error.h"
 #include "framework/process/output_file.h"
+#include "io/json_text.h"
+#include "io/text_utilities.h"
+#include "pictures/html_view.h"
+#include "pictures/line_plot.h"
 
 namespace akvf {
 

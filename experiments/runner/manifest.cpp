@@ -9,10 +9,10 @@
 #include <sstream>
 
 #include "akvf/catalog.h"
-#include "akvf/option_schema.h"
+#include "akvf/error.h"
+#include "akvf/internal/option_schema.h"
 #include "io/json_text.h"
 #include "io/text_utilities.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -19,7 +19,7 @@ namespace akvf {
 struct CaseSettings {
   std::string problem = "param";  // param (2D) or deform (3D)
   // The options of the problem, set from the keys of the options schema
-  // (akvf/option_schema.h: every `akvf param` / `akvf deform` option); the
+  // (akvf/internal/option_schema.h: every `akvf param` / `akvf deform` option); the
   // time limit defaults to 60 s of optimizer time here.
   ParameterizeOptions param = [] {
     ParameterizeOptions o;

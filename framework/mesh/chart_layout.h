@@ -4,8 +4,8 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "akvf/mesh.h"
 #include "framework/mesh/initialization.h"
-#include "framework/mesh/mesh.h"
 
 namespace akvf {
 

@@ -16,7 +16,7 @@
 // component: one boundary loop, Euler characteristic 1.
 #include <vector>
 
-#include "framework/mesh/mesh.h"
+#include "akvf/mesh.h"
 
 namespace akvf {
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "framework/mesh/rest_geometry.h"
-#include "framework/process/error.h"
+#include "akvf/error.h"
+#include "akvf/rest_geometry.h"
 
 namespace akvf {
 

@@ -2,7 +2,7 @@
 
 #include <unordered_map>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

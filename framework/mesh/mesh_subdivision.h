@@ -3,7 +3,7 @@
 // at its midpoint and every triangle becomes four. Topology (components,
 // boundary loops, Euler characteristic) and the surface are unchanged; used
 // to build the large meshes of the paper's Figure 6.
-#include "framework/mesh/mesh.h"
+#include "akvf/mesh.h"
 
 namespace akvf {
 

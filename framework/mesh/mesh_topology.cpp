@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <map>
 
+#include "akvf/error.h"
 #include "framework/mesh/cut_to_disk.h"
 #include "framework/mesh/mesh_topology.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

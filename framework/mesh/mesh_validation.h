@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "akvf/mesh.h"
 #include "framework/mesh/manifold_repair.h"
-#include "framework/mesh/mesh.h"
 
 namespace akvf {
 

@@ -1,4 +1,4 @@
-#include "framework/mesh/rest_geometry.h"
+#include "akvf/rest_geometry.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <sstream>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

@@ -6,8 +6,8 @@
 #include <map>
 #include <numeric>
 
+#include "akvf/error.h"
 #include "framework/mesh/mesh_topology.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

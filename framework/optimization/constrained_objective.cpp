@@ -1,8 +1,8 @@
-#include "framework/optimization/constrained_objective.h"
+#include "akvf/constrained_objective.h"
 
 #include <algorithm>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

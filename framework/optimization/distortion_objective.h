@@ -14,10 +14,10 @@
 #include <type_traits>
 #include <vector>
 
+#include "akvf/distortion_density.h"
+#include "akvf/mesh_objective.h"
+#include "akvf/rest_geometry.h"
 #include "framework/mesh/mesh_topology.h"
-#include "framework/mesh/rest_geometry.h"
-#include "framework/optimization/distortion_density.h"
-#include "framework/optimization/mesh_objective.h"
 
 namespace akvf {
 

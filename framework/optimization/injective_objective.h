@@ -9,8 +9,8 @@
 #include <Eigen/Core>
 #include <memory>
 
+#include "akvf/objective.h"
 #include "framework/optimization/boundary_contact.h"
-#include "framework/optimization/objective.h"
 
 namespace akvf {
 

@@ -1,4 +1,4 @@
-#include "framework/optimization/line_search.h"
+#include "akvf/line_search.h"
 
 #include <chrono>
 #include <cmath>

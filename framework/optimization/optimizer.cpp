@@ -1,9 +1,9 @@
-#include "framework/optimization/optimizer.h"
+#include "akvf/optimizer.h"
 
 #include <chrono>
 #include <cmath>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 #include "framework/process/interrupt.h"
 
 namespace akvf {

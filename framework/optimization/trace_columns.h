@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/optimization/optimizer.h"
+#include "akvf/optimizer.h"
 
 namespace akvf {
 

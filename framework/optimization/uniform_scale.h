@@ -3,7 +3,7 @@
 // square, or any other scale) restarts at the energy it was saved with.
 #include <Eigen/Core>
 
-#include "framework/optimization/objective.h"
+#include "akvf/objective.h"
 
 namespace akvf {
 

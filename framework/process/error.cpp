@@ -1,4 +1,4 @@
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 #include <sstream>
 

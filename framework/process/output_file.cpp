@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

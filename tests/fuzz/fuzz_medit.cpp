@@ -1,5 +1,5 @@
 // libFuzzer target: the MEDIT .mesh tet reader, then tet validation (the path of `akvf deform mesh.mesh`).
-#include "io/tet_mesh_io.h"
+#include "akvf/tet_mesh_io.h"
 #include "tests/fuzz/fuzz_mesh_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

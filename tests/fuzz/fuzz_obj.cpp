@@ -1,5 +1,5 @@
 // libFuzzer target: the OBJ triangle-mesh reader, then disk validation (the path of `akvf param mesh.obj`).
-#include "io/mesh_io.h"
+#include "akvf/mesh_io.h"
 #include "tests/fuzz/fuzz_mesh_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

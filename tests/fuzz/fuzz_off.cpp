@@ -1,5 +1,5 @@
 // libFuzzer target: the OFF triangle-mesh reader, then disk validation (the path of `akvf param mesh.off`).
-#include "io/mesh_io.h"
+#include "akvf/mesh_io.h"
 #include "tests/fuzz/fuzz_mesh_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

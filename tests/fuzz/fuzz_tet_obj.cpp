@@ -1,5 +1,5 @@
 // libFuzzer target: the OBJ-like tet reader (`v x y z`, `f a b c d`, SLIM's data), then tet validation.
-#include "io/tet_mesh_io.h"
+#include "akvf/tet_mesh_io.h"
 #include "tests/fuzz/fuzz_mesh_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf::fuzz {
 

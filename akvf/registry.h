@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "framework/process/error.h"
+#include "akvf/error.h"
 
 namespace akvf {
 

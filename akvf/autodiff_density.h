@@ -29,7 +29,7 @@
 #include <unsupported/Eigen/AutoDiff>
 #include <utility>
 
-#include "framework/optimization/distortion_density.h"
+#include "akvf/distortion_density.h"
 
 // Eigen's pow(AutoDiffScalar, exponent) takes the exponent as the scalar of
 // the derivatives, which for nested AutoDiffScalars is itself an

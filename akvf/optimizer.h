@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "framework/optimization/line_search.h"
-#include "framework/optimization/objective.h"
-#include "framework/optimization/preconditioner.h"
+#include "akvf/line_search.h"
+#include "akvf/objective.h"
+#include "akvf/preconditioner.h"
 
 namespace akvf {
 

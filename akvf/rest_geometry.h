@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/mesh/mesh.h"
+#include "akvf/mesh.h"
 
 namespace akvf {
 

@@ -6,8 +6,8 @@
 // the edge's midpoint, the edge at (max x, max y) by -0.3 pi about the same
 // axis through its own midpoint, and the other two edges are scaled by 0.75
 // about the origin.
-#include "framework/mesh/mesh.h"
-#include "framework/optimization/constrained_objective.h"
+#include "akvf/constrained_objective.h"
+#include "akvf/mesh.h"
 
 namespace akvf {
 

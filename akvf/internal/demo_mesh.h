@@ -1,6 +1,6 @@
 #pragma once
 // Meshes built in code, for the demo and the tests (no files needed).
-#include "framework/mesh/mesh.h"
+#include "akvf/mesh.h"
 
 namespace akvf {
 

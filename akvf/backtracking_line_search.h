@@ -4,7 +4,7 @@
 // and shrink alpha <- rho alpha until the first Wolfe (Armijo) condition
 //   E(x + alpha d) <= E(x) + c1 alpha grad E(x)^T d
 // holds. An inverted element makes E infinite, so no accepted step flips.
-#include "framework/optimization/line_search.h"
+#include "akvf/line_search.h"
 
 namespace akvf {
 

@@ -4,8 +4,8 @@
 #include <istream>
 #include <string>
 
-#include "framework/mesh/mesh.h"
-#include "io/obj_passthrough.h"
+#include "akvf/mesh.h"
+#include "akvf/obj_passthrough.h"
 
 namespace akvf {
 
@@ -66,5 +66,29 @@ void write_obj_with_uv(const std::string& path, const TriMesh& mesh, const Eigen
 
 // OutputError unless UV has 2 columns and UV_faces is #F by 3 rows of UV.
 void check_corner_uv(const TriMesh& mesh, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& UV_faces);
+
+// How write_mesh writes the texture coordinates.
+struct MeshWriteOptions {
+  // OBJ: "checker" writes PATH.mtl and the checkerboard PATH_checker.png
+  // beside the OBJ ("my uv.obj" -> my_uv.mtl) and vt scaled into the unit
+  // square, keeping the aspect ratio; "none" writes vt as given. A GLB always
+  // embeds the checkerboard with unit-square UV; a PLY has them as given.
+  std::string texture = "checker";
+  // What the OBJ the mesh was read from carries besides (normals, groups,
+  // materials, colours): kept in an OBJ output. Null for none.
+  const ObjPassthrough* obj_source = nullptr;
+};
+
+// Writes the mesh with its map, the format chosen by the extension: .obj,
+// .ply or .glb (any case; a device or FIFO without one gets an OBJ). Atomically; when an OBJ fails, the side files this
+// call created are removed with it.
+//   uv        #V by 2 (one row per vertex), or #T by 2 with uv_faces
+//   uv_faces  #F by 3 rows of uv; empty = F
+// Returns the factor of the unit-square coordinates written (checker OBJ,
+// GLB: uv = (written - offset) / factor), or 0 when written as given.
+// OptionsError for another extension or texture mode, OutputError when
+// the shapes disagree or a file cannot be written.
+double write_mesh(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& uv,
+                  const Eigen::MatrixXi& uv_faces = Eigen::MatrixXi(), const MeshWriteOptions& options = {});
 
 }  // namespace akvf

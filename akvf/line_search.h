@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "framework/optimization/objective.h"
+#include "akvf/objective.h"
 
 namespace akvf {
 

@@ -9,8 +9,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "framework/mesh/position_constraints.h"
-#include "framework/optimization/objective.h"
+#include "akvf/objective.h"
+#include "akvf/position_constraints.h"
 
 namespace akvf {
 

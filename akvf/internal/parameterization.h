@@ -5,14 +5,15 @@
 #include <string>
 
 #include "akvf/catalog.h"
+#include "akvf/internal/preconditioner_settings.h"
+#include "akvf/mesh.h"
+#include "akvf/optimizer.h"
+#include "akvf/rest_geometry.h"
 #include "framework/mesh/initialization.h"
-#include "framework/mesh/mesh.h"
 #include "framework/mesh/mesh_validation.h"
-#include "framework/mesh/rest_geometry.h"
 #include "framework/mesh/uv_overlap.h"
 #include "framework/optimization/boundary_contact.h"
 #include "framework/optimization/distortion_objective.h"
-#include "framework/optimization/optimizer.h"
 
 namespace akvf {
 
@@ -64,7 +65,7 @@ struct ParamSetup {
   // The charts' boundary loops: the run keeps them from crossing with
   // global injectivity, and every run counts their crossings at its end.
   std::shared_ptr<const BoundaryContact> boundary_contact;
-  Eigen::VectorXd x0;                                // initial map, interleaved, area-1 units
+  Eigen::VectorXd x0;  // initial map, interleaved, area-1 units
   int flaps_moved = 0;
   int flaps_shortened = 0;  // of those, moved only part of the way: the full move crossed the boundary
   // The fill-reducing ordering of the mesh's vertex graph, when the Tutte

@@ -4,11 +4,11 @@
 // (option_schema.h). The API, the command line and the experiment runner
 // all go through them.
 #include "akvf/deform.h"
-#include "akvf/deformation.h"
-#include "akvf/option_schema.h"
-#include "akvf/parameterization.h"
+#include "akvf/error.h"
+#include "akvf/internal/deformation.h"
+#include "akvf/internal/option_schema.h"
+#include "akvf/internal/parameterization.h"
 #include "akvf/parameterize.h"
-#include "framework/process/error.h"
 
 namespace akvf {
 

@@ -11,9 +11,9 @@
 #include <Eigen/Core>
 #include <type_traits>
 
-#include "framework/mesh/rest_geometry.h"
-#include "framework/optimization/distortion_density.h"
-#include "framework/optimization/objective.h"
+#include "akvf/distortion_density.h"
+#include "akvf/objective.h"
+#include "akvf/rest_geometry.h"
 
 namespace akvf {
 

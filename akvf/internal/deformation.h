@@ -9,11 +9,12 @@
 #include <string>
 
 #include "akvf/catalog.h"
-#include "framework/mesh/mesh.h"
-#include "framework/mesh/rest_geometry.h"
+#include "akvf/constrained_objective.h"
+#include "akvf/internal/preconditioner_settings.h"
+#include "akvf/mesh.h"
+#include "akvf/optimizer.h"
+#include "akvf/rest_geometry.h"
 #include "framework/mesh/tet_validation.h"
-#include "framework/optimization/constrained_objective.h"
-#include "framework/optimization/optimizer.h"
 
 namespace akvf {
 
