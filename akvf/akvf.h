@@ -18,6 +18,7 @@
 #include "akvf/extend.h"
 #include "akvf/mesh_io.h"
 #include "akvf/parameterize.h"
+#include "akvf/pictures.h"
 #include "akvf/tet_mesh_io.h"
 #include "akvf/threads.h"
 #include "akvf/version.h"

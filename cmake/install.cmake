@@ -6,10 +6,11 @@
 include(CMakePackageConfigHelpers)
 set(AKVF_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/akvf)
 
-foreach(part headers framework io energies solvers preconditioners)
+foreach(part headers framework io energies solvers preconditioners pictures)
   set_target_properties(akvf_${part} PROPERTIES EXPORT_NAME ${part})
 endforeach()
 install(TARGETS akvf_headers akvf_framework akvf_io akvf_energies akvf_solvers akvf_preconditioners akvf_api
+  akvf_pictures akvf_library
   EXPORT akvfTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

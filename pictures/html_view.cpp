@@ -13,6 +13,7 @@
 #include "io/text_utilities.h"
 #include "pictures/display_decimation.h"
 #include "pictures/distortion_color.h"
+#include "pictures/map_distortion.h"
 
 namespace akvf {
 
@@ -69,35 +70,6 @@ TriMesh unit_extent(const TriMesh& mesh) {
   const Eigen::RowVector3d low = mesh.V.colwise().minCoeff();
   unit.V = (mesh.V.rowwise() - low) / std::max((mesh.V.colwise().maxCoeff() - low).maxCoeff(), 1e-300);
   return unit;
-}
-
-// The symmetric Dirichlet distortion of each face under the map scaled to
-// the surface's area (the energy's scale: 4 is isometric; +infinity where the
-// map inverts or collapses a face), and each face's area. Mesh and map of
-// unit extent (unit_extent, unit_square_uv).
-struct MapDistortion {
-  Eigen::VectorXd value, area;
-};
-
-MapDistortion map_distortion(const TriMesh& mesh, const Eigen::MatrixXd& uv, const Eigen::MatrixXi& uv_faces) {
-  const RestTriangles rest = rest_triangles(mesh);
-  double uv_area = 0;
-  std::vector<Eigen::Matrix2d> Ds(mesh.num_faces());
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    const Eigen::RowVector2d p0 = uv.row(uv_faces(f, 0));
-    Ds[f].col(0) = (uv.row(uv_faces(f, 1)) - p0).transpose();
-    Ds[f].col(1) = (uv.row(uv_faces(f, 2)) - p0).transpose();
-    uv_area += 0.5 * Ds[f].determinant();
-  }
-  const double scale = uv_area > 0 ? std::sqrt(rest.total_area / uv_area) : 1;
-  Eigen::VectorXd values(mesh.num_faces());
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    const Eigen::Matrix2d J = scale * Ds[f] * rest.Dm_inv[f];
-    const double det = J.determinant();
-    // ||J||_F^2 + ||J^-1||_F^2, and ||J^-1||_F = ||J||_F / |det J| in 2D.
-    values[f] = det > 0 ? J.squaredNorm() * (1 + 1 / (det * det)) : std::numeric_limits<double>::infinity();
-  }
-  return {values, rest.area};
 }
 
 nlohmann::json page_data(const ViewContent& content) {

@@ -211,10 +211,17 @@ py::dict parameterize(const py::handle& V, const py::handle& F, const py::object
   return solve(*solver, uv0, callback);
 }
 
-py::dict deform(const py::handle& V, const py::handle& T, const py::handle& indices, const py::handle& targets,
-                const py::object& callback, const py::dict& keywords) {
+std::unique_ptr<akvf::Deformer> make_deformer(const py::handle& V, const py::handle& T) {
   const Eigen::MatrixXd vertices = akvf::python::float_matrix(V, "V", 3);
   const Eigen::MatrixXi tets = akvf::python::index_matrix(T, "T", 4);
+  const py::gil_scoped_release release;
+  return std::make_unique<akvf::Deformer>(vertices, tets);
+}
+
+// A solve of `solver` for the constraints (indices, targets), as
+// solve(Parameterizer) does.
+py::dict solve_deformation(const akvf::Deformer& solver, const py::handle& indices, const py::handle& targets,
+                           const py::object& callback, const py::dict& keywords, const char* caller) {
   akvf::PositionConstraints constraints;
   const Eigen::MatrixXi constrained = akvf::python::index_vector(indices, "constraints[0] (vertex indices)");
   constraints.vertices.assign(constrained.data(), constrained.data() + constrained.size());
@@ -222,23 +229,28 @@ py::dict deform(const py::handle& V, const py::handle& T, const py::handle& indi
   if (constraints.targets.rows() != constrained.size())
     throw akvf::InputError("constraints: " + std::to_string(constrained.size()) + " vertex indices but " +
                            std::to_string(constraints.targets.rows()) + " targets");
-  akvf::DeformOptions options = akvf::python::options_from_keywords(keywords, akvf::deform_option_fields(), "deform");
-  const auto n = vertices.rows();
-  PythonCallback hooks(callback, [n](const Eigen::VectorXd& x) {
-    return Eigen::MatrixXd(Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(x.data(), n, 3));
+  akvf::DeformOptions options = akvf::python::options_from_keywords(keywords, akvf::deform_option_fields(), caller);
+  PythonCallback hooks(callback, [](const Eigen::VectorXd& x) {
+    return Eigen::MatrixXd(
+        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(x.data(), x.size() / 3, 3));
   });
   options.callbacks = hooks.callbacks();
   const InterruptScope interrupts;
   akvf::DeformResult result;
   {
     const py::gil_scoped_release release;
-    result = akvf::deform(vertices, tets, constraints, options);
+    result = solver.solve(constraints, options);
   }
   interrupts.raise_if_interrupted();
   hooks.raise_if_failed();
   py::dict d = result_dict(result);
   d["x"] = result.x;
   return d;
+}
+
+py::dict deform(const py::handle& V, const py::handle& T, const py::handle& indices, const py::handle& targets,
+                const py::object& callback, const py::dict& keywords) {
+  return solve_deformation(*make_deformer(V, T), indices, targets, callback, keywords, "deform");
 }
 
 // (V, F) of a triangle mesh or (V, T) of a tet mesh, with the readers of the
@@ -256,25 +268,28 @@ py::tuple read_mesh(const std::string& path, const std::string& kind) {
   throw akvf::OptionsError("kind must be 'triangles' or 'tets', found '" + kind + "'");
 }
 
-void write_obj(const std::string& path, const py::handle& V, const py::handle& F, const py::handle& uv,
-               const py::object& uv_faces) {
+// A map given as arrays: the mesh, its uv and the rows of uv each face
+// corner uses (uv_faces, or F when None).
+struct ArrayMap {
   akvf::TriMesh mesh;
-  mesh.V = akvf::python::float_matrix(V, "V", 3);
-  mesh.F = akvf::python::index_matrix(F, "F", 3);
-  const Eigen::MatrixXd UV = akvf::python::float_matrix(uv, "uv", 2);
-  if (!uv_faces.is_none()) {
-    const Eigen::MatrixXi corners = akvf::python::index_matrix(uv_faces, "uv_faces", 3);
-    if (corners.rows() != mesh.F.rows() ||
-        (corners.size() > 0 && (corners.minCoeff() < 0 || corners.maxCoeff() >= UV.rows())))
-      throw akvf::InputError("uv_faces must have one row per face (" + std::to_string(mesh.F.rows()) +
-                             ") of indices into uv's " + std::to_string(UV.rows()) + " rows");
-    akvf::write_obj_with_uv(path, mesh, UV, corners);
-    return;
-  }
-  if (UV.rows() != mesh.V.rows())
-    throw akvf::InputError("uv must have one row per vertex (" + std::to_string(mesh.V.rows()) + "), found " +
-                           std::to_string(UV.rows()));
-  akvf::write_obj_with_uv(path, mesh, UV);
+  Eigen::MatrixXd uv;
+  Eigen::MatrixXi uv_faces;
+};
+
+ArrayMap array_map(const py::handle& V, const py::handle& F, const py::handle& uv, const py::object& uv_faces) {
+  ArrayMap map;
+  map.mesh.V = akvf::python::float_matrix(V, "V", 3);
+  map.mesh.F = akvf::python::index_matrix(F, "F", 3);
+  map.uv = akvf::python::float_matrix(uv, "uv", 2);
+  map.uv_faces = uv_faces.is_none() ? map.mesh.F : akvf::python::index_matrix(uv_faces, "uv_faces", 3);
+  if (map.uv_faces.rows() != map.mesh.F.rows() ||
+      (map.uv_faces.size() > 0 && (map.uv_faces.minCoeff() < 0 || map.uv_faces.maxCoeff() >= map.uv.rows())))
+    throw akvf::InputError(uv_faces.is_none()
+                               ? "uv must have one row per vertex (" + std::to_string(map.mesh.V.rows()) + "), found " +
+                                     std::to_string(map.uv.rows()) + "; pass uv_faces for per-corner uv"
+                               : "uv_faces must have one row per face (" + std::to_string(map.mesh.F.rows()) +
+                                     ") of indices into uv's " + std::to_string(map.uv.rows()) + " rows");
+  return map;
 }
 
 template <class Options>
@@ -309,7 +324,51 @@ PYBIND11_MODULE(_akvf, m) {
            })
       .def("initial_uv", &akvf::Parameterizer::initial_uv);
   m.def("read_mesh", &read_mesh, py::arg("path"), py::arg("kind"));
-  m.def("write_obj", &write_obj, py::arg("path"), py::arg("V"), py::arg("F"), py::arg("uv"), py::arg("uv_faces"));
+  m.def(
+      "write_mesh",
+      [](const std::string& path, const py::handle& V, const py::handle& F, const py::handle& uv,
+         const py::object& uv_faces, const std::string& texture) {
+        const ArrayMap map = array_map(V, F, uv, uv_faces);
+        akvf::MeshWriteOptions options;
+        options.texture = texture;
+        return akvf::write_mesh(path, map.mesh, map.uv, map.uv_faces, options);
+      },
+      py::arg("path"), py::arg("V"), py::arg("F"), py::arg("uv"), py::arg("uv_faces"), py::arg("texture"));
+  m.def(
+      "write_view",
+      [](const std::string& path, const py::handle& V, const py::handle& F, const py::handle& uv,
+         const py::object& uv_faces, const std::string& title, const std::string& summary) {
+        const ArrayMap map = array_map(V, F, uv, uv_faces);
+        return akvf::write_view(path, map.mesh, map.uv, map.uv_faces, title, summary);
+      },
+      py::arg("path"), py::arg("V"), py::arg("F"), py::arg("uv"), py::arg("uv_faces"), py::arg("title"),
+      py::arg("summary"));
+  m.def(
+      "write_layout",
+      [](const std::string& path, const py::handle& V, const py::handle& F, const py::handle& uv,
+         const py::object& uv_faces, int size, const std::string& title) {
+        const ArrayMap map = array_map(V, F, uv, uv_faces);
+        const std::string kind = path.size() >= 4 ? path.substr(path.size() - 4) : "";
+        if (kind == ".svg" || kind == ".SVG") {
+          akvf::write_layout_svg(path, map.mesh, map.uv, map.uv_faces, title);
+        } else if (kind == ".png" || kind == ".PNG") {
+          akvf::write_layout_png(path, map.mesh, map.uv, map.uv_faces, size);
+        } else {
+          throw akvf::OptionsError("cannot write " + path + ": the extension must be .png or .svg");
+        }
+      },
+      py::arg("path"), py::arg("V"), py::arg("F"), py::arg("uv"), py::arg("uv_faces"), py::arg("size"),
+      py::arg("title"));
+  m.def("view_available", &akvf::view_available);
+  py::class_<akvf::Deformer>(m, "Deformer")
+      .def(py::init(&make_deformer), py::arg("V"), py::arg("T"))
+      .def(
+          "solve",
+          [](const akvf::Deformer& solver, const py::handle& indices, const py::handle& targets,
+             const py::object& callback, const py::dict& keywords) {
+            return solve_deformation(solver, indices, targets, callback, keywords, "Deformer.solve");
+          },
+          py::arg("indices"), py::arg("targets"), py::arg("callback"), py::arg("keywords"));
   m.def("energies", [](int dimension) {
     if (dimension != 2 && dimension != 3) throw akvf::OptionsError("dimension must be 2 or 3");
     return dimension == 2 ? akvf::energies_2d().entries() : akvf::energies_3d().entries();

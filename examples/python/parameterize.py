@@ -43,7 +43,7 @@ def main():
         result.status, result.iterations, result.statistics["seconds"], result.energy,
         result.statistics["factorizations"]))
     if args.out:
-        akvf.write_obj(args.out, V, F, result.uv)
+        akvf.write_mesh(args.out, V, F, result.uv, texture="none")
         print("wrote", args.out)
     return 0 if result.status == "converged" else 1
 

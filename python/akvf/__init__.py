@@ -39,7 +39,8 @@ from ._akvf import (  # noqa: F401  (the exceptions are part of the API)
 
 __version__ = _akvf.__version__
 __all__ = [
-    "parameterize", "Parameterizer", "deform", "read_mesh", "write_obj", "energies", "preconditioners",
+    "parameterize", "Parameterizer", "deform", "Deformer", "read_mesh", "write_mesh", "write_obj", "write_view",
+    "write_layout", "view_available", "energies", "preconditioners",
     "line_searches", "solvers", "options", "load_extension", "Result", "Error", "InputError", "ValidationError",
     "OptionsError", "NumericalError", "OutputError", "__version__",
 ]
@@ -149,6 +150,28 @@ def deform(V, T, constraints, *, callback=None, **options):
     return result
 
 
+class Deformer:
+    """Repeated deformations of one tet mesh: the mesh is checked and its
+    rest shape computed once, and every solve after the first reuses the
+    symbolic analyses of the factored preconditioners (result.statistics
+    ["symbolic_analyses"] is 0 from the second solve on with the same options).
+
+        d = akvf.Deformer(V, T)
+        r1 = d.solve((indices, targets1))
+        r2 = d.solve((indices, targets2), max_iters=50)
+    """
+
+    def __init__(self, V, T):
+        self._solver = _akvf.Deformer(V, T)
+
+    def solve(self, constraints, *, callback=None, **options):
+        """deform() on this mesh: constraints, callback and options as there."""
+        indices, targets = constraints
+        result = Result(self._solver.solve(indices, targets, callback, options))
+        _warn(result.warnings)
+        return result
+
+
 def read_mesh(path, kind=None):
     """(V, F) of a triangle mesh (.obj, .off, .ply, .stl) or (V, T) of a tet mesh (.mesh, .msh, .tet).
 
@@ -164,11 +187,61 @@ def read_mesh(path, kind=None):
     return V, elements
 
 
-def write_obj(path, V, F, uv, uv_faces=None):
-    """Write the mesh with its ``vt`` (atomically, as the command line does):
-    one per vertex, or per corner with uv_faces (a Result's uv and uv_faces)."""
+def write_mesh(path, V, F, uv, uv_faces=None, *, texture="checker"):
+    """Write the mesh with its map; the format from the extension: .obj, .ply or .glb.
+
+    uv: (n, 2) per vertex, or per corner with uv_faces (a Result's uv and
+    uv_faces). An OBJ with texture="checker" gets PATH.mtl and the
+    checkerboard PATH_checker.png beside it and vt scaled into the unit
+    square; texture="none" writes vt as given. A GLB embeds the checkerboard;
+    a PLY has s, t as given. Written atomically, as the command line does.
+    Returns the factor of the unit-square coordinates written, or 0.
+    """
     import os
-    _akvf.write_obj(os.fspath(path), V, F, uv, uv_faces)
+    return _akvf.write_mesh(os.fspath(path), V, F, uv, uv_faces, texture)
+
+
+def write_obj(path, V, F, uv, uv_faces=None):
+    """write_mesh(path, V, F, uv, uv_faces, texture="none") for an .obj path."""
+    import os
+    path = os.fspath(path)
+    if not path.lower().endswith(".obj"):
+        raise OptionsError("write_obj writes .obj files, found " + path + " (write_mesh chooses by extension)")
+    write_mesh(path, V, F, uv, uv_faces, texture="none")
+
+
+def write_view(path, V, F, uv, uv_faces=None, summary=None, *, title=""):
+    """Write the self-contained HTML view of the map: the checkerboard on the
+    surface, the layout, colouring by distortion, and the summary (a dict or
+    JSON text, as a Result's or ``akvf param --summary``'s). Returns the
+    number of faces shown (meshes beyond 500 000 faces are decimated)."""
+    import json
+    import os
+    if summary is None:
+        text = ""
+    elif isinstance(summary, str):
+        text = summary
+    else:
+        text = json.dumps(summary, default=_json_default)
+    return _akvf.write_view(os.fspath(path), V, F, uv, uv_faces, title, text)
+
+
+def write_layout(path, V, F, uv, uv_faces=None, *, size=1024, title=""):
+    """Write the UV layout shaded by distortion: a PNG (longer side ``size``
+    pixels) or an SVG (with ``title``), by the extension."""
+    import os
+    _akvf.write_layout(os.fspath(path), V, F, uv, uv_faces, size, title)
+
+
+def view_available():
+    """True when this build embeds three.js, which write_view needs."""
+    return _akvf.view_available()
+
+
+def _json_default(value):
+    if hasattr(value, "tolist"):  # NumPy arrays and scalars
+        return value.tolist()
+    raise TypeError(f"{type(value).__name__} is not JSON serializable")
 
 
 def energies(dimension=2):

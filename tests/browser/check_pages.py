@@ -225,6 +225,12 @@ def main():
         check_page(chrome, work, base + "_view.html")
         check_page(chrome, work, base + ".html#distortion", expect_coloured=True)
         check_page(chrome, work, os.path.join(demo, "demo_view.html"))
+        if os.environ.get("AKVF_PYTHON_PACKAGE"):  # akvf.write_view from Python, on the same torus
+            script = ("import akvf; V, F = akvf.read_mesh(%r); r = akvf.parameterize(V, F, cut='auto'); "
+                      "akvf.write_view(%r, V, F, r.uv, r.uv_faces, summary={'status': r.status})"
+                      % (torus, base + "_python.html"))
+            run([sys.executable, "-c", script], env=dict(os.environ, PYTHONPATH=os.environ["AKVF_PYTHON_PACKAGE"]))
+            check_page(chrome, work, base + "_python.html")
         manifest = os.path.join(work, "m.json")
         with open(manifest, "w") as out:
             out.write('{"name": "browser", "meshes": [{"label": "torus", "file": "torus.off"}], '
