@@ -128,7 +128,8 @@ class Parameterizer {
   ParameterizeResult solve(const Eigen::MatrixXd& uv0, const std::vector<IterationCallback>& callbacks = {});
 
   // New options for the next solves; the initial map is recomputed only if
-  // init, cut, flaps, energy, exponent, warm_start_iters or injectivity changed.
+  // init, cut, repair, flaps, energy, exponent, warm_start_iters or
+  // injectivity changed.
   // One Parameterizer does one thing at a time: solve() or set_options()
   // while it is solving (from another thread, or from a callback) throws
   // OptionsError and changes nothing.

@@ -120,7 +120,8 @@ class Parameterizer:
 
     def set_options(self, **options):
         """Change the given options for the next solves; the initial map is
-        recomputed only when init, flaps, energy, exponent, warm_start_iters or injectivity change."""
+        recomputed only when init, cut, repair, flaps, energy, exponent,
+        warm_start_iters or injectivity change."""
         merged = dict(self._options, **options)
         self._solver.set_options(merged)
         self._options = merged
