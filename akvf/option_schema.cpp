@@ -109,7 +109,7 @@ template <class O>
 void add_common_fields(std::vector<OptionField<O>>* fields) {
   fields->push_back(number_field<O>("exponent", "exponent", "K", "exponent k of exp-symmetric-dirichlet and amips",
                                     &O::exponent, "> 0", [](double k) { return k > 0; }));
-  fields->push_back(text_field<O>("line_search", "line-search", "NAME", "backtracking or wolfe-bisection",
+  fields->push_back(text_field<O>("line_search", "line-search", "NAME", line_searches().names(),
                                   &O::line_search, [](const O& o) { line_searches().require(o.line_search); }));
   fields->push_back(text_field<O>("acceleration", "acceleration", "auto|on|off",
                                   "AQP momentum: auto (on for the laplacian preconditioner only), on, off",
@@ -147,14 +147,14 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
   using O = ParameterizeOptions;
   static const std::vector<OptionField<O>> fields = [] {
     std::vector<OptionField<O>> f;
-    f.push_back(text_field<O>("energy", "energy", "NAME", "distortion energy (see `akvf list`)", &O::energy,
+    f.push_back(text_field<O>("energy", "energy", "NAME", "distortion energy: " + energies_2d().names(), &O::energy,
                               [](const O& o) { energies_2d().require(o.energy); }));
     f.push_back(text_field<O>("solver", "solver", "NAME",
                               "descent (Algorithm 1 with --precond) or lbfgs (L-BFGS through Ceres)", &O::solver,
                               [](const O& o) { require_solver(o.solver); }));
     f.push_back(
         text_field<O>("precond", "precond", "NAME",
-                      "akvf, newton, akvf-newton, laplacian, slim, identity (or lbfgs, an alias of --solver lbfgs)",
+                      preconditioners_2d().names() + " (or lbfgs, an alias of --solver lbfgs)",
                       &O::preconditioner, [](const O& o) { require_method(o.preconditioner); }));
     add_common_fields(&f);
     f.push_back(number_field<O>("akvf_reuse", "akvf-reuse", "TAU",
@@ -225,10 +225,10 @@ const std::vector<OptionField<DeformOptions>>& deform_option_fields() {
   using O = DeformOptions;
   static const std::vector<OptionField<O>> fields = [] {
     std::vector<OptionField<O>> f;
-    f.push_back(text_field<O>("energy", "energy", "NAME", "3D distortion energy (see `akvf list`)", &O::energy,
+    f.push_back(text_field<O>("energy", "energy", "NAME", "3D distortion energy: " + energies_3d().names(), &O::energy,
                               [](const O& o) { energies_3d().require(o.energy); }));
     f.push_back(text_field<O>("precond", "precond", "NAME",
-                              "akvf (K + 1e-4 I), newton, akvf-newton, laplacian, slim, identity", &O::preconditioner,
+                              preconditioners_3d().names() + " (akvf: K + 1e-4 I)", &O::preconditioner,
                               [](const O& o) { preconditioners_3d().require(o.preconditioner); }));
     add_common_fields(&f);
     f.push_back(number_field<O>("weight", "weight", "W", "soft constraint weight w (at rest volume 1)", &O::weight,
