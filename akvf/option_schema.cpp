@@ -104,11 +104,19 @@ OptionField<O> switch_field(std::string key, std::string flag, std::string value
           [](const O&, const std::string&) {}};
 }
 
+// The field, marked as one whose change recomputes the initial map.
+template <class O>
+OptionField<O> recomputes_start(OptionField<O> field) {
+  field.recomputes_start = true;
+  return field;
+}
+
 // Options both problems have, with the same meaning.
 template <class O>
 void add_common_fields(std::vector<OptionField<O>>* fields) {
-  fields->push_back(number_field<O>("exponent", "exponent", "K", "exponent k of exp-symmetric-dirichlet and amips",
-                                    &O::exponent, "> 0", [](double k) { return k > 0; }));
+  fields->push_back(
+      recomputes_start(number_field<O>("exponent", "exponent", "K", "exponent k of exp-symmetric-dirichlet and amips",
+                                       &O::exponent, "> 0", [](double k) { return k > 0; })));
   fields->push_back(text_field<O>("line_search", "line-search", "NAME", line_searches().names(),
                                   &O::line_search, [](const O& o) { line_searches().require(o.line_search); }));
   fields->push_back(text_field<O>("acceleration", "acceleration", "auto|on|off",
@@ -147,8 +155,9 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
   using O = ParameterizeOptions;
   static const std::vector<OptionField<O>> fields = [] {
     std::vector<OptionField<O>> f;
-    f.push_back(text_field<O>("energy", "energy", "NAME", "distortion energy: " + energies_2d().names(), &O::energy,
-                              [](const O& o) { energies_2d().require(o.energy); }));
+    f.push_back(
+        recomputes_start(text_field<O>("energy", "energy", "NAME", "distortion energy: " + energies_2d().names(),
+                                       &O::energy, [](const O& o) { energies_2d().require(o.energy); })));
     f.push_back(text_field<O>("solver", "solver", "NAME",
                               "descent (Algorithm 1 with --precond) or lbfgs (L-BFGS through Ceres)", &O::solver,
                               [](const O& o) { require_solver(o.solver); }));
@@ -174,48 +183,50 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                       }));
     f.push_back(number_field<O>("ls_rho", "ls-rho", "X", "backtracking shrink factor (the paper's text says 0.9)",
                                 &O::ls_rho, "in (0, 1)", [](double r) { return r > 0 && r < 1; }));
-    f.push_back(text_field<O>("init", "init", "NAME",
-                              "initial map: tutte (uniform weights), cotan, or file (the mesh file's texture "
-                              "coordinates: OBJ vt, PLY u,v, taken at the energy's best uniform scale)",
-                              &O::init, [](const O& o) {
-                                if (o.init != "file" && o.init != "tutte" && o.init != "uniform" && o.init != "cotan" &&
-                                    o.init != "cotangent")
-                                  throw OptionsError("unknown initialization '" + o.init +
-                                                     "' (valid: tutte, cotan, file)");
-                              }));
-    f.push_back(text_field<O>("cut", "cut", "none|auto",
-                              "auto cuts a closed, multi-boundary, higher-genus or multi-component mesh into disks "
-                              "(one chart per component, side by side); none refuses such meshes",
-                              &O::cut, [](const O& o) {
-                                if (o.cut != "none" && o.cut != "auto")
-                                  throw OptionsError("unknown cut '" + o.cut + "' (valid: none, auto)");
-                              }));
-    f.push_back(text_field<O>("repair", "repair", "auto|none",
-                              "auto opens edges shared by three or more faces and splits non-manifold vertices into "
-                              "one copy per fan of faces (reported; the UV is then per corner); none refuses such "
-                              "meshes",
-                              &O::repair, [](const O& o) {
-                                if (o.repair != "auto" && o.repair != "none")
-                                  throw OptionsError("unknown repair '" + o.repair + "' (valid: auto, none)");
-                              }));
-    f.push_back(text_field<O>("injectivity", "injectivity", "global|local",
-                              "global keeps every chart's boundary from crossing itself (no overlap in UV: a "
-                              "contact-free step and a boundary barrier, Smith & Schaefer 2015); local keeps "
-                              "only every triangle positive, the paper's Algorithm 1",
-                              &O::injectivity, [](const O& o) {
-                                if (o.injectivity != "global" && o.injectivity != "local")
-                                  throw OptionsError("unknown injectivity '" + o.injectivity +
-                                                     "' (valid: global, local)");
-                              }));
+    f.push_back(recomputes_start(
+        text_field<O>("init", "init", "NAME",
+                      "initial map: tutte (uniform weights), cotan, or file (the mesh file's texture "
+                      "coordinates: OBJ vt, PLY u,v, taken at the energy's best uniform scale)",
+                      &O::init, [](const O& o) {
+                        if (o.init != "file" && o.init != "tutte" && o.init != "uniform" && o.init != "cotan" &&
+                            o.init != "cotangent")
+                          throw OptionsError("unknown initialization '" + o.init + "' (valid: tutte, cotan, file)");
+                      })));
+    f.push_back(recomputes_start(
+        text_field<O>("cut", "cut", "none|auto",
+                      "auto cuts a closed, multi-boundary, higher-genus or multi-component mesh into disks "
+                      "(one chart per component, side by side); none refuses such meshes",
+                      &O::cut, [](const O& o) {
+                        if (o.cut != "none" && o.cut != "auto")
+                          throw OptionsError("unknown cut '" + o.cut + "' (valid: none, auto)");
+                      })));
+    f.push_back(recomputes_start(
+        text_field<O>("repair", "repair", "auto|none",
+                      "auto opens edges shared by three or more faces and splits non-manifold vertices into "
+                      "one copy per fan of faces (reported; the UV is then per corner); none refuses such "
+                      "meshes",
+                      &O::repair, [](const O& o) {
+                        if (o.repair != "auto" && o.repair != "none")
+                          throw OptionsError("unknown repair '" + o.repair + "' (valid: auto, none)");
+                      })));
+    f.push_back(recomputes_start(
+        text_field<O>("injectivity", "injectivity", "global|local",
+                      "global keeps every chart's boundary from crossing itself (no overlap in UV: a "
+                      "contact-free step and a boundary barrier, Smith & Schaefer 2015); local keeps "
+                      "only every triangle positive, the paper's Algorithm 1",
+                      &O::injectivity, [](const O& o) {
+                        if (o.injectivity != "global" && o.injectivity != "local")
+                          throw OptionsError("unknown injectivity '" + o.injectivity + "' (valid: global, local)");
+                      })));
     OptionField<O> flaps =
         switch_field<O>("flaps", "flaps", "on|off", "flap optimization of Sec. 5.4 after the Tutte map", &O::flaps);
     flaps.kind = OptionKind::kText;  // --flaps on|off on the command line
     flaps.format = [](const O& o) { return std::string(o.flaps ? "on" : "off"); };
-    f.push_back(flaps);
-    f.push_back(integer_field<O>("warm_start_iters", "warm-start-iters", "N",
-                                 "iteration limit of the symmetric Dirichlet warm start of energies that "
-                                 "overflow at the initial map",
-                                 &O::warm_start_iters, ">= 0", [](int n) { return n >= 0; }));
+    f.push_back(recomputes_start(flaps));
+    f.push_back(recomputes_start(integer_field<O>("warm_start_iters", "warm-start-iters", "N",
+                                                  "iteration limit of the symmetric Dirichlet warm start of "
+                                                  "energies that overflow at the initial map",
+                                                  &O::warm_start_iters, ">= 0", [](int n) { return n >= 0; })));
     return f;
   }();
   return fields;
@@ -253,7 +264,7 @@ const std::vector<OptionField<DeformOptions>>& deform_option_fields() {
 namespace {
 
 template <class O>
-void reference_table(std::ostream& out, const std::vector<OptionField<O>>& fields) {
+void reference_table(std::ostream& out, const std::vector<OptionField<O>>& fields, bool mark_restarts) {
   const O defaults;
   out << "| key (API field, manifest, Python) | command line | default | meaning |\n|---|---|---|---|\n";
   // A '|' inside a cell would end it.
@@ -264,7 +275,8 @@ void reference_table(std::ostream& out, const std::vector<OptionField<O>>& field
   for (const auto& field : fields) {
     const std::string value = field.format(defaults);
     out << "| `" << field.key << "` | `--" << field.flag << cell(field.value_name.empty() ? "" : " " + field.value_name)
-        << "` | " << (value == "inf" ? "none" : value) << " | " << cell(field.help) << " |\n";
+        << "` | " << (value == "inf" ? "none" : value) << " | " << cell(field.help)
+        << (mark_restarts && field.recomputes_start ? " (*)" : "") << " |\n";
   }
 }
 
@@ -277,9 +289,10 @@ std::string options_reference_markdown() {
          "checks that this file is what the command prints. Each key is a field of the API's options (the "
          "API field for `precond` is `preconditioner`), a manifest key and a command-line flag.\n\n"
          "## `akvf param` and `akvf::ParameterizeOptions`\n\n";
-  reference_table(out, parameterize_option_fields());
-  out << "\n## `akvf deform` and `akvf::DeformOptions`\n\n";
-  reference_table(out, deform_option_fields());
+  reference_table(out, parameterize_option_fields(), true);
+  out << "\n(*) Changing it in `Parameterizer::set_options` recomputes the initial map; other options keep it.\n"
+         "\n## `akvf deform` and `akvf::DeformOptions`\n\n";
+  reference_table(out, deform_option_fields(), false);
   out << "\nManifests use the same keys (`docs/experiments.md`); their `time_limit` defaults to 60 s.\n";
   return out.str();
 }

@@ -97,10 +97,9 @@ ParameterizeResult Parameterizer::solve(const Eigen::MatrixXd& uv0, const std::v
 void Parameterizer::set_options(const ParameterizeOptions& options) {
   const Busy busy(&state_->busy, "set_options");
   const ParameterizeOptions& old = state_->options;
-  const bool new_start = options.init != old.init || options.cut != old.cut || options.repair != old.repair ||
-                         options.flaps != old.flaps || options.energy != old.energy ||
-                         options.exponent != old.exponent || options.warm_start_iters != old.warm_start_iters ||
-                         options.injectivity != old.injectivity;
+  bool new_start = false;
+  for (const auto& field : parameterize_option_fields())
+    if (field.recomputes_start && field.format(options) != field.format(old)) new_start = true;
   const ParameterizeOptions previous = state_->options;
   state_->options = options;
   try {

@@ -128,8 +128,8 @@ class Parameterizer {
   ParameterizeResult solve(const Eigen::MatrixXd& uv0, const std::vector<IterationCallback>& callbacks = {});
 
   // New options for the next solves; the initial map is recomputed only if
-  // init, cut, repair, flaps, energy, exponent, warm_start_iters or
-  // injectivity changed.
+  // an option whose schema field says so changed (marked (*) in
+  // docs/options.md).
   // One Parameterizer does one thing at a time: solve() or set_options()
   // while it is solving (from another thread, or from a callback) throws
   // OptionsError and changes nothing.

@@ -299,7 +299,8 @@ py::list option_list(const std::vector<akvf::OptionField<Options>>& fields) {
   const Options defaults;
   for (const auto& field : fields)
     list.append(py::dict("key"_a = field.key, "kind"_a = kinds[static_cast<int>(field.kind)],
-                         "default"_a = field.format(defaults), "flag"_a = "--" + field.flag, "help"_a = field.help));
+                         "default"_a = field.format(defaults), "flag"_a = "--" + field.flag, "help"_a = field.help,
+                         "recomputes_start"_a = field.recomputes_start));
   return list;
 }
 

@@ -3,9 +3,10 @@
 // ParameterizeOptions / DeformOptions, the manifest key, the Python keyword),
 // its command-line flag, help text, how it is read from text and written
 // back, and its range check. The command line (flags and --help), the
-// experiment manifests, the API's is_valid() and the options reference
-// (docs/options.md, `akvf list --options`) are all driven by it, so a new
-// option is one entry here.
+// experiment manifests, the API's is_valid(), Parameterizer::set_options'
+// rule for recomputing the initial map, the Python keywords and the options
+// reference (docs/options.md, `akvf list --options`) are all driven by it, so
+// a new option is one entry here.
 #include <functional>
 #include <string>
 #include <vector>
@@ -38,6 +39,9 @@ struct OptionField {
   // > 0, found -1" for a range (NAME is how the caller names the option,
   // "" for none), or the registry's "unknown energy 'x' (valid: ...)".
   std::function<void(const Options&, const std::string& name)> check;
+  // Changing it recomputes the initial map of a Parameterizer
+  // (Parameterizer::set_options compares these fields only).
+  bool recomputes_start = false;
 };
 
 const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields();

@@ -120,8 +120,8 @@ class Parameterizer:
 
     def set_options(self, **options):
         """Change the given options for the next solves; the initial map is
-        recomputed only when init, cut, repair, flaps, energy, exponent,
-        warm_start_iters or injectivity change."""
+        recomputed only when one of the options whose ``recomputes_start`` is
+        True in ``akvf.options()`` changes (marked (*) in docs/options.md)."""
         merged = dict(self._options, **options)
         self._solver.set_options(merged)
         self._options = merged
@@ -279,7 +279,8 @@ def load_extension(path):
 
 
 def options(problem="parameterize"):
-    """The keyword options of parameterize or deform: dicts of key, kind, default, flag, help."""
+    """The keyword options of parameterize or deform: dicts of key, kind, default, flag, help and
+    recomputes_start (changing it in Parameterizer.set_options recomputes the initial map)."""
     return _akvf.options(problem)
 
 

@@ -97,3 +97,16 @@ def test_deformer_solves_twice_with_one_symbolic_analysis():
     assert np.array_equal(second.x, fresh.x)
     with pytest.raises(akvf.InputError, match="already constrained"):
         solver.solve(([0, 0], np.zeros((2, 3))))
+
+
+def test_the_schema_says_which_options_recompute_the_initial_map():
+    fields = {f["key"]: f for f in akvf.options("parameterize")}
+    assert fields["init"]["recomputes_start"] and fields["energy"]["recomputes_start"]
+    assert not fields["max_iters"]["recomputes_start"] and not fields["precond"]["recomputes_start"]
+    V, F = bumpy_disk()
+    solver = akvf.Parameterizer(V, F)
+    first = solver.initial_uv
+    solver.set_options(max_iters=5, precond="newton")  # keeps the initial map
+    assert np.array_equal(solver.initial_uv, first)
+    solver.set_options(init="cotan")  # recomputes it
+    assert not np.array_equal(solver.initial_uv, first)
