@@ -19,7 +19,7 @@
 // otherwise, so line searches back off as for the built-in energies). It must
 // be rotation-invariant, D(R J) = D(J) = D(J R) for rotations R, as every
 // distortion energy is; SLIM relies on that when it asks for dD/dsigma.
-// The hand-written densities stay: they are faster (docs/performance.md).
+// The hand-written densities stay: they are faster.
 #include <ceres/jet.h>
 
 #include <Eigen/Core>

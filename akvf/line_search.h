@@ -15,7 +15,7 @@ struct LineSearchSettings {
   double c1 = 1e-5;  // sufficient decrease: E(x + a d) <= E(x) + c1 a grad^T d
   // Backtracking shrink factor. §5.3 of the paper states 0.9; the SLIM
   // framework the authors' code is built on halves the step, and halving
-  // needs about half the iterations here (docs/performance.md), so 0.5 is
+  // needs about half the iterations here, so 0.5 is
   // the default and --ls-rho 0.9 gives the paper's text.
   double rho = 0.5;
   double max_step_fraction = 0.8;  // alpha_0 <= fraction * alpha_max (flip-free bound)

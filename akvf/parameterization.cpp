@@ -41,7 +41,7 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
 // the two factorizations round differently, and a start differing in its last
 // bits can change an iteration count. The paper's largest mesh has 20 K
 // vertices; at 1.27 M (horse_b subdivided three times) the setup of a run
-// takes 10.3 s instead of 19.3 s (docs/performance.md).
+// takes 10.3 s instead of 19.3 s.
 constexpr int kCholmodTutteVertices = 100000;
 
 // On those meshes the vertex graph is ordered once, as the optimizer's

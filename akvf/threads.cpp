@@ -36,7 +36,7 @@ int saved_omp_dynamic = -1;
 void acquire_native_settings() {
   const std::lock_guard<std::mutex> lock(native_mutex);
   if (native_users++ > 0) return;
-  // Measured on horse_b through the API (docs/performance.md): 0.90-1.10 s
+  // Measured on horse_b through the API: 0.90-1.10 s
   // with the libraries' defaults, 0.74 s with OPENBLAS_NUM_THREADS=1 and
   // OMP_THREAD_LIMIT=1 in the environment, about the same with these
   // in-process settings.

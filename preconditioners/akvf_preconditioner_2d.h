@@ -10,7 +10,7 @@
 namespace akvf {
 
 struct AkvfOptions2D {
-  // Reuse tau 0.03 measured in docs/performance.md.
+  // Reuse tau 0.03: measured by scripts/performance.sh.
   FactorOptions factor = [] {
     FactorOptions o;
     o.reuse_tolerance = 0.03;

@@ -23,7 +23,7 @@
 // Long thin regions bend with eigenvalues of K below 1e-8 * mean(diag K):
 // with the former 1e-8 the bending of hilbert_b (a strip folded into a
 // Hilbert curve) converged linearly, 29 AKVF iterations to the gradient
-// tolerance instead of 15 (docs/performance.md). Should rounding still tip
+// tolerance instead of 15. Should rounding still tip
 // a pivot below zero, the factorization is retried with a shift 100 times
 // larger, up to max_tikhonov (kept for the later factorizations); a matrix
 // that fails even then is not positive semidefinite, and the error stands.
@@ -31,7 +31,7 @@
 // stopped at a relative residual of 1e-2, they leave the softest modes
 // unresolved whatever the shift, and the smaller one only slowed their CG
 // (hilbert_b with multigrid: 19432 CG iterations in 70 AKVF iterations
-// instead of 7851 in 40, docs/performance.md).
+// instead of 7851 in 40).
 //
 // Reuse (tau > 0). Before factoring P(x), try CG on P(x) d = g preconditioned
 // by the last factor, projected so that neither the old factor's response to
@@ -47,8 +47,7 @@
 // inverse, and its first iteration already contracts the residual by about
 // what the tolerance asks of every iteration, while one that fails mostly
 // leaves it where it was (at 1.27 M vertices a CG iteration costs a fifth of
-// a factorization; docs/performance.md, "A failed reuse gives up after one
-// CG iteration"). The paper's AKVF keeps the second: on camelhead one of
+// a factorization). The paper's AKVF keeps the second: on camelhead one of
 // its reuses contracts less at first and converges, and checking from the
 // first took it from 82 to 86 iterations.
 //
@@ -59,13 +58,13 @@
 // factor is: CG on the new P(x) with the old hierarchy, accepted if it
 // converges within the iterations a fresh hierarchy took plus
 // amg_setup_cycles (the setup costs about that many CG iterations, measured
-// in docs/performance.md), else a new hierarchy is built. A solve that does
+// with akvf_benchmarks), else a new hierarchy is built. A solve that does
 // not reach the tolerance within amg_max_cg iterations still gives a descent
 // direction (its last CG iterate).
 //
 // Automatic choice (linear_solver = kAuto). CHOLMOD was the faster solver at
-// every size measured on the 2-core machine (docs/performance.md, up to
-// 10.2 M faces), so the only reason to leave it is memory: before the first
+// every size measured on the 2-core machine (up to 10.2 M
+// faces), so the only reason to leave it is memory: before the first
 // factorization the symbolic analysis tells the factor's size, and if it
 // exceeds auto_factor_bytes (default half the physical memory: the rest of a
 // run took 0.75 to 0.8 times as much again as its factor, measured at 2.5 M

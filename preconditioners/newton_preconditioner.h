@@ -23,7 +23,7 @@
 // compresses some elements (their twist eigenvalues are negative and
 // clamped to 0), so near a minimum that is not an isometry projected Newton
 // converges only linearly: on camelhead its gradient norm falls by 0.87 per
-// iteration from 1e-3 on (docs/performance.md). In 2D the Hessian's
+// iteration from 1e-3 on. In 2D the Hessian's
 // curvature along the rotation of each chart, grad E . (x - c) / |x - c|^2
 // over the chart, is negative wherever the chart would rather expand, so P
 // adds twice its magnitude to the chart's diagonal (the direction never
@@ -47,7 +47,7 @@
 // negative curvature and P is much stiffer than H along the directions
 // that matter; on cow_closed cut to a disk the default's Newton phase
 // crept with unit steps for 384 iterations that way, and takes 33 with
-// the partial fallback (docs/performance.md). The exact Hessian is tried
+// the partial fallback. The exact Hessian is tried
 // only at the start or after a unit step accepted at once: that is where
 // Newton's model held, near a minimum, where the Hessian is positive
 // definite. After a step the flip-free bound or the line search shortened

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the tables of docs/performance.md: run it after scripts/build.sh
-# and paste its Markdown output into the doc. Times are the median of REPEAT
+# The tables of the paper's AKVF under its settings (docs/performance.md):
+# run it after scripts/build.sh; it prints Markdown. Times are the median of REPEAT
 # runs (default 3) of `akvf param`, optimizer time only (the `seconds` of the
 # last trace row), on the meshes of ../shared/meshes (or $AKVF_DATA_DIR).
 # Takes about five minutes on the 2-core development machine.

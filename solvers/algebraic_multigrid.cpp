@@ -192,7 +192,7 @@ void AlgebraicMultigrid::setup(const Eigen::SparseMatrix<double>& upper, int blo
   // row, one level of aggressive coarsening: what hypre's manual recommends
   // for unstructured problems. hypre's default smoothing (l1 Gauss-Seidel,
   // forward going down, backward going up) makes the cycle symmetric. Measured
-  // on K of horse_b x16 (641 K unknowns, docs/performance.md): without the
+  // on K of horse_b x16 (641 K unknowns): without the
   // aggressive level the setup took 2.9 s and a cycle 293 ms (with symmetric
   // hybrid Gauss-Seidel on both legs); with these settings 1.25 s and 50 ms.
   // The rigid motions as interpolation vectors (nodal coarsening, GM

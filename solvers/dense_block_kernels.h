@@ -12,8 +12,8 @@
 // take no lock and pack nothing, but run at a half to a third of BLAS's
 // speed on large blocks. Each operation runs as loops below the size where
 // the BLAS calls become faster with both cores calling them at once (the
-// factorization's case), measured by the `DenseBlock` benchmarks
-// (docs/performance.md): about 24 000 flops for an update (a 20-column
+// factorization's case), measured by the `DenseBlock` benchmarks:
+// about 24 000 flops for an update (a 20-column
 // supernode's by another's), 29 000 to 44 000 for a block's Cholesky
 // factorization (28 to 32 columns).
 namespace akvf {

@@ -127,8 +127,7 @@ namespace {
 // for its 4, 16, 48; the zero-fraction limits zrelax unchanged): fewer,
 // larger dense blocks, some explicit zeros in them, factored by
 // SupernodalFactorization on two cores. Measured with `akvf_benchmarks
-// --benchmark_filter='^(NumericFactorization|Solve)/'` (docs/performance.md,
-// "Small factors supernodal"): hilbert_b 10.4 -> 7.3-7.8 ms, cow_b 2.7 ->
+// --benchmark_filter='^(NumericFactorization|Solve)/'`: hilbert_b 10.4 -> 7.3-7.8 ms, cow_b 2.7 ->
 // 1.4-1.7 ms; supernodal with CHOLMOD's own limits was no faster on hilbert_b (11.1
 // ms), and three or four times its limits were slower than twice.
 // Above the switch CHOLMOD's analysis is kept: the relaxed merging made
@@ -147,7 +146,7 @@ class CholmodFactor final : public PermutedFactor {
 
  public:
   // cholmod_defaults: CHOLMOD's analysis as it is (the unit of
-  // docs/performance.md's speed table); otherwise ours (above).
+  // akvf_speed's table); otherwise ours (above).
   // relaxed_limit_bytes: the largest relaxed factor kept (0: kRelaxedShare
   // of the memory).
   CholmodFactor(bool cholmod_defaults, double relaxed_limit_bytes)

@@ -10,8 +10,8 @@
 // block is factored and the rows below it solved (dense_block_kernels.h:
 // CHOLMOD's BLAS and LAPACK calls, dsyrk, dgemm, dpotrf and dtrsm, for large
 // blocks, plain loops for small ones). CHOLMOD 3 runs that loop on one core;
-// on this 2-core machine its factorization of a large mesh's K used one core
-// (docs/performance.md). Here the same loop runs on two:
+// on this 2-core machine its factorization of a large mesh's K used one
+// core. Here the same loop runs on two:
 //  - below a cut of the elimination tree, two groups of disjoint subtrees
 //    (supernodal_tree.h) are factored at the same time, one per core; a
 //    subtree's supernodes update only each other and the top;
@@ -27,7 +27,7 @@
 // differently (tested: the solution within 1e-10 of CHOLMOD's). Splitting one
 // supernode's work between the cores (an update's rows, or the rows of its
 // triangular solve) changed the shapes of the BLAS calls and gained nothing
-// the branch concurrency did not: measured and left out (docs/performance.md).
+// the branch concurrency did not: measured and left out.
 #include <atomic>
 #include <vector>
 

@@ -37,8 +37,8 @@ struct ParamConfig {
   // placement; a file's texture coordinates) instead of Tutte and flaps.
   bool init_from_file = false;
   Eigen::MatrixXd start_uv;
-  // §5.4 flap optimization after the Tutte map (see docs/performance.md for
-  // the measurement behind the default).
+  // §5.4 flap optimization after the Tutte map (scripts/performance.sh
+  // measures the default).
   bool optimize_flaps = true;
   // Keep the map globally injective (framework/optimization/
   // injective_objective.h: no boundary vertex ever reaches a boundary edge

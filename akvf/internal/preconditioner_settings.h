@@ -17,7 +17,7 @@ struct PreconditionerSettings2D {
   AkvfOptions2D akvf;
   FactorOptions newton;  // factored every iteration unless reuse is set
   // The Newton phase of akvf-newton: reuses factorizations as AKVF does
-  // (docs/performance.md, "Factorization reuse in the Newton phase").
+  // (measured by akvf_speed).
   FactorOptions newton_phase = AkvfOptions2D{}.factor;
   FactorOptions laplacian;  // constant: factored once
   FactorOptions slim;       // factored every iteration unless reuse is set

@@ -371,7 +371,7 @@ void register_all() {
   // The paper's meshes whose K CHOLMOD alone would factor simplicially (L D
   // L^T on one core, below its supernodal switch), which SparseCholesky
   // analyzes again as supernodal with more merging: the factorization,
-  // solve and analysis there (docs/performance.md, "Small factors supernodal").
+  // solve and analysis there.
   for (const std::string mesh : {"hilbert_b.obj", "camel_b.obj", "cow_b.obj", "tricera_b.obj"}) {
     benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh, 0, false)
         ->Unit(benchmark::kMillisecond);
@@ -407,7 +407,7 @@ void register_all() {
   // than the mesh (fill), which is what the multigrid path is for. With the
   // per-element parts and a whole iteration at the same sizes, they say how
   // each part of an iteration grows from horse_b to 16 and 64 times its
-  // faces (docs/performance.md, "How an iteration's parts grow").
+  // faces.
   for (const int subdivide : {2, 3}) {
     const std::string name = "horse_b.obj/x" + std::to_string(1 << (2 * subdivide));
     benchmark::RegisterBenchmark(("KillingAssembly/" + name).c_str(), BM_KillingAssembly, "horse_b.obj", subdivide)

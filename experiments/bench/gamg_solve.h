@@ -2,7 +2,7 @@
 // PETSc's smoothed-aggregation multigrid (GAMG) around conjugate gradients,
 // for the micro-benchmarks only: the measurement behind the choice of
 // hypre's BoomerAMG for `--linear-solver amg` (issue 16 asks to choose
-// between them by measurement; docs/performance.md). Not part of the
+// between them by measurement). Not part of the
 // library. Built when PETSc is found at configure time (Debian's
 // petsc-dev, which scripts/setup.sh does not install: the measurement is
 // the only user).
@@ -11,8 +11,8 @@
 // map x (PETSc's MatNullSpaceCreateRigidBody from the vertex positions:
 // two translations and the rotation in 2D), which smoothed aggregation
 // interpolates exactly on every level; BoomerAMG as we use it has no such
-// input (docs/performance.md: with the rigid motions as interpolation
-// vectors it doubled its setup for no fewer iterations).
+// input (with the rigid motions as interpolation vectors it doubled its
+// setup for no fewer iterations).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>

@@ -16,7 +16,7 @@
 // CHOLMOD alone (its default analysis, simplicial below its supernodal
 // switch, its one-core factorization), the unit issue 14's targets were
 // first set in.
-// Prints a Markdown table (docs/performance.md).
+// Prints a Markdown table.
 //
 // Usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim] [--repeat N] [--only 2d|3d]
 #include <algorithm>

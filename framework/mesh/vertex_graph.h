@@ -19,8 +19,7 @@ struct UpperVertexGraph {
 };
 
 // From the elements (#E by N vertex indices, any N), by counting: no
-// triplet per pair (those took 3.4 GB at 10 M triangles; docs/performance.md,
-// "Memory at scale").
+// triplet per pair (those took 3.4 GB at 10 M triangles).
 UpperVertexGraph upper_vertex_graph(const Eigen::MatrixXi& elements, int num_vertices);
 
 }  // namespace akvf

@@ -5,8 +5,8 @@
 // Why: Debian 12's CHOLMOD is compiled to open an OpenMP region with 4
 // threads for every supernode, and OpenBLAS's workers spin-wait with
 // sched_yield between calls. On a 2-core machine the numeric factorization
-// of K then spends most of its time in futex and sched_yield calls
-// (docs/performance.md). Both libraries read their thread limits only when
+// of K then spends most of its time in futex and sched_yield calls.
+// Both libraries read their thread limits only when
 // they are loaded, before main() runs, so the only way for the program to
 // set them is its own environment at start-up: OMP_THREAD_LIMIT=1 and
 // OPENBLAS_NUM_THREADS=1 (TBB keeps all cores for assembly). Values the
