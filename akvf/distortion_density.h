@@ -3,12 +3,16 @@
 // element's Jacobian J (Dim x Dim). A density knows nothing of meshes; the
 // assembler (distortion_objective.h) sums A_hat_f D(J_f) over elements.
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <string>
 
 namespace akvf {
+
+// D(J) of an inverted or collapsed element (det J <= 0): the barrier's value.
+inline constexpr double kInvertedEnergy = std::numeric_limits<double>::infinity();
 
 template <int Dim>
 class DistortionDensity {

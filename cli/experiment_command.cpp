@@ -25,7 +25,7 @@ const char* kMergeUsage =
 const char* kReportUsage =
     "akvf experiment report RESULTS_DIR\n\n"
     "Writes table.md, table.csv, plots/*.svg and index.html again from the cases of a results folder.";
-const char* kUsage =
+const char* kExperimentUsage =
     "akvf experiment MANIFEST.json [--data-dir DIR] [--out-dir DIR] [--shard I/N] [--resume] [--views] [--threads N]\n"
     "akvf experiment merge RESULTS_DIR... [--out-dir DIR]\n"
     "akvf experiment report RESULTS_DIR\n\n"
@@ -59,7 +59,7 @@ std::string default_data_dir() {
 }  // namespace
 
 int experiment_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CommandLine cl(kUsage, {
+  CommandLine cl(kExperimentUsage, {
                              {"data-dir", "DIR", "the meshes (default $AKVF_DATA_DIR, else ../shared/meshes)"},
                              {"out-dir", "DIR", "results folder (default experiment-results/<manifest name>)"},
                              {"shard", "I/N", "run only cases I, I+N, I+2N, ... (1-based)"},

@@ -11,8 +11,6 @@ namespace akvf {
 
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 // SVD of J with U V^T a rotation (J is not inverted).
 struct Rotation {
   Eigen::Matrix3d U, V;
@@ -35,12 +33,12 @@ InvariantDerivatives2D Arap2D::derivatives(double s, double g) const {
 }
 
 double Arap3D::value(const Matrix& J) const {
-  if (!(J.determinant() > 0)) return kInfinity;
+  if (!(J.determinant() > 0)) return kInvertedEnergy;
   return (Rotation(J).sigma.array() - 1).square().sum();
 }
 
 double Arap3D::value_and_gradient(const Matrix& J, Matrix* dD_dJ) const {
-  if (!(J.determinant() > 0)) return kInfinity;
+  if (!(J.determinant() > 0)) return kInvertedEnergy;
   const Rotation polar(J);
   *dD_dJ = 2 * (J - polar.R());
   return (polar.sigma.array() - 1).square().sum();

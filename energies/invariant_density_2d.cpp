@@ -7,22 +7,20 @@ namespace akvf {
 
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// vec(J) and the cofactor c = d det / dvec(J), column-major.
-Eigen::Vector4d vec(const Eigen::Matrix2d& J) { return {J(0, 0), J(1, 0), J(0, 1), J(1, 1)}; }
-Eigen::Vector4d cofactor(const Eigen::Matrix2d& J) { return {J(1, 1), -J(0, 1), -J(1, 0), J(0, 0)}; }
+// vec_2d(J) and the cofactor c = d det / dvec(J), column-major.
+Eigen::Vector4d vec_2d(const Eigen::Matrix2d& J) { return {J(0, 0), J(1, 0), J(0, 1), J(1, 1)}; }
+Eigen::Vector4d cofactor_2d(const Eigen::Matrix2d& J) { return {J(1, 1), -J(0, 1), -J(1, 0), J(0, 0)}; }
 
 }  // namespace
 
 double InvariantDensity2D::value(const Matrix& J) const {
   const double g = J.determinant();
-  return g > 0 ? derivatives(J.squaredNorm(), g).f : kInfinity;
+  return g > 0 ? derivatives(J.squaredNorm(), g).f : kInvertedEnergy;
 }
 
 double InvariantDensity2D::value_and_gradient(const Matrix& J, Matrix* dD_dJ) const {
   const double g = J.determinant();
-  if (!(g > 0)) return kInfinity;
+  if (!(g > 0)) return kInvertedEnergy;
   const InvariantDerivatives2D d = derivatives(J.squaredNorm(), g);
   Matrix c;
   c << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
@@ -32,9 +30,9 @@ double InvariantDensity2D::value_and_gradient(const Matrix& J, Matrix* dD_dJ) co
 
 InvariantDensity2D::Hessian InvariantDensity2D::hessian(const Matrix& J) const {
   const InvariantDerivatives2D d = derivatives(J.squaredNorm(), J.determinant());
-  Eigen::Matrix<double, 4, 2> G;  // gradients of (s, g) with respect to vec(J)
-  G.col(0) = 2 * vec(J);
-  G.col(1) = cofactor(J);
+  Eigen::Matrix<double, 4, 2> G;  // gradients of (s, g) with respect to vec_2d(J)
+  G.col(0) = 2 * vec_2d(J);
+  G.col(1) = cofactor_2d(J);
   Eigen::Matrix2d second;
   second << d.f_ss, d.f_sg, d.f_sg, d.f_gg;
   Hessian det_hessian = Hessian::Zero();
@@ -72,7 +70,7 @@ InvariantDensity2D::Hessian InvariantDensity2D::filtered_hessian(const Matrix& J
     if (absolute) lambda = std::abs(lambda);
     if (!(lambda > 0)) return;
     const Eigen::Matrix2d mode = U * M * Vt;
-    const Eigen::Vector4d v = vec(mode);
+    const Eigen::Vector4d v = vec_2d(mode);
     P += lambda * v * v.transpose();
   };
   const double r = 1 / std::sqrt(2.0);

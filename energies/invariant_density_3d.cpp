@@ -15,11 +15,9 @@ using Matrix3 = Eigen::Matrix3d;
 using Vector9 = Eigen::Matrix<double, 9, 1>;
 using Matrix9 = Eigen::Matrix<double, 9, 9>;
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+Vector9 vec_3d(const Matrix3& M) { return Eigen::Map<const Vector9>(M.data()); }
 
-Vector9 vec(const Matrix3& M) { return Eigen::Map<const Vector9>(M.data()); }
-
-Matrix3 cofactor(const Matrix3& J) {
+Matrix3 cofactor_3d(const Matrix3& J) {
   Matrix3 C;
   C.col(0) = J.col(1).cross(J.col(2));
   C.col(1) = J.col(2).cross(J.col(0));
@@ -48,11 +46,11 @@ Matrix9 determinant_hessian(const Matrix3& J) {
   return H;
 }
 
-// Hessian of c = (s^2 - |J^T J|^2) / 2 in vec(J):
+// Hessian of c = (s^2 - |J^T J|^2) / 2 in vec_3d(J):
 //   4 j j^T + 2 s I - 2 [ (J^T J (x) I) + (J^T (x) J) K + (I (x) J J^T) ],
-// K the commutation matrix (vec(J^T) = K vec(J)).
+// K the commutation matrix (vec_3d(J^T) = K vec_3d(J)).
 Matrix9 cofactor_norm_hessian(const Matrix3& J) {
-  const Vector9 j = vec(J);
+  const Vector9 j = vec_3d(J);
   const double s = J.squaredNorm();
   const Matrix3 JtJ = J.transpose() * J, JJt = J * J.transpose();
   Matrix9 H = 4 * j * j.transpose() + 2 * s * Matrix9::Identity();
@@ -62,7 +60,7 @@ Matrix9 cofactor_norm_hessian(const Matrix3& J) {
       Matrix3 E = Matrix3::Zero();
       E(a, b) = 1;
       const Matrix3 d = E * JtJ + J * E.transpose() * J + JJt * E;
-      H.col(a + 3 * b) -= 2 * vec(d);
+      H.col(a + 3 * b) -= 2 * vec_3d(d);
     }
   return H;
 }
@@ -71,15 +69,15 @@ Matrix9 cofactor_norm_hessian(const Matrix3& J) {
 
 double InvariantDensity3D::value(const Matrix& J) const {
   const double g = J.determinant();
-  return g > 0 ? derivatives(J.squaredNorm(), cofactor_norm2(J), g).f : kInfinity;
+  return g > 0 ? derivatives(J.squaredNorm(), cofactor_norm2(J), g).f : kInvertedEnergy;
 }
 
 double InvariantDensity3D::value_and_gradient(const Matrix& J, Matrix* dD_dJ) const {
   const double g = J.determinant();
-  if (!(g > 0)) return kInfinity;
+  if (!(g > 0)) return kInvertedEnergy;
   const double s = J.squaredNorm();
   const InvariantDerivatives3D d = derivatives(s, cofactor_norm2(J), g);
-  *dD_dJ = d.f_s * 2 * J + d.f_c * (2 * s * J - 2 * J * J.transpose() * J) + d.f_g * cofactor(J);
+  *dD_dJ = d.f_s * 2 * J + d.f_c * (2 * s * J - 2 * J * J.transpose() * J) + d.f_g * cofactor_3d(J);
   return d.f;
 }
 
@@ -87,9 +85,9 @@ InvariantDensity3D::Hessian InvariantDensity3D::hessian(const Matrix& J) const {
   const double s = J.squaredNorm();
   const InvariantDerivatives3D d = derivatives(s, cofactor_norm2(J), J.determinant());
   Eigen::Matrix<double, 9, 3> G;
-  G.col(0) = 2 * vec(J);
-  G.col(1) = vec(2 * s * J - 2 * J * J.transpose() * J);
-  G.col(2) = vec(cofactor(J));
+  G.col(0) = 2 * vec_3d(J);
+  G.col(1) = vec_3d(2 * s * J - 2 * J * J.transpose() * J);
+  G.col(2) = vec_3d(cofactor_3d(J));
   Eigen::Matrix3d second;
   second << d.f_ss, d.f_sc, d.f_sg, d.f_sc, d.f_cc, d.f_cg, d.f_sg, d.f_cg, d.f_gg;
   return G * second * G.transpose() + 2 * d.f_s * Matrix9::Identity() + d.f_c * cofactor_norm_hessian(J) +

@@ -11,13 +11,13 @@ namespace akvf {
 
 namespace {
 using Vec2 = Eigen::Vector2d;
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 Vec2 point(const Eigen::VectorXd& x, int v) { return x.segment<2>(2 * v); }
 
 Box2 bounds(std::initializer_list<Vec2> points, double margin) {
-  Box2 box{kInfinity, kInfinity, -kInfinity, -kInfinity};
+  Box2 box{kUnbounded, kUnbounded, -kUnbounded, -kUnbounded};
   for (const Vec2& p : points) {
     box.min_x = std::min(box.min_x, p.x() - margin);
     box.min_y = std::min(box.min_y, p.y() - margin);
@@ -49,7 +49,7 @@ double vertex_edge_contact(const Vec2& p, const Vec2& dp, const Vec2& a, const V
     const double t = roots[k];
     if ((u + t * du).dot(w + t * dw) <= 0) return t;
   }
-  return kInfinity;
+  return kUnbounded;
 }
 
 // The parameter s in [0, 1] of the point (1 - s) a + s b of the segment a b
@@ -103,7 +103,7 @@ BoundaryContact::BoundaryContact(const std::vector<std::vector<int>>& loops, con
 }
 
 double BoundaryContact::first_contact_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d, double horizon) const {
-  if (!(horizon > 0) || !std::isfinite(horizon) || edges_.empty()) return kInfinity;
+  if (!(horizon > 0) || !std::isfinite(horizon) || edges_.empty()) return kUnbounded;
   // The sweep over [0, horizon] in slices along which no boundary vertex
   // moves much farther than a boundary edge is long: a box swept over the
   // whole horizon can cover most of the chart (a fifth of all vertex-edge
@@ -120,7 +120,7 @@ double BoundaryContact::first_contact_step(const Eigen::VectorXd& x, const Eigen
   const double wanted = length > 0 ? std::ceil(horizon * motion / length) : 1;
   const int slices = std::isfinite(wanted) ? static_cast<int>(std::clamp(wanted, 1.0, double(kMostSlices))) : 1;
   std::vector<Box2> swept_corners(corners_.size()), swept_edges(edges_.size());
-  double step = kInfinity;
+  double step = kUnbounded;
   for (int k = 0; k < slices; ++k) {
     const double t0 = horizon * k / slices, t1 = k + 1 == slices ? horizon : horizon * (k + 1) / slices;
     if (t0 > step) break;
@@ -208,7 +208,7 @@ double BoundaryContact::barrier(const Eigen::VectorXd& x, Eigen::VectorXd* gradi
   double value = 0;
   for_each_term(x, [&](const Term& term) {
     if (!(term.q > 0) || !std::isfinite(value)) {
-      value = kInfinity;
+      value = kUnbounded;
       return;
     }
     const double excess = term.reach / term.q - 1;

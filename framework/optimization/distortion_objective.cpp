@@ -14,8 +14,6 @@ namespace akvf {
 
 namespace {
 constexpr int kGrain = 1024;
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 template <class Body>
 void for_each_index(int n, const Body& body) {
   tbb::parallel_for(tbb::blocked_range<int>(0, n, kGrain), [&](const tbb::blocked_range<int>& r) {
@@ -97,7 +95,7 @@ double DistortionObjective<D>::max_feasible_step(const Eigen::VectorXd& x, const
     else
       element_value_[e] = tet_flip_step(Ds, Dd);
   });
-  double step = kInfinity;
+  double step = std::numeric_limits<double>::infinity();
   for (double t : element_value_) step = std::min(step, t);
   return step;
 }
