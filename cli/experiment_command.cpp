@@ -59,18 +59,19 @@ std::string default_data_dir() {
 }  // namespace
 
 int experiment_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CommandLine cl(kExperimentUsage, {
-                             {"data-dir", "DIR", "the meshes (default $AKVF_DATA_DIR, else ../shared/meshes)"},
-                             {"out-dir", "DIR", "results folder (default experiment-results/<manifest name>)"},
-                             {"shard", "I/N", "run only cases I, I+N, I+2N, ... (1-based)"},
-                             {"resume", "", "skip cases whose summary.json exists"},
-                             {"views", "",
-                              "write cases/<id>/view.html (akvf view) for parameterizations (decimated for display "
-                              "above " +
-                                  std::to_string(kViewFaceLimit) + " faces)"},
-                             {"threads", "N", "worker threads per case (default: all cores)"},
-                             {"help", "", "show this help"},
-                         });
+  CommandLine cl(kExperimentUsage,
+                 {
+                     {"data-dir", "DIR", "the meshes (default $AKVF_DATA_DIR, else ../shared/meshes)"},
+                     {"out-dir", "DIR", "results folder (default experiment-results/<manifest name>)"},
+                     {"shard", "I/N", "run only cases I, I+N, I+2N, ... (1-based)"},
+                     {"resume", "", "skip cases whose summary.json exists"},
+                     {"views", "",
+                      "write cases/<id>/view.html (akvf view) for parameterizations (decimated for display "
+                      "above " +
+                          std::to_string(kViewFaceLimit) + " faces)"},
+                     {"threads", "N", "worker threads per case (default: all cores)"},
+                     {"help", "", "show this help"},
+                 });
   cl.parse(args);
   if (cl.has("help") && cl.positional().empty()) {
     out << cl.help();
