@@ -117,8 +117,8 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
   fields->push_back(
       recomputes_start(number_field<O>("exponent", "exponent", "K", "exponent k of exp-symmetric-dirichlet and amips",
                                        &O::exponent, "> 0", [](double k) { return k > 0; })));
-  fields->push_back(text_field<O>("line_search", "line-search", "NAME", line_searches().names(),
-                                  &O::line_search, [](const O& o) { line_searches().require(o.line_search); }));
+  fields->push_back(text_field<O>("line_search", "line-search", "NAME", line_searches().names(), &O::line_search,
+                                  [](const O& o) { line_searches().require(o.line_search); }));
   fields->push_back(text_field<O>("acceleration", "acceleration", "auto|on|off",
                                   "AQP momentum: auto (on for the laplacian preconditioner only), on, off",
                                   &O::acceleration,
@@ -161,10 +161,9 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
     f.push_back(text_field<O>("solver", "solver", "NAME",
                               "descent (Algorithm 1 with --precond) or lbfgs (L-BFGS through Ceres)", &O::solver,
                               [](const O& o) { require_solver(o.solver); }));
-    f.push_back(
-        text_field<O>("precond", "precond", "NAME",
-                      preconditioners_2d().names() + " (or lbfgs, an alias of --solver lbfgs)",
-                      &O::preconditioner, [](const O& o) { require_method(o.preconditioner); }));
+    f.push_back(text_field<O>("precond", "precond", "NAME",
+                              preconditioners_2d().names() + " (or lbfgs, an alias of --solver lbfgs)",
+                              &O::preconditioner, [](const O& o) { require_method(o.preconditioner); }));
     add_common_fields(&f);
     f.push_back(number_field<O>("akvf_reuse", "akvf-reuse", "TAU",
                                 "AKVF: reuse the last factorization through CG to relative residual TAU "
@@ -238,9 +237,8 @@ const std::vector<OptionField<DeformOptions>>& deform_option_fields() {
     std::vector<OptionField<O>> f;
     f.push_back(text_field<O>("energy", "energy", "NAME", "3D distortion energy: " + energies_3d().names(), &O::energy,
                               [](const O& o) { energies_3d().require(o.energy); }));
-    f.push_back(text_field<O>("precond", "precond", "NAME",
-                              preconditioners_3d().names() + " (akvf: K + 1e-4 I)", &O::preconditioner,
-                              [](const O& o) { preconditioners_3d().require(o.preconditioner); }));
+    f.push_back(text_field<O>("precond", "precond", "NAME", preconditioners_3d().names() + " (akvf: K + 1e-4 I)",
+                              &O::preconditioner, [](const O& o) { preconditioners_3d().require(o.preconditioner); }));
     add_common_fields(&f);
     f.push_back(number_field<O>("weight", "weight", "W", "soft constraint weight w (at rest volume 1)", &O::weight,
                                 "> 0", [](double w) { return w > 0; }));

@@ -2,8 +2,8 @@
 #include <iostream>
 
 #include "cli/akvf_cli.h"
-#include "framework/process/native_runtime.h"
 #include "framework/process/interrupt.h"
+#include "framework/process/native_runtime.h"
 
 int main(int argc, char** argv) {
   akvf::configure_native_runtime(argv);

@@ -4,8 +4,8 @@
 #include <cctype>
 #include <filesystem>
 
-#include "io/png_image.h"
 #include "framework/process/output_file.h"
+#include "io/png_image.h"
 
 namespace akvf {
 

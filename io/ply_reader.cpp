@@ -269,9 +269,9 @@ std::vector<Element> read_header(const std::string& data, const std::string& fil
   // counted one by one.
   for (const Element& element : elements)
     if (element.count > 0 && element.properties.empty())
-      throw InputError(file, element.header_line,
-                       "element '" + element.name + "' declares " + std::to_string(element.count) +
-                           " rows but no property");
+      throw InputError(
+          file, element.header_line,
+          "element '" + element.name + "' declares " + std::to_string(element.count) + " rows but no property");
   *body_start = position;
   *body_line = line;
   return elements;

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "framework/process/output_file.h"
+#include "io/text_utilities.h"
 #include "pictures/distortion_color.h"
 #include "pictures/layout.h"
-#include "io/text_utilities.h"
-#include "framework/process/output_file.h"
 
 namespace akvf {
 

@@ -11,8 +11,8 @@
 
 #include "cli/akvf_cli.h"
 #include "cli/exit_codes.h"
-#include "io/text_utilities.h"
 #include "experiments/runner/manifest.h"
+#include "io/text_utilities.h"
 #include "solvers/algebraic_multigrid.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"

@@ -10,8 +10,8 @@
 
 #include "akvf/parameterize.h"
 #include "io/checker_texture.h"
-#include "pictures/display_decimation.h"
 #include "io/gltf_writer.h"
+#include "pictures/display_decimation.h"
 #include "pictures/html_view.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
