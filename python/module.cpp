@@ -20,6 +20,7 @@
 #include "akvf/internal/option_schema.h"
 #include "framework/optimization/trace_columns.h"
 #include "framework/process/interrupt.h"
+#include "io/mesh_text.h"
 #include "python/arrays.h"
 #include "python/errors.h"
 #include "python/extensions.h"
@@ -349,10 +350,10 @@ PYBIND11_MODULE(_akvf, m) {
       [](const std::string& path, const py::handle& V, const py::handle& F, const py::handle& uv,
          const py::object& uv_faces, int size, const std::string& title) {
         const ArrayMap map = array_map(V, F, uv, uv_faces);
-        const std::string kind = path.size() >= 4 ? path.substr(path.size() - 4) : "";
-        if (kind == ".svg" || kind == ".SVG") {
+        const std::string kind = akvf::lowercase_extension(path);
+        if (kind == ".svg") {
           akvf::write_layout_svg(path, map.mesh, map.uv, map.uv_faces, title);
-        } else if (kind == ".png" || kind == ".PNG") {
+        } else if (kind == ".png") {
           akvf::write_layout_png(path, map.mesh, map.uv, map.uv_faces, size);
         } else {
           throw akvf::OptionsError("cannot write " + path + ": the extension must be .png or .svg");

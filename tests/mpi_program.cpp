@@ -6,32 +6,19 @@
 
 #include <akvf/akvf.h>
 
-#include <cmath>
 #include <cstdio>
 #include <cstring>
+
+#include "tests/test_support.h"
 
 namespace {
 
 akvf::ParameterizeResult run(const char* linear_solver) {
-  const int n = 30;
-  Eigen::MatrixXd V(n * n, 3);
-  Eigen::MatrixXi F(2 * (n - 1) * (n - 1), 3);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const double x = i / (n - 1.0), y = j / (n - 1.0);
-      V.row(i * n + j) << x, y, 0.3 * std::sin(3 * x) * std::cos(2 * y);
-    }
-  int f = 0;
-  for (int i = 0; i + 1 < n; ++i)
-    for (int j = 0; j + 1 < n; ++j) {
-      const int a = i * n + j;
-      F.row(f++) << a, a + n, a + n + 1;
-      F.row(f++) << a, a + n + 1, a + 1;
-    }
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(30, 30);
   akvf::ParameterizeOptions options;
   options.linear_solver = linear_solver;
   options.max_iters = 20;
-  return akvf::parameterize(V, F, options);
+  return akvf::parameterize(mesh.V, mesh.F, options);
 }
 
 int initialized() {
