@@ -208,28 +208,14 @@ PreconditionerRegistry2D& mutable_preconditioners_2d() {
 
 const std::vector<std::pair<std::string, std::string>>& solvers() {
   static const std::vector<std::pair<std::string, std::string>> list = {
-      {kDescentSolver, "preconditioned flip-free descent (Algorithm 1) with --precond"},
-      {kLbfgsMethod, "L-BFGS through Ceres' GradientProblemSolver (Smith & Schaefer 2015 style), no preconditioner"},
+      {choice_name(Solver::kDescent), "preconditioned flip-free descent (Algorithm 1) with --precond"},
+      {choice_name(Solver::kLbfgs), "L-BFGS through Ceres' GradientProblemSolver (Smith & Schaefer 2015 style), no preconditioner"},
   };
   return list;
 }
 
-void require_solver(const std::string& name) {
-  for (const auto& [solver, description] : solvers())
-    if (solver == name) return;
-  throw OptionsError("unknown solver '" + name + "' (valid: " + kDescentSolver + ", " + kLbfgsMethod + ")");
-}
-
-void require_linear_solver(const std::string& name) {
-  if (name != "auto" && name != "cholmod" && name != "amg")
-    throw OptionsError("unknown linear solver '" + name + "' (valid: auto, cholmod, amg)");
-}
-
-LinearSolver linear_solver_for(const std::string& name) {
-  require_linear_solver(name);
-  if (name == "amg") return LinearSolver::kAmg;
-  if (name == "auto" && AlgebraicMultigrid::available()) return LinearSolver::kAuto;
-  return LinearSolver::kCholmod;
+LinearSolver available_linear_solver(LinearSolver solver) {
+  return solver == LinearSolver::kAuto && !AlgebraicMultigrid::available() ? LinearSolver::kCholmod : solver;
 }
 
 void require_method(const std::string& name) {
@@ -238,12 +224,10 @@ void require_method(const std::string& name) {
                      kLbfgsMethod + ")");
 }
 
-double acceleration_eta(const std::string& mode, bool momentum_by_default) {
+double acceleration_eta(Acceleration mode, bool momentum_by_default) {
   // AQP's acceleration parameter eta (theta = (1 - 1/sqrt(eta)) / (1 + 1/sqrt(eta)) = 0.82).
   constexpr double kAqpEta = 100;
-  if (mode != "auto" && mode != "on" && mode != "off")
-    throw OptionsError("acceleration must be auto, on or off, found '" + mode + "'");
-  return mode == "on" || (mode == "auto" && momentum_by_default) ? kAqpEta : 0;
+  return mode == Acceleration::kOn || (mode == Acceleration::kAuto && momentum_by_default) ? kAqpEta : 0;
 }
 
 LineSearchRegistry& mutable_line_searches() {

@@ -5,6 +5,7 @@
 // interfaces. User code adds its own through the mutable_ accessors.
 #include <memory>
 
+#include "akvf/choices.h"
 #include "akvf/distortion_density.h"
 #include "akvf/line_search.h"
 #include "akvf/mesh_objective.h"
@@ -36,33 +37,22 @@ using LineSearchRegistry = Registry<LineSearch, const LineSearchSettings&>;
 // flip-free descent of Algorithm 1 with any preconditioner, or L-BFGS through
 // Ceres, which takes no preconditioner. `--precond lbfgs` is kept as an alias
 // of `--solver lbfgs`.
-inline constexpr const char* kDescentSolver = "descent";
 inline constexpr const char* kLbfgsMethod = "lbfgs";
-// (name, one-line description) of each solver.
+// (name, one-line description) of each solver (choice_words(Solver)).
 const std::vector<std::pair<std::string, std::string>>& solvers();
-// OptionsError listing the solvers when `name` is none.
-void require_solver(const std::string& name);
 
 // OptionsError listing every valid --precond name (and the alias lbfgs) when
 // `name` is none.
 void require_method(const std::string& name);
 
-// --linear-solver: "cholmod" (sparse Cholesky), "amg" (CG with algebraic
-// multigrid, solvers/algebraic_multigrid.h) or "auto": CHOLMOD unless its
-// factor, known from the symbolic analysis, would take more than half the
-// physical memory, then multigrid (LinearSolver::kAuto,
-// preconditioners/factored_preconditioner.h; CHOLMOD when this build has no
-// multigrid). OptionsError for any other name.
-void require_linear_solver(const std::string& name);
-
 // The registry tag of preconditioners that AQP's momentum accompanies by
 // default (the Laplacian, as AQP pairs them).
 inline constexpr const char* kMomentumByDefault = "momentum-by-default";
 
-// OptimizerOptions::acceleration_eta for an --acceleration mode: "auto" turns
+// OptimizerOptions::acceleration_eta for an acceleration mode: kAuto turns
 // AQP's momentum (eta = 100) on for preconditioners tagged
-// kMomentumByDefault, "on" and "off" force it. OptionsError for any other mode.
-double acceleration_eta(const std::string& mode, bool momentum_by_default);
+// kMomentumByDefault, kOn and kOff force it.
+double acceleration_eta(Acceleration mode, bool momentum_by_default);
 
 using DensityRegistry3D = Registry<DistortionDensity<3>, const EnergySettings&>;
 using PreconditionerRegistry3D = Registry<Preconditioner, const MeshObjective3D&, const PreconditionerSettings3D&>;

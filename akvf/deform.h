@@ -26,7 +26,7 @@ struct DeformOptions {
   double exponent = 1;                         // k of the exponential energies; > 0
   std::string preconditioner = "akvf-newton";  // a name of preconditioners_3d()
   std::string line_search = "backtracking";
-  std::string acceleration = "auto";
+  Acceleration acceleration = Acceleration::kAuto;
   double weight = 1e5;           // w of the soft constraints (unit rest volume); > 0
   bool hard = false;             // hard constraints instead of the penalty
   double cg_tol = 0;             // > 0: Jacobi-CG to this relative residual instead of factoring
@@ -34,8 +34,8 @@ struct DeformOptions {
   double grad_tol = 1e-3;
   int max_iters = 100;  // Figure 8 runs 100 iterations
   double time_limit = std::numeric_limits<double>::infinity();
-  std::string linear_solver = "auto";  // cholmod, amg (algebraic multigrid) or auto (amg if the factor would not fit)
-  std::string eigen_filter = "auto";  // projected Newton's element Hessians: auto, clamp, abs, adaptive or exact
+  LinearSolver linear_solver = LinearSolver::kAuto;  // kAuto: kAmg only if the factor would not fit
+  EigenFilter eigen_filter = EigenFilter::kAuto;     // projected Newton's element Hessians
   int threads = 0;                     // 0 = all cores
   // As ParameterizeOptions::callbacks; x is interleaved x0 y0 z0 x1 ... at
   // the input's scale.

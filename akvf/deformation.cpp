@@ -18,7 +18,7 @@ namespace {
 // through the objective (DistortionObjective::added_hessian_diagonal).
 PreconditionerSettings3D preconditioner_settings(const DeformConfig& config) {
   PreconditionerSettings3D settings = config.preconditioner_settings;
-  settings.set_linear_solver(linear_solver_for(config.linear_solver));
+  settings.set_linear_solver(available_linear_solver(config.linear_solver));
   settings.akvf_newton_switch.backtracking_factor = config.line_search_settings.rho;
   if (config.akvf_as_written && !config.hard_constraints) {
     settings.akvf.include_problem_hessian = false;

@@ -1,5 +1,6 @@
 #include "akvf/internal/option_schema.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -104,6 +105,41 @@ OptionField<O> switch_field(std::string key, std::string flag, std::string value
           [](const O&, const std::string&) {}};
 }
 
+// The words of a choice's names, "a|b|c" (aliases left out).
+template <class Choice>
+std::string choice_names(const char* separator) {
+  std::string names;
+  std::vector<Choice> seen;
+  for (const ChoiceWord<Choice>& entry : choice_words(Choice{})) {
+    if (std::find(seen.begin(), seen.end(), entry.choice) != seen.end()) continue;
+    seen.push_back(entry.choice);
+    names += (names.empty() ? "" : separator) + std::string(entry.word);
+  }
+  return names;
+}
+
+// A fixed choice (akvf/choices.h), read from its words; `what` names it in
+// the error: "unknown cut 'x' (valid: none, auto)".
+template <class O, class Choice>
+OptionField<O> choice_field(std::string key, std::string flag, std::string what, std::string help,
+                            Choice O::*member) {
+  return {std::move(key),
+          std::move(flag),
+          choice_names<Choice>("|"),
+          OptionKind::kText,
+          std::move(help),
+          [member, what](O& o, const std::string& text) {
+            for (const ChoiceWord<Choice>& entry : choice_words(Choice{}))
+              if (text == entry.word) {
+                o.*member = entry.choice;
+                return;
+              }
+            throw OptionsError("unknown " + what + " '" + text + "' (valid: " + choice_names<Choice>(", ") + ")");
+          },
+          [member](const O& o) { return choice_name(o.*member); },
+          [](const O&, const std::string&) {}};
+}
+
 // The field, marked as one whose change recomputes the initial map.
 template <class O>
 OptionField<O> recomputes_start(OptionField<O> field) {
@@ -111,7 +147,7 @@ OptionField<O> recomputes_start(OptionField<O> field) {
   return field;
 }
 
-// Options both problems have, with the same meaning.
+// Options both problems have, with the same meaning (scope kBoth).
 template <class O>
 void add_common_fields(std::vector<OptionField<O>>* fields) {
   fields->push_back(
@@ -119,34 +155,42 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
                                        &O::exponent, "> 0", [](double k) { return k > 0; })));
   fields->push_back(text_field<O>("line_search", "line-search", "NAME", line_searches().names(), &O::line_search,
                                   [](const O& o) { line_searches().require(o.line_search); }));
-  fields->push_back(text_field<O>("acceleration", "acceleration", "auto|on|off",
-                                  "AQP momentum: auto (on for the laplacian preconditioner only), on, off",
-                                  &O::acceleration,
-                                  [](const O& o) { acceleration_eta(o.acceleration, false); }));  // checks the mode
+  fields->push_back(choice_field<O>("acceleration", "acceleration", "acceleration",
+                                    "AQP momentum: auto (on for the laplacian preconditioner only), on, off",
+                                    &O::acceleration));
   fields->push_back(number_field<O>("grad_tol", "grad-tol", "X", "stop when the gradient norm drops below X",
                                     &O::grad_tol, ">= 0", [](double x) { return x >= 0; }));
   fields->push_back(integer_field<O>("max_iters", "max-iters", "N", "stop after N iterations", &O::max_iters, ">= 0",
                                      [](int n) { return n >= 0; }));
   fields->push_back(number_field<O>("time_limit", "time-limit", "SECONDS", "stop after this much optimizer time",
                                     &O::time_limit, "> 0 seconds", [](double t) { return t > 0; }));
-  fields->push_back(text_field<O>("linear_solver", "linear-solver", "auto|cholmod|amg",
-                                  "linear systems: cholmod (sparse Cholesky), amg (CG with hypre's algebraic "
-                                  "multigrid), auto (cholmod unless its factor would take more than half the "
-                                  "memory, then amg)",
-                                  &O::linear_solver, [](const O& o) { require_linear_solver(o.linear_solver); }));
+  fields->push_back(choice_field<O>("linear_solver", "linear-solver", "linear solver",
+                                    "linear systems: cholmod (sparse Cholesky), amg (CG with hypre's algebraic "
+                                    "multigrid), auto (cholmod unless its factor would take more than half the "
+                                    "memory, then amg)",
+                                    &O::linear_solver));
   fields->push_back(
-      text_field<O>("eigen_filter", "eigen-filter", "auto|clamp|abs|adaptive|exact",
+      choice_field<O>("eigen_filter", "eigen-filter", "eigenvalue filter",
                     "projected Newton (newton, akvf-newton): the element Hessians' negative "
                     "eigenvalues clamped to 0, mirrored (abs), adaptive (Chen et al. 2024: clamp "
                     "while the last step's decrease matched the quadratic model to 1 %, else mirror), "
                     "or exact (not filtered while the Hessian is positive definite, else only partly: each element's "
                     "negative eigenvalues scaled by 15/16, 3/4 or 0, the least filtering that factors); "
                     "auto: clamp for newton, exact for akvf-newton's Newton phase",
-                    &O::eigen_filter, [](const O& o) {
-                      if (o.eigen_filter != "auto") parse_eigenvalue_filter(o.eigen_filter);
-                    }));
+                    &O::eigen_filter));
   fields->push_back(integer_field<O>("threads", "threads", "N", "worker threads (0 = all cores)", &O::threads,
                                      ">= 0 (0 = all cores)", [](int n) { return n >= 0; }));
+}
+
+// `fields` with every field that is not common marked as one of `scope`'s.
+template <class O>
+std::vector<OptionField<O>> only_for(OptionScope scope, std::vector<OptionField<O>> fields) {
+  std::vector<OptionField<O>> common;
+  add_common_fields(&common);
+  for (OptionField<O>& field : fields)
+    if (std::none_of(common.begin(), common.end(), [&](const auto& c) { return c.key == field.key; }))
+      field.scope = scope;
+  return fields;
 }
 
 }  // namespace
@@ -158,9 +202,8 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
     f.push_back(
         recomputes_start(text_field<O>("energy", "energy", "NAME", "distortion energy: " + energies_2d().names(),
                                        &O::energy, [](const O& o) { energies_2d().require(o.energy); })));
-    f.push_back(text_field<O>("solver", "solver", "NAME",
-                              "descent (Algorithm 1 with --precond) or lbfgs (L-BFGS through Ceres)", &O::solver,
-                              [](const O& o) { require_solver(o.solver); }));
+    f.push_back(choice_field<O>("solver", "solver", "solver",
+                                "descent (Algorithm 1 with --precond) or lbfgs (L-BFGS through Ceres)", &O::solver));
     f.push_back(text_field<O>("precond", "precond", "NAME",
                               preconditioners_2d().names() + " (or lbfgs, an alias of --solver lbfgs)",
                               &O::preconditioner, [](const O& o) { require_method(o.preconditioner); }));
@@ -169,54 +212,48 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                 "AKVF: reuse the last factorization through CG to relative residual TAU "
                                 "(0 = factor K every iteration, as in Algorithm 1)",
                                 &O::akvf_reuse, "in [0, 1)", [](double t) { return t >= 0 && t < 1; }));
-    f.push_back(
-        text_field<O>("newton_reuse", "newton-reuse", "auto|TAU",
-                      "projected Newton: reuse the last factorization through CG to relative residual TAU; "
-                      "auto: 0 for newton (factor every iteration), --akvf-reuse for the Newton phase of "
-                      "akvf-newton",
-                      &O::newton_reuse, [](const O& o) {
-                        double tau = -1;
-                        if (o.newton_reuse != "auto" && !(parse_real(o.newton_reuse, &tau) && tau >= 0 && tau < 1))
-                          throw OptionsError("option --newton-reuse must be auto or a number in [0, 1), found '" +
-                                             o.newton_reuse + "'");
-                      }));
+    f.push_back({"newton_reuse", "newton-reuse", "auto|TAU", OptionKind::kText,
+                 "projected Newton: reuse the last factorization through CG to relative residual TAU; "
+                 "auto: 0 for newton (factor every iteration), --akvf-reuse for the Newton phase of "
+                 "akvf-newton",
+                 [](O& o, const std::string& text) {
+                   double tau = -1;
+                   if (text == "auto")
+                     o.newton_reuse.reset();
+                   else if (parse_real(text, &tau))
+                     o.newton_reuse = tau;
+                   else
+                     throw OptionsError("'" + text + "' is neither auto nor a number");
+                 },
+                 [](const O& o) { return o.newton_reuse ? number_text(*o.newton_reuse) : std::string("auto"); },
+                 [](const O& o, const std::string& name) {
+                   if (o.newton_reuse && !(*o.newton_reuse >= 0 && *o.newton_reuse < 1))
+                     out_of_range(name, "auto or in [0, 1)", *o.newton_reuse);
+                 }});
     f.push_back(number_field<O>("ls_rho", "ls-rho", "X", "backtracking shrink factor (the paper's text says 0.9)",
                                 &O::ls_rho, "in (0, 1)", [](double r) { return r > 0 && r < 1; }));
     f.push_back(recomputes_start(
-        text_field<O>("init", "init", "NAME",
-                      "initial map: tutte (uniform weights), cotan, or file (the mesh file's texture "
-                      "coordinates: OBJ vt, PLY u,v, taken at the energy's best uniform scale)",
-                      &O::init, [](const O& o) {
-                        if (o.init != "file" && o.init != "tutte" && o.init != "uniform" && o.init != "cotan" &&
-                            o.init != "cotangent")
-                          throw OptionsError("unknown initialization '" + o.init + "' (valid: tutte, cotan, file)");
-                      })));
+        choice_field<O>("init", "init", "initialization",
+                        "initial map: tutte (uniform weights), cotan, or file (the mesh file's texture "
+                        "coordinates: OBJ vt, PLY u,v, taken at the energy's best uniform scale)",
+                        &O::init)));
     f.push_back(recomputes_start(
-        text_field<O>("cut", "cut", "none|auto",
-                      "auto cuts a closed, multi-boundary, higher-genus or multi-component mesh into disks "
-                      "(one chart per component, side by side); none refuses such meshes",
-                      &O::cut, [](const O& o) {
-                        if (o.cut != "none" && o.cut != "auto")
-                          throw OptionsError("unknown cut '" + o.cut + "' (valid: none, auto)");
-                      })));
+        choice_field<O>("cut", "cut", "cut",
+                        "auto cuts a closed, multi-boundary, higher-genus or multi-component mesh into disks "
+                        "(one chart per component, side by side); none refuses such meshes",
+                        &O::cut)));
     f.push_back(recomputes_start(
-        text_field<O>("repair", "repair", "auto|none",
-                      "auto opens edges shared by three or more faces and splits non-manifold vertices into "
-                      "one copy per fan of faces (reported; the UV is then per corner); none refuses such "
-                      "meshes",
-                      &O::repair, [](const O& o) {
-                        if (o.repair != "auto" && o.repair != "none")
-                          throw OptionsError("unknown repair '" + o.repair + "' (valid: auto, none)");
-                      })));
+        choice_field<O>("repair", "repair", "repair",
+                        "auto opens edges shared by three or more faces and splits non-manifold vertices into "
+                        "one copy per fan of faces (reported; the UV is then per corner); none refuses such "
+                        "meshes",
+                        &O::repair)));
     f.push_back(recomputes_start(
-        text_field<O>("injectivity", "injectivity", "global|local",
-                      "global keeps every chart's boundary from crossing itself (no overlap in UV: a "
-                      "contact-free step and a boundary barrier, Smith & Schaefer 2015); local keeps "
-                      "only every triangle positive, the paper's Algorithm 1",
-                      &O::injectivity, [](const O& o) {
-                        if (o.injectivity != "global" && o.injectivity != "local")
-                          throw OptionsError("unknown injectivity '" + o.injectivity + "' (valid: global, local)");
-                      })));
+        choice_field<O>("injectivity", "injectivity", "injectivity",
+                        "global keeps every chart's boundary from crossing itself (no overlap in UV: a "
+                        "contact-free step and a boundary barrier, Smith & Schaefer 2015); local keeps "
+                        "only every triangle positive, the paper's Algorithm 1",
+                        &O::injectivity)));
     OptionField<O> flaps =
         switch_field<O>("flaps", "flaps", "on|off", "flap optimization of Sec. 5.4 after the Tutte map", &O::flaps);
     flaps.kind = OptionKind::kText;  // --flaps on|off on the command line
@@ -226,7 +263,7 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                                   "iteration limit of the symmetric Dirichlet warm start of "
                                                   "energies that overflow at the initial map",
                                                   &O::warm_start_iters, ">= 0", [](int n) { return n >= 0; })));
-    return f;
+    return only_for(OptionScope::kParam, std::move(f));
   }();
   return fields;
 }
@@ -254,27 +291,39 @@ const std::vector<OptionField<DeformOptions>>& deform_option_fields() {
                                 "AKVF as Sec. 6.2 states it: K + c I without the constraints' Hessian or the "
                                 "energy scale (slow; for comparison, docs/design.md)",
                                 &O::akvf_as_written));
-    return f;
+    return only_for(OptionScope::kDeform, std::move(f));
   }();
   return fields;
 }
 
 namespace {
 
-template <class O>
-void reference_table(std::ostream& out, const std::vector<OptionField<O>>& fields, bool mark_restarts) {
+// A '|' inside a table cell would end it.
+std::string cell(std::string text) {
+  for (std::size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2)) text.insert(at, "\\");
+  return text;
+}
+
+std::string default_text(const std::string& value) { return value == "inf" ? "none" : value; }
+
+// The rows of `fields` in `scope`; `other` (the deform fields, for the common
+// table) gives a second default where the two problems' defaults differ.
+template <class O, class Other = O>
+void reference_rows(std::ostream& out, const std::vector<OptionField<O>>& fields, OptionScope scope,
+                    const std::vector<OptionField<Other>>* other = nullptr) {
   const O defaults;
+  const Other other_defaults;
   out << "| key (API field, manifest, Python) | command line | default | meaning |\n|---|---|---|---|\n";
-  // A '|' inside a cell would end it.
-  auto cell = [](std::string text) {
-    for (std::size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2)) text.insert(at, "\\");
-    return text;
-  };
   for (const auto& field : fields) {
-    const std::string value = field.format(defaults);
+    if (field.scope != scope) continue;
+    std::string value = default_text(field.format(defaults));
+    if (other) {
+      for (const auto& o : *other)
+        if (o.key == field.key && default_text(o.format(other_defaults)) != value)
+          value += " (param), " + default_text(o.format(other_defaults)) + " (deform)";
+    }
     out << "| `" << field.key << "` | `--" << field.flag << cell(field.value_name.empty() ? "" : " " + field.value_name)
-        << "` | " << (value == "inf" ? "none" : value) << " | " << cell(field.help)
-        << (mark_restarts && field.recomputes_start ? " (*)" : "") << " |\n";
+        << "` | " << value << " | " << cell(field.help) << (field.recomputes_start ? " (*)" : "") << " |\n";
   }
 }
 
@@ -284,13 +333,17 @@ std::string options_reference_markdown() {
   std::ostringstream out;
   out << "# Options reference\n\n"
          "Generated from the options schema (`akvf/option_schema.cpp`) by `akvf list --options`; a test "
-         "checks that this file is what the command prints. Each key is a field of the API's options (the "
-         "API field for `precond` is `preconditioner`), a manifest key and a command-line flag.\n\n"
-         "## `akvf param` and `akvf::ParameterizeOptions`\n\n";
-  reference_table(out, parameterize_option_fields(), true);
+         "checks that this file is what the command prints. Each key is a field of the API's options "
+         "(`akvf::ParameterizeOptions`, `akvf::DeformOptions`; the API field for `precond` is `preconditioner`, "
+         "and fixed choices are the enums of `<akvf/choices.h>`), a manifest key, a Python keyword and a "
+         "command-line flag.\n\n"
+         "## Both problems (`akvf param` and `akvf deform`)\n\n";
+  reference_rows(out, parameterize_option_fields(), OptionScope::kBoth, &deform_option_fields());
+  out << "\n## `akvf param` only\n\n";
+  reference_rows(out, parameterize_option_fields(), OptionScope::kParam);
   out << "\n(*) Changing it in `Parameterizer::set_options` recomputes the initial map; other options keep it.\n"
-         "\n## `akvf deform` and `akvf::DeformOptions`\n\n";
-  reference_table(out, deform_option_fields(), false);
+         "\n## `akvf deform` only\n\n";
+  reference_rows(out, deform_option_fields(), OptionScope::kDeform);
   out << "\nManifests use the same keys (`docs/experiments.md`); their `time_limit` defaults to 60 s.\n";
   return out.str();
 }

@@ -2,18 +2,20 @@
 
 #include "akvf/catalog.h"
 #include "akvf/error.h"
-#include "io/text_reader.h"
 
 namespace akvf {
 namespace {
 
-// --eigen-filter auto keeps each method's own (newton clamps, as the
+// EigenFilter::kAuto keeps each method's own (newton clamps, as the
 // literature's projected Newton does; akvf-newton's Newton phase uses the
 // exact Hessian while it is positive definite); a named filter applies to both.
 template <class Settings>
-void set_eigen_filters(const std::string& name, Settings* settings) {
-  if (name == "auto") return;
-  settings->newton_filter = settings->newton_phase_filter = parse_eigenvalue_filter(name);
+void set_eigen_filters(EigenFilter filter, Settings* settings) {
+  if (filter == EigenFilter::kAuto) return;
+  settings->newton_filter = settings->newton_phase_filter = filter == EigenFilter::kClamp      ? EigenvalueFilter::kClamp
+                                                            : filter == EigenFilter::kAbsolute ? EigenvalueFilter::kAbsolute
+                                                            : filter == EigenFilter::kAdaptive ? EigenvalueFilter::kAdaptive
+                                                                                               : EigenvalueFilter::kExact;
 }
 
 }  // namespace
@@ -22,28 +24,24 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   ParamConfig c;
   c.energy = o.energy;
   c.energy_settings.exponent = o.exponent;
-  c.solver = o.preconditioner == kLbfgsMethod ? kLbfgsMethod : o.solver;  // --precond lbfgs: the alias
+  c.solver = o.preconditioner == kLbfgsMethod ? Solver::kLbfgs : o.solver;  // --precond lbfgs: the alias
   c.preconditioner = o.preconditioner;
   c.line_search = o.line_search;
   c.acceleration = o.acceleration;
   c.preconditioner_settings.akvf.factor.reuse_tolerance = o.akvf_reuse;
   // --newton-reuse auto: plain newton factors every iteration (the
   // literature's method); akvf-newton's Newton phase reuses as AKVF does.
-  const bool automatic = o.newton_reuse == "auto";
-  double tau = 0;
-  if (!automatic) parse_real(o.newton_reuse, &tau);  // checked by the options schema
-  c.preconditioner_settings.newton.reuse_tolerance = tau;
+  c.preconditioner_settings.newton.reuse_tolerance = o.newton_reuse.value_or(0);
   c.preconditioner_settings.newton_phase = c.preconditioner_settings.newton;
-  c.preconditioner_settings.newton_phase.reuse_tolerance =
-      automatic ? o.akvf_reuse : c.preconditioner_settings.newton.reuse_tolerance;
+  c.preconditioner_settings.newton_phase.reuse_tolerance = o.newton_reuse.value_or(o.akvf_reuse);
   c.line_search_settings.rho = o.ls_rho;
   set_eigen_filters(o.eigen_filter, &c.preconditioner_settings);
-  c.init_from_file = o.init == "file";
-  if (!c.init_from_file) c.init = parse_tutte_weights(o.init);
+  c.init_from_file = o.init == InitialMap::kFile;
+  c.init = o.init == InitialMap::kCotan ? TutteWeights::kCotangent : TutteWeights::kUniform;
   c.optimize_flaps = o.flaps;
-  c.global_injectivity = o.injectivity == "global";
-  c.cut = o.cut == "auto";
-  c.repair = o.repair == "auto";
+  c.global_injectivity = o.injectivity == Injectivity::kGlobal;
+  c.cut = o.cut == Cut::kAuto;
+  c.repair = o.repair == Repair::kAuto;
   c.optimizer.gradient_tolerance = o.grad_tol;
   c.optimizer.max_iterations = o.max_iters;
   c.optimizer.time_limit = o.time_limit;

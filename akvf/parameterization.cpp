@@ -108,9 +108,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   if (!config.line_search_settings.is_valid(&invalid)) throw OptionsError(invalid);
   // Resolve names first so a typo fails before any work.
   std::shared_ptr<const DistortionDensity2D> density = energies_2d().create(config.energy, config.energy_settings);
-  require_solver(config.solver);
   require_method(config.preconditioner);
-  acceleration_eta(config.acceleration, false);  // validates the mode
   line_searches().require(config.line_search);
 
   ParamSetup setup;
@@ -194,13 +192,13 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
   OptimizerOptions optimizer = config.optimizer;
   optimizer.acceleration_eta =
       acceleration_eta(config.acceleration, preconditioners_2d().has_tag(config.preconditioner, kMomentumByDefault));
-  if (config.solver == kLbfgsMethod || config.preconditioner == kLbfgsMethod) {
+  if (config.solver == Solver::kLbfgs || config.preconditioner == kLbfgsMethod) {
     run.preconditioner_name = kLbfgsMethod;
     run.result = minimize_lbfgs(objective, setup.x0, config.optimizer, {}, callbacks);  // no momentum
     return run;
   }
   PreconditionerSettings2D settings = config.preconditioner_settings;
-  settings.set_linear_solver(linear_solver_for(config.linear_solver));
+  settings.set_linear_solver(available_linear_solver(config.linear_solver));
   settings.share_vertex_ordering(setup.vertex_ordering);
   settings.akvf_newton_switch.backtracking_factor = config.line_search_settings.rho;
   std::unique_ptr<Preconditioner> preconditioner =

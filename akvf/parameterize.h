@@ -14,9 +14,11 @@
 #include <Eigen/Core>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "akvf/choices.h"
 #include "akvf/mesh.h"
 #include "akvf/optimizer.h"
 #include "akvf/preconditioner.h"
@@ -28,29 +30,29 @@ namespace akvf {
 struct ParameterizeOptions {
   std::string energy = "symmetric-dirichlet";  // a name of energies_2d(), built in or registered
   double exponent = 1;                         // k of exp-symmetric-dirichlet and amips; > 0
-  std::string solver = "descent";              // "descent" (Algorithm 1 with `preconditioner`) or "lbfgs"
+  Solver solver = Solver::kDescent;            // Algorithm 1 with `preconditioner`, or L-BFGS
   std::string preconditioner = "akvf-newton";  // a name of preconditioners_2d(); "lbfgs" = solver lbfgs
   std::string line_search = "backtracking";    // or "wolfe-bisection"
-  std::string acceleration = "auto";           // AQP momentum: auto (laplacian only), on, off
+  Acceleration acceleration = Acceleration::kAuto;  // AQP momentum (kAuto: the laplacian only)
   double akvf_reuse = 0.03;                    // AKVF: reuse the last factor through CG to this residual; 0 = never
-  std::string newton_reuse = "auto";           // projected Newton's reuse tolerance, or "auto": 0 for newton,
-                                               // akvf_reuse for the Newton phase of akvf-newton
+  std::optional<double> newton_reuse;          // projected Newton's reuse tolerance; none ("auto"): 0 for
+                                               // newton, akvf_reuse for the Newton phase of akvf-newton
   double ls_rho = 0.5;                         // backtracking shrink factor in (0, 1)
-  std::string init = "tutte";                  // initial map: tutte (uniform weights), cotan; "file" is the
-                                               // command line's (the API takes Parameterizer::solve(uv0))
-  std::string cut = "none";                    // "auto": cut closed / multi-boundary / higher-genus /
+  InitialMap init = InitialMap::kTutte;        // kFile is the command line's (the API takes
+                                               // Parameterizer::solve(uv0))
+  Cut cut = Cut::kNone;                        // kAuto: cut closed / multi-boundary / higher-genus /
                                                // multi-component meshes into disk charts (uv_faces)
-  std::string repair = "auto";                 // "auto": open edges of 3+ faces, split non-manifold vertices
-                                               // (per-corner uv_faces); "none": refuse such meshes
+  Repair repair = Repair::kAuto;               // kAuto: open edges of 3+ faces, split non-manifold vertices
+                                               // (per-corner uv_faces); kNone: refuse such meshes
   bool flaps = true;                           // flap optimization of §5.4 after the Tutte map
-  std::string injectivity = "global";          // "global": no UV overlap (boundary contact-free);
-                                               // "local": flip-free only, the paper's Algorithm 1
+  Injectivity injectivity = Injectivity::kGlobal;  // kGlobal: no UV overlap (boundary contact-free);
+                                                 // kLocal: flip-free only, the paper's Algorithm 1
   double grad_tol = 1e-3;                      // converged when ||grad E|| < grad_tol (area-1 units)
   int max_iters = 1000;                        // >= 0
   double time_limit = std::numeric_limits<double>::infinity();  // optimizer seconds, > 0
   int warm_start_iters = 1000;         // limit of the symmetric Dirichlet warm start of overflowing energies
-  std::string linear_solver = "auto";  // cholmod, amg (algebraic multigrid) or auto (amg if the factor would not fit)
-  std::string eigen_filter = "auto";  // projected Newton's element Hessians: auto, clamp, abs, adaptive or exact
+  LinearSolver linear_solver = LinearSolver::kAuto;  // kAuto: kAmg only if the factor would not fit
+  EigenFilter eigen_filter = EigenFilter::kAuto;     // projected Newton's element Hessians
   int threads = 0;                     // worker threads for this call; 0 = all cores
   // Called after every iteration (row 0 = the initial map) with the summary
   // and the current map (interleaved u0 v0 u1 v1 ..., area-1 units; use

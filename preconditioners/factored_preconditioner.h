@@ -21,17 +21,17 @@
 // tikhonov = 1e-12 leaves a margin of 10^4 over u. A larger shift is not
 // harmless: it damps every direction whose eigenvalue is not far above it.
 // Long thin regions bend with eigenvalues of K below 1e-8 * mean(diag K):
-// with the former 1e-8 the bending of hilbert_b (a strip folded into a
-// Hilbert curve) converged linearly, 29 AKVF iterations to the gradient
+// a shift of 1e-8 makes the bending of hilbert_b (a strip folded into a
+// Hilbert curve) converge linearly, 29 AKVF iterations to the gradient
 // tolerance instead of 15. Should rounding still tip
 // a pivot below zero, the factorization is retried with a shift 100 times
 // larger, up to max_tikhonov (kept for the later factorizations); a matrix
 // that fails even then is not positive semidefinite, and the error stands.
 // The iterative solves (multigrid, Jacobi CG) keep iterative_tikhonov = 1e-8:
 // stopped at a relative residual of 1e-2, they leave the softest modes
-// unresolved whatever the shift, and the smaller one only slowed their CG
+// unresolved whatever the shift, and a smaller one only slows their CG
 // (hilbert_b with multigrid: 19432 CG iterations in 70 AKVF iterations
-// instead of 7851 in 40).
+// with 1e-12 against 7851 in 40).
 //
 // Reuse (tau > 0). Before factoring P(x), try CG on P(x) d = g preconditioned
 // by the last factor, projected so that neither the old factor's response to
@@ -74,6 +74,7 @@
 #include <memory>
 #include <string>
 
+#include "akvf/choices.h"
 #include "akvf/mesh_objective.h"
 #include "akvf/motion_bases.h"
 #include "akvf/preconditioner.h"
@@ -83,11 +84,6 @@
 #include "solvers/symbolic_analysis_cache.h"
 
 namespace akvf {
-
-// How P's systems are solved: CHOLMOD's sparse Cholesky, or conjugate
-// gradients preconditioned by algebraic multigrid (scales to millions of
-// unknowns: no fill).
-enum class LinearSolver { kCholmod, kAmg, kAuto };
 
 struct FactorOptions {
   LinearSolver linear_solver = LinearSolver::kCholmod;

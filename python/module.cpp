@@ -296,11 +296,13 @@ ArrayMap array_map(const py::handle& V, const py::handle& F, const py::handle& u
 template <class Options>
 py::list option_list(const std::vector<akvf::OptionField<Options>>& fields) {
   static const char* kinds[] = {"text", "number", "integer", "switch"};
+  static const char* scopes[] = {"param", "deform", "both"};
   py::list list;
   const Options defaults;
   for (const auto& field : fields)
     list.append(py::dict("key"_a = field.key, "kind"_a = kinds[static_cast<int>(field.kind)],
                          "default"_a = field.format(defaults), "flag"_a = "--" + field.flag, "help"_a = field.help,
+                         "values"_a = field.value_name, "scope"_a = scopes[static_cast<int>(field.scope)],
                          "recomputes_start"_a = field.recomputes_start));
   return list;
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The cost of global injectivity (docs/notes/2026-11-26-injectivity.md): every
+# The cost of global injectivity (docs/design.md, "Global injectivity"): every
 # shared disk mesh parameterized with the default method, flip-free only
 # (--injectivity local, the paper's Algorithm 1) and globally injective (the
 # default), as a Markdown table of iterations, optimizer seconds, the final

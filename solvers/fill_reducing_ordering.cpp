@@ -41,9 +41,8 @@ bool use_metis(double amd_flops, double graph_nonzeros) { return amd_flops > 700
 // (Two METIS orderings must not run at once, e.g. of the two halves left by
 // a top separator: METIS draws from libc's rand(), one state for the
 // process, so concurrent calls interleave their draws and the ordering, and
-// with it the factor's rounding, changes from run to run. Measured on
-// 2026-11-25: horse_b x16's factor had 39.92 M, 39.99 M and 39.93 M entries
-// in three runs.)
+// with it the factor's rounding, changes from run to run: horse_b x16's
+// factor had 39.92 M, 39.99 M and 39.93 M entries in three such runs.)
 bool start_metis_early(int blocks) { return blocks >= (1 << 17); }
 
 // CHOLMOD's analysis of the graph with `method` (CHOLMOD_AMD, CHOLMOD_METIS,

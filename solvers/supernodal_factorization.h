@@ -22,9 +22,9 @@
 // first: every link is keyed by when CHOLMOD's one loop would have made it),
 // and each block operation's arithmetic depends on its shape only, so the
 // factor has the same bits whatever the number of threads and their timing
-// (tests/test_sparse_cholesky.cpp). Until 2026-11-25 every block went to
-// BLAS and the factor had CHOLMOD's bits; the small blocks' loops round
-// differently (tested: the solution within 1e-10 of CHOLMOD's). Splitting one
+// (tests/test_sparse_cholesky.cpp). The small blocks' loops round
+// differently from BLAS, so the factor agrees with CHOLMOD's to rounding
+// (tested: the solution within 1e-10 of CHOLMOD's). Splitting one
 // supernode's work between the cores (an update's rows, or the rows of its
 // triangular solve) changed the shapes of the BLAS calls and gained nothing
 // the branch concurrency did not: measured and left out.

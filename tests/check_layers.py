@@ -9,7 +9,7 @@ import sys
 # The public headers every part may include: the vocabulary (types,
 # interfaces, errors, file formats) that the facade's signatures use.
 # akvf/*.h that are not listed here are the facade, the top of the library.
-VOCABULARY = {"autodiff_density.h", "backtracking_line_search.h", "constrained_objective.h", "distortion_density.h",
+VOCABULARY = {"autodiff_density.h", "backtracking_line_search.h", "choices.h", "constrained_objective.h", "distortion_density.h",
               "error.h", "line_search.h", "mesh.h", "mesh_io.h", "mesh_objective.h", "motion_bases.h",
               "obj_passthrough.h", "objective.h", "optimizer.h", "position_constraints.h", "preconditioner.h",
               "registry.h", "rest_geometry.h", "tet_mesh_io.h", "version.h"}

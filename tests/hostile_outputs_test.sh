@@ -88,7 +88,7 @@ expect 0 "plot --out FIFO" "$akvf" plot trace.csv --out pipe
 wait
 [ -p pipe ] && grep -q '<svg' from_pipe || fail "plot --out FIFO"
 
-# 3. A character device is written in place (as root this is where /dev/null used to be replaced).
+# 3. A character device is written in place, never renamed over (as root a rename would replace /dev/null).
 for out in "--out /dev/null" "--trace /dev/null" "--svg /dev/null" "--png /dev/null" "--summary /dev/null" \
   "--view /dev/null"; do
   expect 0 "param $out" "$akvf" param m.obj -q $out

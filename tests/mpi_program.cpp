@@ -13,7 +13,7 @@
 
 namespace {
 
-akvf::ParameterizeResult run(const char* linear_solver) {
+akvf::ParameterizeResult run(akvf::LinearSolver linear_solver) {
   const akvf::TriMesh mesh = akvf::test::bumpy_disk(30, 30);
   akvf::ParameterizeOptions options;
   options.linear_solver = linear_solver;
@@ -32,7 +32,7 @@ int initialized() {
 int main(int argc, char** argv) {
   const bool own = argc > 1 && std::strcmp(argv[1], "own") == 0;
   if (!own) {  // a program without MPI: the CHOLMOD path leaves it alone
-    run("cholmod");
+    run(akvf::LinearSolver::kCholmod);
     if (initialized()) {
       std::printf("FAIL: a CHOLMOD run initialized MPI\n");
       return 1;
@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
   }
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided);
-  const akvf::ParameterizeResult r = run("amg");
+  const akvf::ParameterizeResult r = run(akvf::LinearSolver::kAmg);
   if (r.statistics.preconditioner.multigrid_setups == 0) {
     std::printf("FAIL: the multigrid path was not taken\n");
     return 1;

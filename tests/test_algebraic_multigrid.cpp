@@ -7,6 +7,7 @@
 
 #include "akvf/catalog.h"
 #include "akvf/deform.h"
+#include "akvf/internal/option_schema.h"
 #include "akvf/internal/parameterization.h"
 #include "akvf/internal/preconditioner_settings.h"
 #include "akvf/motion_bases.h"
@@ -79,7 +80,7 @@ TEST_CASE("AKVF with the multigrid solve: a direction within the tolerance of K'
     CHECK_THROWS_AS(akvf::parameterize(mesh.V, mesh.F,
                                        [] {
                                          akvf::ParameterizeOptions o;
-                                         o.linear_solver = "amg";
+                                         o.linear_solver = akvf::LinearSolver::kAmg;
                                          return o;
                                        }()),
                     akvf::OptionsError);
@@ -128,9 +129,9 @@ TEST_CASE("every preconditioner with --linear-solver amg reaches the Cholesky ru
     options.preconditioner = method;
     options.grad_tol = 1e-5;
     options.max_iters = 3000;
-    options.linear_solver = "cholmod";
+    options.linear_solver = akvf::LinearSolver::kCholmod;
     const akvf::ParameterizeResult cholmod = akvf::parameterize(mesh.V, mesh.F, options);
-    options.linear_solver = "amg";
+    options.linear_solver = akvf::LinearSolver::kAmg;
     const akvf::ParameterizeResult amg = akvf::parameterize(mesh.V, mesh.F, options);
     CHECK(cholmod.status == akvf::TerminationStatus::kConverged);
     CHECK(amg.status == akvf::TerminationStatus::kConverged);
@@ -162,9 +163,9 @@ TEST_CASE("3D deformation with --linear-solver amg: the Cholesky runs' energy, n
       options.hard = hard;
       options.grad_tol = 1e-6;
       options.max_iters = 2000;
-      options.linear_solver = "cholmod";
+      options.linear_solver = akvf::LinearSolver::kCholmod;
       const akvf::DeformResult cholmod = akvf::deform(mesh.V, mesh.T, constraints, options);
-      options.linear_solver = "amg";
+      options.linear_solver = akvf::LinearSolver::kAmg;
       const akvf::DeformResult amg = akvf::deform(mesh.V, mesh.T, constraints, options);
       CHECK(akvf::is_normal_termination(amg.status));
       CHECK(amg.energy() == doctest::Approx(cholmod.energy()).epsilon(1e-6));
@@ -175,17 +176,16 @@ TEST_CASE("3D deformation with --linear-solver amg: the Cholesky runs' energy, n
 }
 
 TEST_CASE("--linear-solver: names checked, auto decides from the factor's size when multigrid is built in") {
-  CHECK(akvf::test::error_message([] { akvf::require_linear_solver("umfpack"); }) ==
-        "unknown linear solver 'umfpack' (valid: auto, cholmod, amg)");
-  CHECK(akvf::linear_solver_for("cholmod") == akvf::LinearSolver::kCholmod);
-  CHECK(akvf::linear_solver_for("amg") == akvf::LinearSolver::kAmg);
-  CHECK(akvf::linear_solver_for("auto") ==
-        (akvf::AlgebraicMultigrid::available() ? akvf::LinearSolver::kAuto : akvf::LinearSolver::kCholmod));
   akvf::ParameterizeOptions options;
-  options.linear_solver = "hypre";
-  std::string error;
-  CHECK_FALSE(options.is_valid(&error));
-  CHECK(error.find("unknown linear solver 'hypre'") != std::string::npos);
+  CHECK(akvf::test::error_message([&] {
+          akvf::set_option_text(akvf::parameterize_option_fields(), "linear_solver", "umfpack", &options);
+        }) == "unknown linear solver 'umfpack' (valid: auto, cholmod, amg)");
+  akvf::set_option_text(akvf::parameterize_option_fields(), "linear_solver", "amg", &options);
+  CHECK(options.linear_solver == akvf::LinearSolver::kAmg);
+  CHECK(akvf::available_linear_solver(akvf::LinearSolver::kCholmod) == akvf::LinearSolver::kCholmod);
+  CHECK(akvf::available_linear_solver(akvf::LinearSolver::kAmg) == akvf::LinearSolver::kAmg);
+  CHECK(akvf::available_linear_solver(akvf::LinearSolver::kAuto) ==
+        (akvf::AlgebraicMultigrid::available() ? akvf::LinearSolver::kAuto : akvf::LinearSolver::kCholmod));
 }
 
 TEST_CASE("auto: CHOLMOD while the factor fits the limit, multigrid (and no kept analysis) beyond it") {

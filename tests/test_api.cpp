@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "akvf/akvf.h"
+#include "akvf/internal/option_schema.h"
 #include "cli/akvf_cli.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
@@ -132,14 +133,24 @@ TEST_CASE("options are validated in one place, with the messages the command lin
   options.threads = -1;
   CHECK_FALSE(options.is_valid(&error));
   options = {};
-  options.init = "harmonic";
-  CHECK_FALSE(options.is_valid(&error));
+  CHECK(akvf::test::error_message([&] {
+          akvf::set_option_text(akvf::parameterize_option_fields(), "init", "harmonic", &options);
+        }) == "unknown initialization 'harmonic' (valid: tutte, cotan, file)");
+  CHECK(akvf::test::error_message([&] {
+          akvf::set_option_text(akvf::parameterize_option_fields(), "acceleration", "sometimes", &options);
+        }) == "unknown acceleration 'sometimes' (valid: auto, on, off)");
+  akvf::set_option_text(akvf::parameterize_option_fields(), "init", "cotangent", &options);  // an alias
+  CHECK(options.init == akvf::InitialMap::kCotan);
+  CHECK(akvf::choice_name(options.init) == "cotan");
   akvf::DeformOptions deform;
   CHECK(deform.is_valid());
   deform.weight = 0;
   CHECK_FALSE(deform.is_valid(&error));
   CHECK(error == "weight must be > 0, found 0");
   const akvf::TriMesh mesh = akvf::test::bumpy_disk(5, 5);
+  options.newton_reuse = 1.5;
+  CHECK_FALSE(options.is_valid(&error));
+  CHECK(error == "newton_reuse must be auto or in [0, 1), found 1.5");
   CHECK_THROWS_AS(akvf::parameterize(mesh.V, mesh.F, options), akvf::OptionsError);
 }
 

@@ -102,7 +102,7 @@ TEST_CASE("cut meshes parameterize flip-free at every iterate, charts side by si
   for (const Case& c : cases()) {
     CAPTURE(c.name);
     akvf::ParameterizeOptions options;
-    options.cut = "auto";
+    options.cut = akvf::Cut::kAuto;
     options.max_iters = 300;
     const akvf::ParameterizeResult r = akvf::parameterize(c.mesh.V, c.mesh.F, options);
     CHECK(akvf::is_normal_termination(r.status));
@@ -126,7 +126,7 @@ TEST_CASE("without the cut the default is unchanged: uv per vertex, uv_faces = F
   const TriMesh grid = akvf::test::bumpy_disk(8, 8);
   akvf::ParameterizeOptions options;
   const akvf::ParameterizeResult plain = akvf::parameterize(grid.V, grid.F, options);
-  options.cut = "auto";
+  options.cut = akvf::Cut::kAuto;
   const akvf::ParameterizeResult cut = akvf::parameterize(grid.V, grid.F, options);
   CHECK(plain.uv_faces == grid.F);
   CHECK(cut.uv_faces == grid.F);  // a disk is not cut: same numbering

@@ -124,7 +124,7 @@ TEST_CASE("a coordinate beyond float range is refused for glTF, and no file is l
 TEST_CASE("display decimation: at most the asked faces, seam copies kept apart, every face a source face") {
   const akvf::TriMesh torus = akvf::test::torus(60);  // 7200 faces
   akvf::ParameterizeOptions options;
-  options.cut = "auto";
+  options.cut = akvf::Cut::kAuto;
   options.max_iters = 5;
   const akvf::ParameterizeResult r = akvf::parameterize(torus.V, torus.F, options);
   const akvf::SeamSplitMesh split = akvf::split_at_seams(torus, r.uv, r.uv_faces);

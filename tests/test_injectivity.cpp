@@ -177,7 +177,7 @@ TEST_CASE("boundary crossings and the rasterized overlap of a map that lies over
 TEST_CASE("a helicoid strip of 1.5 turns: flip-free alone overlaps, global injectivity does not") {
   const TriMesh strip = helicoid_strip(1.5, 0.05);
   ParameterizeOptions local;
-  local.injectivity = "local";
+  local.injectivity = akvf::Injectivity::kLocal;
   const ParameterizeResult overlapping = parameterize(strip.V, strip.F, local);
   REQUIRE(overlapping.trace.back().flips == 0);
   CHECK(overlapping.boundary_crossings > 0);

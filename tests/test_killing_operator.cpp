@@ -167,8 +167,8 @@ TEST_CASE("the AKVF direction is K^+ grad E, a descent direction free of rigid m
 TEST_CASE("on a long thin strip the AKVF direction is K^+ grad E in the softest bending modes too") {
   // A 300 x 1 strip of square cells: its in-plane bending modes have
   // eigenvalues of K far below mean(diag K), where a Tikhonov shift of 1e-8
-  // of the mean diagonal (this code's former one) damped them by tens of
-  // percent (factored_preconditioner.h).
+  // of the mean diagonal would damp them by tens of percent
+  // (factored_preconditioner.h).
   akvf::TriMesh strip = akvf::test::grid_disk(301, 2);
   strip.V.col(1) /= 300;
   const akvf::DistortionObjective2D objective = unit_area_objective(&strip);
@@ -186,7 +186,7 @@ TEST_CASE("on a long thin strip the AKVF direction is K^+ grad E in the softest 
   preconditioner.update({x, g, 0.0, 1});
   preconditioner.apply(g, &d);
   // The shifted solve's error is eps / lambda in each mode: 1.3e-4 here
-  // (0.56 with the former shift).
+  // (0.56 with a shift of 1e-8).
   CHECK((d - reference).norm() <= 1e-3 * reference.norm());
 }
 

@@ -275,7 +275,7 @@ TEST_CASE("PLY output: binary with per-vertex s, t reads back to the same bits")
 TEST_CASE("PLY output after a cut: per-corner texcoord reads back as the mesh's per-corner texture") {
   const akvf::TriMesh torus = akvf::test::torus(8);
   akvf::ParameterizeOptions options;
-  options.cut = "auto";
+  options.cut = akvf::Cut::kAuto;
   options.max_iters = 20;
   const akvf::ParameterizeResult r = akvf::parameterize(torus.V, torus.F, options);
   const std::filesystem::path dir = akvf::test::scratch_dir("ply_corners");

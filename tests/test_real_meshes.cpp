@@ -66,7 +66,7 @@ Run parameterize(const std::string& path, int max_iterations, bool cut = false, 
 }  // namespace
 
 // The meshes of more than 20 000 faces (camelhead, hilbert_b, horse_b) are
-// left to scripts/injectivity.sh (docs/notes/2026-11-26-injectivity.md): their global
+// left to scripts/injectivity.sh (docs/design.md, "Global injectivity"): their global
 // runs take 12 minutes under the sanitizers (CI).
 TEST_CASE("no inverted triangle and no overlap at any iterate on every disk mesh") {
   const std::string dir = akvf::test::data_dir();

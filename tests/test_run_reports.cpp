@@ -37,7 +37,7 @@ TEST_CASE("the exponential energies' warm start has its own limit, counts its ti
   ParamConfig config;
   config.energy = "exp-symmetric-dirichlet";
   config.energy_settings.exponent = 60;  // exp(60 D) overflows at the Tutte map's worst triangles
-  config.optimizer.max_iterations = 2;   // the run's limit no longer caps the warm start
+  config.optimizer.max_iterations = 2;   // the run's limit does not cap the warm start
   config.warm_start_max_iterations = 1000;
   const akvf::TriMesh mesh = akvf::test::bumpy_disk(9, 9);
   akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "b.obj", config);

@@ -24,7 +24,7 @@ struct DeformConfig {
   std::string preconditioner = "akvf-newton";        // the default method (docs/design.md)
   PreconditionerSettings3D preconditioner_settings;  // c of K + c I, CG instead of the factorization, ...
   std::string line_search = "backtracking";
-  std::string acceleration = "auto";  // AQP momentum: see acceleration_eta() in catalog.h
+  Acceleration acceleration = Acceleration::kAuto;  // AQP momentum: see acceleration_eta() in catalog.h
   LineSearchSettings line_search_settings;
   double weight = 1e5;  // w (§6.2)
   // Hard constraints instead: the constrained vertices start at their
@@ -33,8 +33,8 @@ struct DeformConfig {
   // AKVF exactly as §6.2 states it: K + c I, without the constraints'
   // Hessian and without the energy scale (docs/design.md measures both).
   bool akvf_as_written = false;
-  std::string linear_solver = "auto";  // auto: chosen from the factor's size (catalog.h, linear_solver_for)
-  int threads = 0;                     // worker threads during the run; 0 = all cores
+  LinearSolver linear_solver = LinearSolver::kAuto;  // kAuto: chosen from the factor's size
+  int threads = 0;                                   // worker threads during the run; 0 = all cores
   OptimizerOptions optimizer = [] {
     OptimizerOptions o;
     o.max_iterations = 100;  // Figure 8 runs 100 iterations of each method

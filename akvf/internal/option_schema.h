@@ -2,7 +2,8 @@
 // One description of every option of a problem: its key (the field of
 // ParameterizeOptions / DeformOptions, the manifest key, the Python keyword),
 // its command-line flag, help text, how it is read from text and written
-// back, and its range check. The command line (flags and --help), the
+// back, its range check, the problems it applies to and whether it restarts
+// the initial map. The command line (flags and --help), the
 // experiment manifests, the API's is_valid(), Parameterizer::set_options'
 // rule for recomputing the initial map, the Python keywords and the options
 // reference (docs/options.md, `akvf list --options`) are all driven by it, so
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "akvf/deform.h"
+#include "akvf/error.h"
 #include "akvf/parameterize.h"
 
 namespace akvf {
@@ -21,6 +23,13 @@ enum class OptionKind {
   kNumber,   // a finite real number (or "inf" for a time limit)
   kInteger,  // an int
   kSwitch,   // a flag without value on the command line; true/false elsewhere
+};
+
+// The problems an option applies to.
+enum class OptionScope {
+  kParam,   // akvf param, ParameterizeOptions
+  kDeform,  // akvf deform, DeformOptions
+  kBoth,    // both, with the same meaning (one definition: add_common_fields)
 };
 
 template <class Options>
@@ -42,6 +51,7 @@ struct OptionField {
   // Changing it recomputes the initial map of a Parameterizer
   // (Parameterizer::set_options compares these fields only).
   bool recomputes_start = false;
+  OptionScope scope = OptionScope::kBoth;
 };
 
 const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields();
@@ -52,6 +62,16 @@ const std::vector<OptionField<DeformOptions>>& deform_option_fields();
 template <class Options, class NameOf>
 void check_all(const std::vector<OptionField<Options>>& fields, const Options& options, NameOf name_of) {
   for (const auto& field : fields) field.check(options, name_of(field));
+}
+
+// Sets the field `key` of *options from its text, as the command line and
+// the manifests read it (the field's OptionsError for bad text).
+template <class Options>
+void set_option_text(const std::vector<OptionField<Options>>& fields, const std::string& key, const std::string& text,
+                     Options* options) {
+  for (const auto& field : fields)
+    if (field.key == key) return field.parse(*options, text);
+  throw OptionsError("unknown option '" + key + "'");
 }
 
 // The options reference in Markdown, one table per problem (docs/options.md).

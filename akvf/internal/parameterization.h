@@ -20,7 +20,7 @@ namespace akvf {
 struct ParamConfig {
   std::string energy = "symmetric-dirichlet";
   EnergySettings energy_settings;
-  std::string solver = "descent";              // kDescentSolver or kLbfgsMethod (catalog.h)
+  Solver solver = Solver::kDescent;
   std::string preconditioner = "akvf-newton";  // the default method (docs/design.md)
   std::string line_search = "backtracking";
   LineSearchSettings line_search_settings;
@@ -46,13 +46,13 @@ struct ParamConfig {
   bool global_injectivity = true;
   // AQP's momentum (OptimizerOptions::acceleration_eta): "auto" turns it on
   // for the laplacian preconditioner only, as AQP pairs them.
-  std::string acceleration = "auto";
+  Acceleration acceleration = Acceleration::kAuto;
   OptimizerOptions optimizer;
   // Iteration limit of the warm start of energies that are infinite at the
   // initial map (symmetric Dirichlet with AKVF to gradient 1e-3 first).
   int warm_start_max_iterations = 1000;
   // Worker threads (TBB and OpenBLAS) during the run; 0 = all cores.
-  std::string linear_solver = "auto";  // auto: chosen from the factor's size (catalog.h, linear_solver_for)
+  LinearSolver linear_solver = LinearSolver::kAuto;  // kAuto: chosen from the factor's size
   int threads = 0;
 };
 

@@ -73,7 +73,8 @@ struct PreconditionerSettings3D {
     for (FactorOptions* options : {&akvf.factor, &newton, &laplacian, &slim}) options->linear_solver = solver;
   }
 };
-// The LinearSolver of a checked --linear-solver name (require_linear_solver).
-LinearSolver linear_solver_for(const std::string& name);
+// The solver a run uses for `solver`: kAuto becomes kCholmod in a build
+// without multigrid.
+LinearSolver available_linear_solver(LinearSolver solver);
 
 }  // namespace akvf

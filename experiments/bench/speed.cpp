@@ -145,7 +145,7 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
       options.preconditioner = method_name(method, options.preconditioner);
       // The flip-free problem the peers (TinyAD, libigl's SLIM) solve; the
       // cost of global injectivity is measured in docs/design.md.
-      options.injectivity = "local";
+      options.injectivity = akvf::Injectivity::kLocal;
       std::vector<double> seconds;
       akvf::ParameterizeResult result;
       for (int i = 0; i < repeat; ++i) {

@@ -143,10 +143,4 @@ int count_inverted_triangles(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV
   return inverted;
 }
 
-TutteWeights parse_tutte_weights(const std::string& name) {
-  if (name == "tutte" || name == "uniform") return TutteWeights::kUniform;
-  if (name == "cotan" || name == "cotangent") return TutteWeights::kCotangent;
-  throw OptionsError("unknown initialization '" + name + "' (valid: tutte, cotan)");
-}
-
 }  // namespace akvf

@@ -42,6 +42,4 @@ int optimize_flaps(const TriMesh& mesh, Eigen::MatrixXd* UV);
 // Triangles with det(J) <= 0 under the map UV (#V by 2).
 int count_inverted_triangles(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV);
 
-TutteWeights parse_tutte_weights(const std::string& name);
-
 }  // namespace akvf

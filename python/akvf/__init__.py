@@ -279,7 +279,8 @@ def load_extension(path):
 
 
 def options(problem="parameterize"):
-    """The keyword options of parameterize or deform: dicts of key, kind, default, flag, help and
+    """The keyword options of parameterize or deform: dicts of key, kind, default, flag, help,
+    values (the accepted words of a fixed choice, "a|b|c"), scope ("param", "deform" or "both") and
     recomputes_start (changing it in Parameterizer.set_options recomputes the initial map)."""
     return _akvf.options(problem)
 
