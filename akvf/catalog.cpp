@@ -209,7 +209,8 @@ PreconditionerRegistry2D& mutable_preconditioners_2d() {
 const std::vector<std::pair<std::string, std::string>>& solvers() {
   static const std::vector<std::pair<std::string, std::string>> list = {
       {choice_name(Solver::kDescent), "preconditioned flip-free descent (Algorithm 1) with --precond"},
-      {choice_name(Solver::kLbfgs), "L-BFGS through Ceres' GradientProblemSolver (Smith & Schaefer 2015 style), no preconditioner"},
+      {choice_name(Solver::kLbfgs),
+       "L-BFGS through Ceres' GradientProblemSolver (Smith & Schaefer 2015 style), no preconditioner"},
   };
   return list;
 }

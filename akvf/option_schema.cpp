@@ -121,8 +121,7 @@ std::string choice_names(const char* separator) {
 // A fixed choice (akvf/choices.h), read from its words; `what` names it in
 // the error: "unknown cut 'x' (valid: none, auto)".
 template <class O, class Choice>
-OptionField<O> choice_field(std::string key, std::string flag, std::string what, std::string help,
-                            Choice O::*member) {
+OptionField<O> choice_field(std::string key, std::string flag, std::string what, std::string help, Choice O::*member) {
   return {std::move(key),
           std::move(flag),
           choice_names<Choice>("|"),
@@ -171,13 +170,13 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
                                     &O::linear_solver));
   fields->push_back(
       choice_field<O>("eigen_filter", "eigen-filter", "eigenvalue filter",
-                    "projected Newton (newton, akvf-newton): the element Hessians' negative "
-                    "eigenvalues clamped to 0, mirrored (abs), adaptive (Chen et al. 2024: clamp "
-                    "while the last step's decrease matched the quadratic model to 1 %, else mirror), "
-                    "or exact (not filtered while the Hessian is positive definite, else only partly: each element's "
-                    "negative eigenvalues scaled by 15/16, 3/4 or 0, the least filtering that factors); "
-                    "auto: clamp for newton, exact for akvf-newton's Newton phase",
-                    &O::eigen_filter));
+                      "projected Newton (newton, akvf-newton): the element Hessians' negative "
+                      "eigenvalues clamped to 0, mirrored (abs), adaptive (Chen et al. 2024: clamp "
+                      "while the last step's decrease matched the quadratic model to 1 %, else mirror), "
+                      "or exact (not filtered while the Hessian is positive definite, else only partly: each element's "
+                      "negative eigenvalues scaled by 15/16, 3/4 or 0, the least filtering that factors); "
+                      "auto: clamp for newton, exact for akvf-newton's Newton phase",
+                      &O::eigen_filter));
   fields->push_back(integer_field<O>("threads", "threads", "N", "worker threads (0 = all cores)", &O::threads,
                                      ">= 0 (0 = all cores)", [](int n) { return n >= 0; }));
 }

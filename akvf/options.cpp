@@ -12,10 +12,11 @@ namespace {
 template <class Settings>
 void set_eigen_filters(EigenFilter filter, Settings* settings) {
   if (filter == EigenFilter::kAuto) return;
-  settings->newton_filter = settings->newton_phase_filter = filter == EigenFilter::kClamp      ? EigenvalueFilter::kClamp
-                                                            : filter == EigenFilter::kAbsolute ? EigenvalueFilter::kAbsolute
-                                                            : filter == EigenFilter::kAdaptive ? EigenvalueFilter::kAdaptive
-                                                                                               : EigenvalueFilter::kExact;
+  settings->newton_filter = settings->newton_phase_filter =
+      filter == EigenFilter::kClamp      ? EigenvalueFilter::kClamp
+      : filter == EigenFilter::kAbsolute ? EigenvalueFilter::kAbsolute
+      : filter == EigenFilter::kAdaptive ? EigenvalueFilter::kAdaptive
+                                         : EigenvalueFilter::kExact;
 }
 
 }  // namespace

@@ -46,7 +46,7 @@ struct ParameterizeOptions {
                                                // (per-corner uv_faces); kNone: refuse such meshes
   bool flaps = true;                           // flap optimization of §5.4 after the Tutte map
   Injectivity injectivity = Injectivity::kGlobal;  // kGlobal: no UV overlap (boundary contact-free);
-                                                 // kLocal: flip-free only, the paper's Algorithm 1
+                                                   // kLocal: flip-free only, the paper's Algorithm 1
   double grad_tol = 1e-3;                      // converged when ||grad E|| < grad_tol (area-1 units)
   int max_iters = 1000;                        // >= 0
   double time_limit = std::numeric_limits<double>::infinity();  // optimizer seconds, > 0

@@ -214,7 +214,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   for (const std::string& file : material_files(path, obj_source))
     materials.push_back({"the input's material file", file});
   if (!materials.empty()) check_file_arguments(materials, written);
-  const Eigen::MatrixXd start_uv = options.init == akvf::InitialMap::kFile ? per_vertex_uv(input, texture, path) : Eigen::MatrixXd();
+  const Eigen::MatrixXd start_uv =
+      options.init == akvf::InitialMap::kFile ? per_vertex_uv(input, texture, path) : Eigen::MatrixXd();
   return run_and_write(input, path, options, start_uv, obj_output && !obj_source.empty() ? &obj_source : nullptr,
                        outputs, cl.has("quiet"), out, err);
 }

@@ -121,5 +121,3 @@ TEST_CASE("flap optimization makes a flap triangle isometric to its 3D shape") {
   CHECK((J.transpose() * J - Eigen::Matrix2d::Identity()).norm() <= 1e-12);
   CHECK(J.determinant() > 0);
 }
-
-
