@@ -17,6 +17,8 @@ namespace akvf {
 // True when this build embeds three.js (Debian's libjs-three was found at
 // configure time); write_view needs it.
 bool view_available();
+// OptionsError saying what to install when !view_available().
+void require_view();
 
 // The HTML view. summary_json: a run's summary as JSON text (an object, as
 // `akvf param --summary` writes it), shown beside the pictures; "" for none.

@@ -25,8 +25,7 @@
 #include "io/ply_reader.h"
 #include "io/text_reader.h"
 #include "io/text_utilities.h"
-#include "pictures/html_view.h"
-#include "pictures/layout.h"
+#include "akvf/pictures.h"
 #include "pictures/uv_png.h"
 #include "pictures/uv_svg.h"
 
@@ -115,18 +114,15 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   }
   trace.finish(result);
   if (!outputs.svg.empty())
-    write_layout_svg(outputs.svg, setup, result.x,
+    write_layout_svg(outputs.svg, input, UV, UV_faces,
                      name + " - " + run.preconditioner_name + ", " + std::to_string(last.iteration) +
                          " iterations, E = " + std::to_string(last.energy));
-  if (!outputs.png.empty()) write_layout_png(outputs.png, setup, result.x, outputs.png_size);
+  if (!outputs.png.empty()) write_layout_png(outputs.png, input, UV, UV_faces, outputs.png_size);
   if (!outputs.summary.empty() || !outputs.view.empty()) {
     const Json summary = param_summary(name, options, setup, run, texture_uv_scale);
     if (!outputs.summary.empty()) write_summary(outputs.summary, summary);
-    if (!outputs.view.empty()) {
-      ViewContent view = view_of(setup, result.x, std::filesystem::path(name).filename().string());
-      view.summary = summary;
-      write_html_view(outputs.view, view);
-    }
+    if (!outputs.view.empty())
+      write_view(outputs.view, input, UV, UV_faces, std::filesystem::path(name).filename().string(), summary.dump());
   }
   return exit_code_of(result);
 }
@@ -179,7 +175,7 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
   }
   require_extension("--png", outputs.png, {".png"});
   require_extension("--view", outputs.view, {".html", ".htm"});
-  if (!outputs.view.empty()) require_html_view();
+  if (!outputs.view.empty()) require_view();
   const std::string texture_mode = cl.text("texture", "checker");
   if (texture_mode != "checker" && texture_mode != "none")
     throw OptionsError("option --texture must be checker or none, found '" + texture_mode + "'");
@@ -244,7 +240,7 @@ int demo_command(const std::vector<std::string>& args, std::ostream& out, std::o
                   (dir / "demo_layout.svg").string(),
                   (dir / "demo_summary.json").string(),
                   "",
-                  html_view_available() ? (dir / "demo_view.html").string() : ""};
+                  view_available() ? (dir / "demo_view.html").string() : ""};
   outputs.texture = true;
   const TextureFiles texture = texture_files_for(outputs.obj);
   check_file_arguments({}, {{"the UV OBJ", outputs.obj},

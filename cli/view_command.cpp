@@ -9,7 +9,7 @@
 #include "cli/file_arguments.h"
 #include "io/json_text.h"
 #include "io/text_utilities.h"
-#include "pictures/html_view.h"
+#include "akvf/pictures.h"
 
 namespace akvf {
 
@@ -35,30 +35,28 @@ int view_command(const std::vector<std::string>& args, std::ostream& out, std::o
   const std::string out_path = cl.text("out", std::filesystem::path(path).replace_extension(".html").string());
   const std::string summary_path = cl.text("summary", "");
   require_extension("--out", out_path, {".html", ".htm"});
-  require_html_view();
+  require_view();
   std::vector<FileArgument> inputs = {{"the mesh", path}};
   if (!summary_path.empty()) inputs.push_back({"--summary", summary_path});
   check_file_arguments(inputs, {{"--out", out_path}});
 
   Warnings warnings;
-  ViewContent content;
   MeshTexture texture;
-  content.mesh = read_triangle_mesh(path, &warnings, &texture);
+  const TriMesh mesh = read_triangle_mesh(path, &warnings, &texture);
   for (const auto& warning : warnings) err << "warning: " << warning << '\n';
-  require_corner_texture(content.mesh, texture, path, "the view (write them with akvf param --out)");
-  content.uv = texture.uv;
-  content.uv_faces = texture.corner;
-  content.title = cl.text("title", std::filesystem::path(path).filename().string());
+  require_corner_texture(mesh, texture, path, "the view (write them with akvf param --out)");
+  std::string summary_text;
   if (!summary_path.empty()) {
-    content.summary = read_json_file(summary_path);
-    if (!content.summary.is_object())
-      throw InputError(
-          summary_path + ": not a run summary: a JSON object was expected, found " +
-          (content.summary.is_array() ? std::string("an array") : "a " + std::string(content.summary.type_name())));
+    const nlohmann::ordered_json summary = read_json_file(summary_path);
+    if (!summary.is_object())
+      throw InputError(summary_path + ": not a run summary: a JSON object was expected, found " +
+                       (summary.is_array() ? std::string("an array") : "a " + std::string(summary.type_name())));
+    summary_text = summary.dump();
   }
-  const int shown = write_html_view(out_path, content);
-  out << "wrote " << out_path << " (" << count_of(content.mesh.num_faces(), "face");
-  if (shown < content.mesh.num_faces()) out << ", " << shown << " shown: decimated for display";
+  const int shown = write_view(out_path, mesh, texture.uv, texture.corner,
+                               cl.text("title", std::filesystem::path(path).filename().string()), summary_text);
+  out << "wrote " << out_path << " (" << count_of(mesh.num_faces(), "face");
+  if (shown < mesh.num_faces()) out << ", " << shown << " shown: decimated for display";
   out << ")\n";
   return kExitOk;
 }

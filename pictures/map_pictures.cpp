@@ -25,6 +25,8 @@ Eigen::VectorXd excess_distortion(const TriMesh& mesh, const Eigen::MatrixXd& uv
 
 bool view_available() { return html_view_available(); }
 
+void require_view() { require_html_view(); }
+
 int write_view(const std::string& path, const TriMesh& mesh, const Eigen::MatrixXd& uv, const Eigen::MatrixXi& uv_faces,
                const std::string& title, const std::string& summary_json) {
   require_html_view();
