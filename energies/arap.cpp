@@ -29,7 +29,15 @@ struct Rotation {
 InvariantDerivatives2D Arap2D::derivatives(double s, double g) const {
   const double root = std::sqrt(s + 2 * g);
   const double inv3 = 1 / (root * root * root);
-  return {s - 2 * root + 2, 1 - 1 / root, -2 / root, 0.5 * inv3, inv3, 2 * inv3};
+  InvariantDerivatives2D d = {s - 2 * root + 2, 1 - 1 / root, -2 / root, 0.5 * inv3, inv3, 2 * inv3};
+  const double hat = collapse_area_ratio();
+  if (g < hat) {  // b = -(r - 1)^2 log r in r = g / hat, C2 at r = 1 (IPC's barrier)
+    const double r = g / hat, gap = r - 1, log_r = std::log(r);
+    d.f += -gap * gap * log_r;
+    d.f_g += (-2 * gap * log_r - gap * gap / r) / hat;
+    d.f_gg += (-2 * log_r - 4 * gap / r + gap * gap / (r * r)) / (hat * hat);
+  }
+  return d;
 }
 
 double Arap3D::value(const Matrix& J) const {

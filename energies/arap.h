@@ -1,16 +1,33 @@
 #pragma once
 // ARAP [Liu et al. 2008]: |J - R(J)|_F^2 with R the closest rotation,
 // sum_i (sigma_i - 1)^2, minimum 0 at rotations. +infinity when det J <= 0,
-// as every density here (ARAP itself has no barrier).
+// as every density here.
+//
+// ARAP itself stays finite as an element collapses, so its infimum over the
+// flip-free maps may lie on a collapsed element: every method then steps
+// ever closer to det J = 0 under the flip-free bound and stalls there. In
+// 2D a collapse barrier b(g) = -(g - g_hat)^2 log(g / g_hat) on g = det J
+// below g_hat = collapse_area_ratio() (IPC's barrier, Li et al. 2020: zero
+// with its first two derivatives at g_hat) puts the minimum inside, where
+// the gradient vanishes. It changes no map whose elements all keep at least
+// g_hat of their rest area, and balances ARAP's O(1) pull on a collapsing
+// element at g of order g_hat^2, adding about g_hat^2 log(1 / g_hat) to that
+// element's density.
 #include "energies/invariant_density_2d.h"
 
 namespace akvf {
 
-// In 2D sigma_1 + sigma_2 = sqrt(s + 2g) for g > 0, so f = s - 2 sqrt(s + 2g) + 2.
+// In 2D sigma_1 + sigma_2 = sqrt(s + 2g) for g > 0, so f = s - 2 sqrt(s + 2g) + 2,
+// plus the collapse barrier below g_hat.
 class Arap2D final : public InvariantDensity2D {
  public:
   std::string name() const override { return "arap"; }
   double lower_bound() const override { return 0.0; }
+  // g_hat: a triangle shrunk below a thousandth of its rest area is
+  // collapsed for any texture use; ARAP's density there is already at least
+  // (1 - sqrt(g_hat))^2 = 0.94 (sigma_min <= sqrt(det J)), against 1 at
+  // full collapse.
+  static constexpr double collapse_area_ratio() { return 1e-3; }
 
  protected:
   InvariantDerivatives2D derivatives(double s, double g) const override;

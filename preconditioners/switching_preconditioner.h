@@ -96,9 +96,10 @@
 // `closing_ratio` (half) of the last is not closing in (Newton's far phase
 // on tricera_b subdivided: 0.713, 0.710, 0.693, which sent the run back to
 // AKVF's stalled steps when any decrease counted). An energy without a
-// barrier does that: with ARAP on cow_b the default stalled at 0.1496 after
-// 37 iterations, alpha_max falling fivefold per step, where AKVF reaches
-// 0.01655 in 100 (docs/pairs.md). After `patience` such Newton steps in a
+// barrier does that (ARAP without its collapse barrier, energies/arap.h: on
+// cow_b the default stalled at 0.1496 after 37 iterations, alpha_max falling
+// fivefold per step, where AKVF reached 0.01655 in 100; the 3D ARAP has no
+// barrier), and a barrier's stiff neighbourhood can. After `patience` such Newton steps in a
 // row the first preconditioner is rebuilt (its assembly pattern anew) and
 // takes over the second's analysis and factor. Each return doubles the
 // patience of the next switch to the second, so a run whose Newton phases

@@ -60,6 +60,25 @@ TEST_CASE("every energy's derivatives match finite differences, including near-d
   }
 }
 
+TEST_CASE("ARAP's collapse barrier: plain ARAP from g_hat up, smooth below it, unbounded at collapse") {
+  const akvf::Arap2D arap;
+  const double hat = akvf::Arap2D::collapse_area_ratio();
+  const auto plain = [](double s1, double s2) { return (s1 - 1) * (s1 - 1) + (s2 - 1) * (s2 - 1); };
+  const Eigen::Matrix2d R = Eigen::Rotation2Dd(0.3).toRotationMatrix();
+  CHECK(arap.value(R * Eigen::Vector2d(2, hat / 2).asDiagonal()) == doctest::Approx(plain(2, hat / 2)).epsilon(1e-14));
+  CHECK(arap.value(R * Eigen::Vector2d(2, hat / 4).asDiagonal()) > plain(2, hat / 4));
+  double previous = 0;
+  for (double g : {hat / 2, 1e-6, 1e-9, 1e-12}) {
+    const double value = arap.value(Eigen::Vector2d(1, g).asDiagonal());
+    CHECK(value > previous);
+    previous = value;
+  }
+  CHECK(previous > 10);
+  // Singular values from 0.005 to 0.06: det J on both sides of g_hat.
+  akvf::test::check_density_derivatives<2>(arap, 0.005, 0.06, 40, 3);
+  akvf::test::check_filtered_hessians<2>(arap, R * Eigen::Vector2d(1.5, 2e-4).asDiagonal());
+}
+
 TEST_CASE("every energy attains its lower bound at rotations and is infinite when inverted") {
   const akvf::Arap2D arap;
   const akvf::Mips2D mips;
