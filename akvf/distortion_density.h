@@ -68,6 +68,10 @@ class SingularValueDerivative {
   virtual ~SingularValueDerivative() = default;
   // At sigma with a positive product (an element that is not inverted).
   virtual Vector singular_value_gradient(const Vector& sigma) const = 0;
+  // Whether the density is minimal at every similarity (scale invariant,
+  // as MIPS) rather than at rotations only: the SLIM proxy then pulls J
+  // towards the nearest similarity instead of the nearest rotation.
+  virtual bool minimal_at_similarities() const { return false; }
 };
 
 }  // namespace akvf

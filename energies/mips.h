@@ -10,6 +10,7 @@ namespace akvf {
 class Mips2D final : public InvariantDensity2D {
  public:
   std::string name() const override { return "mips"; }
+  bool minimal_at_similarities() const override { return true; }
   double lower_bound() const override { return 2.0; }
 
  protected:
@@ -19,6 +20,7 @@ class Mips2D final : public InvariantDensity2D {
 class Mips3D final : public InvariantDensity3D {
  public:
   std::string name() const override { return "mips"; }
+  bool minimal_at_similarities() const override { return true; }
   double lower_bound() const override { return 3.0; }
 
  protected:

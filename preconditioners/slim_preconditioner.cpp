@@ -40,23 +40,29 @@ void SlimPreconditioner<D>::proxy_weights(const SingularValueDerivative<D>& dens
     U.col(D - 1) *= -1;
     sigma[D - 1] *= -1;
   }
+  // The singular values of the nearest element where D is minimal: a
+  // rotation, or for a scale-invariant density the similarity of the
+  // geometric mean (libigl's SLIM does the same for its conformal energy).
+  const double target =
+      density.minimal_at_similarities() ? std::pow(std::abs(sigma.prod()), 1.0 / D) : 1.0;
   const Vector dD = density.singular_value_gradient(sigma);
   Vector w2;
   for (int i = 0; i < D; ++i) {
-    const double gap = sigma[i] - 1;
-    // At sigma = 1 use the limit dD/dsigma / (2 (sigma - 1)) -> D''(1) / 2,
+    const double gap = sigma[i] - target;
+    // At sigma = target use the limit dD/dsigma / (2 (sigma - target)),
     // approximated by a one-sided difference.
-    if (std::abs(gap) < 1e-8) {
+    if (std::abs(gap) < 1e-8 * target) {
+      const double h = 1e-6 * target;
       Vector shifted = sigma;
-      shifted[i] = 1 + 1e-6;
-      w2[i] = density.singular_value_gradient(shifted)[i] / (2e-6);
+      shifted[i] = target + h;
+      w2[i] = density.singular_value_gradient(shifted)[i] / (2 * h);
     } else {
       w2[i] = dD[i] / (2 * gap);
     }
     w2[i] = std::max(w2[i], 1e-8);
   }
   *WtW = U * w2.asDiagonal() * U.transpose();
-  *R = U * V.transpose();
+  *R = target * U * V.transpose();
 }
 
 template <int D>

@@ -4,14 +4,18 @@
 // element gets the reweighted ARAP proxy  w_e |W_e (J_e - R_e)|_F^2  with
 // J_e = U S V^T, R_e = U V^T and W_e = U diag(w_1..w_D) U^T,
 // w_i^2 = (dD/dsigma_i) / (2 (sigma_i - 1)), chosen so that the proxy's
-// gradient equals the energy's gradient at x. The proxy is quadratic with
+// gradient equals the energy's gradient at x. For a scale-invariant density
+// (MIPS) R_e is the nearest similarity instead, (prod sigma)^(1/D) U V^T,
+// and w_i^2 = (dD/dsigma_i) / (2 (sigma_i - (prod sigma)^(1/D))), as
+// libigl's SLIM does for its conformal energy; in 2D these weights are
+// positive, so the gradient property holds exactly. The proxy is quadratic with
 // Hessian
 //   P = sum_e w_e G_e^T (I_D (x) 2 W_e^T W_e) G_e,
 // so the proxy minimizer x* satisfies P (x* - x) = -grad E(x): SLIM's
 // search direction x* - x is -P^-1 grad E, a preconditioned gradient.
 // Needs an energy that exposes its singular-value derivative
 // (SingularValueDerivative<D>). Weights are clamped below at 1e-8 where
-// w_i^2 <= 0 (possible for non-isometric energies such as MIPS); there the
+// w_i^2 <= 0 (possible for AMIPS, and for MIPS in 3D); there the
 // gradient property holds only approximately, as in SLIM's own code. In 3D
 // deformation SLIM's soft constraints enter through
 // FactorOptions::extra_diagonal, as in SLIM's own solve.

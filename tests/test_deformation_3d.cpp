@@ -84,7 +84,8 @@ TEST_CASE("3D Newton, Laplacian and SLIM: symmetric PSD, the expected null space
 }
 
 TEST_CASE("the 3D SLIM proxy's gradient equals the energy's gradient for the isometric energies") {
-  // (For AMIPS and MIPS w_i^2 can be negative and is clamped: see slim_preconditioner.h.)
+  // (For AMIPS and the 3D MIPS w_i^2 can be negative and is clamped: see
+  // slim_preconditioner.h.)
   const akvf::SymmetricDirichlet3D sd;
   const akvf::ExpSymmetricDirichlet3D exp_sd(0.2);
   const akvf::Arap3D arap;
