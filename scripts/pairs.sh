@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # Regenerates docs/pairs.md: every energy x preconditioner (and the L-BFGS
 # solver) for 100 iterations on a mesh (default cow_b.obj, the mesh of the
-# paper's Figure 3), from the same Tutte start, with default options.
+# paper's Figure 3), from the same Tutte start, with default options; then
+# the same matrix run to convergence on each of CONVERGED_MESHES (default
+# camelhead and horse_b; about 10 minutes).
 # Usage: bash scripts/pairs.sh [MESH] > docs/pairs.md   (after scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 AKVF=./build/akvf
 DATA=${AKVF_DATA_DIR:-../shared/meshes}
 MESH=${1:-$DATA/tri/cow_b.obj}
+# The meshes of at least 10 000 faces whose matrix is run to convergence.
+CONVERGED_MESHES=${CONVERGED_MESHES-$DATA/tri/camelhead.off $DATA/tri/horse_b.obj}
 [ -x "$AKVF" ] || { echo "build first: bash scripts/build.sh" >&2; exit 1; }
 [ -f "$MESH" ] || { echo "mesh not found: $MESH (set AKVF_DATA_DIR)" >&2; exit 1; }
 
@@ -26,21 +30,30 @@ echo "otherwise default options (exponent 1). Each cell: final energy /"
 echo "optimizer seconds / status. Energies are normalized by area, so each column's lower"
 echo "bound is the energy's (docs/energies.md). One run each: times vary 10-20 % between runs."
 echo
-printf '| preconditioner |'
-for e in $energies; do printf ' %s |' "$e"; done
-echo
-printf '|---|'
-for _ in $energies; do printf -- '---|'; done
-echo
-for m in $methods; do
-  printf '| %s |' "$m"
-  for e in $energies; do
-    line=$("$AKVF" param "$MESH" --quiet --energy "$e" --precond "$m" --max-iters 100 --grad-tol 0 --injectivity local 2>/dev/null \
-           | sed -n 's/^status \([a-z-]*\).* after [0-9]* iterations, \([0-9.]*\) s: energy \([^,]*\),.*/\3 \/ \2 s \/ \1/p') || true
-    printf ' %s |' "${line:-error}"
-  done
+# One table: every method x every energy on $1 with the options $2; each
+# cell the final energy, then $3 (iterations too when set), seconds, status.
+table() {
+  local mesh=$1 options=$2 iterations=$3
+  printf '| preconditioner |'
+  for e in $energies; do printf ' %s |' "$e"; done
   echo
-done
+  printf '|---|'
+  for _ in $energies; do printf -- '---|'; done
+  echo
+  for m in $methods; do
+    printf '| %s |' "$m"
+    for e in $energies; do
+      # shellcheck disable=SC2086
+      line=$("$AKVF" param "$mesh" --quiet --energy "$e" --precond "$m" $options --injectivity local 2>/dev/null \
+             | sed -n 's/^status \([a-z-]*\).* after \([0-9]*\) iterations, \([0-9.]*\) s: energy \([^,]*\),.*/\4 \/ \2 it \/ \3 s \/ \1/p') || true
+      [ -n "$iterations" ] || line=$(echo "$line" | sed 's| / [0-9]* it||')
+      printf ' %s |' "${line:-error}"
+    done
+    echo
+  done
+}
+
+table "$MESH" "--max-iters 100 --grad-tol 0" ""
 echo
 echo "The exponential energies are infinite at the Tutte map (the slivers' symmetric Dirichlet"
 echo "values overflow exp()), so those runs start from the symmetric Dirichlet minimizer (AKVF,"
@@ -52,3 +65,12 @@ echo "than its first row after the warm start):"
 echo "\`bash scripts/check_all_pairs.sh\` (about 7 minutes)."
 echo "\`stalled\`: the energy stopped decreasing (relative change below 1e-13 for 10 iterations),"
 echo "typically because the flip-free bound shrinks the step towards a collapsing triangle."
+for mesh in $CONVERGED_MESHES; do
+  echo
+  echo "## To convergence: \`$(basename "$mesh")\` ($(case "$mesh" in *.off) awk 'NR == 2 {print $2}' "$mesh" ;; *) grep -c '^f ' "$mesh" ;; esac) faces)"
+  echo
+  echo "Default options (gradient norm below 1e-3, at most 1000 iterations), \`--injectivity local\`."
+  echo "Each cell: final energy / iterations / optimizer seconds / status."
+  echo
+  table "$mesh" "" "iterations"
+done
