@@ -95,7 +95,7 @@ DensityRegistry2D& mutable_energies_2d() {
     DensityRegistry2D r("energy");
     r.add("symmetric-dirichlet", "|J|^2 + |J^-1|^2, Eq. (2); lower bound 4",
           [](const EnergySettings&) { return std::make_unique<SymmetricDirichlet2D>(); });
-    r.add("arap", "|J - R(J)|^2, R the closest rotation; lower bound 0",
+    r.add("arap", "|J - R(J)|^2, R the closest rotation, with a collapse barrier below 1e-3 of the rest area; lower bound 0",
           [](const EnergySettings&) { return std::make_unique<Arap2D>(); });
     r.add("mips", "conformal |J|^2 / det J; lower bound 2",
           [](const EnergySettings&) { return std::make_unique<Mips2D>(); });

@@ -3,18 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "akvf/error.h"
 #include "preconditioners/element_derivatives.h"
 
 namespace akvf {
-
-EigenvalueFilter parse_eigenvalue_filter(const std::string& name) {
-  if (name == "clamp") return EigenvalueFilter::kClamp;
-  if (name == "abs") return EigenvalueFilter::kAbsolute;
-  if (name == "adaptive") return EigenvalueFilter::kAdaptive;
-  if (name == "exact") return EigenvalueFilter::kExact;
-  throw OptionsError("unknown eigenvalue filter '" + name + "' (valid: clamp, abs, adaptive, exact)");
-}
 
 namespace {
 

@@ -77,8 +77,6 @@ enum class EigenvalueFilter { kClamp, kAbsolute, kAdaptive, kExact };
 constexpr MotionProjection default_newton_projection(int dimension) {
   return dimension == 2 ? MotionProjection::kRigidMotions : MotionProjection::kNone;
 }
-// "clamp", "abs", "adaptive", "exact"; OptionsError naming the valid ones otherwise.
-EigenvalueFilter parse_eigenvalue_filter(const std::string& name);
 
 template <int D>
 class NewtonPreconditioner final : public FactoredPreconditioner<D> {

@@ -498,9 +498,6 @@ TEST_CASE("the adaptive eigenvalue filter clamps only after a step the quadratic
   visit(far, 3);
   CHECK(newton.last_filter() == akvf::EigenvalueFilter::kAbsolute);
   CHECK(newton.mirrored_assemblies() == 2);
-  CHECK(akvf::parse_eigenvalue_filter("adaptive") == akvf::EigenvalueFilter::kAdaptive);
-  CHECK(akvf::test::error_message([] { akvf::parse_eigenvalue_filter("mirror"); }) ==
-        "unknown eigenvalue filter 'mirror' (valid: clamp, abs, adaptive, exact)");
 }
 
 TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive definite, else the clamped one") {
@@ -605,7 +602,6 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
     CHECK(exact.last_filter() == akvf::EigenvalueFilter::kClamp);
     direction_and_matrix(objective, x, &exact, &P_exact);
     CHECK(exact.report().find("exact Hessian at 0 of 2 tries") != std::string::npos);
-    CHECK(akvf::parse_eigenvalue_filter("exact") == akvf::EigenvalueFilter::kExact);
   }
   SUBCASE("started at the clamp (akvf-newton with the constraints far): no partial try fails, then it relaxes") {
     const akvf::DistortionObjective2D& objective = bumpy_objective;
