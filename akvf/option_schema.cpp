@@ -181,14 +181,13 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
                                      ">= 0 (0 = all cores)", [](int n) { return n >= 0; }));
 }
 
-// `fields` with every field that is not common marked as one of `scope`'s.
+// Marks the fields outside [common_begin, common_end), the ones
+// add_common_fields did not add, as `scope`'s own.
 template <class O>
-std::vector<OptionField<O>> only_for(OptionScope scope, std::vector<OptionField<O>> fields) {
-  std::vector<OptionField<O>> common;
-  add_common_fields(&common);
-  for (OptionField<O>& field : fields)
-    if (std::none_of(common.begin(), common.end(), [&](const auto& c) { return c.key == field.key; }))
-      field.scope = scope;
+std::vector<OptionField<O>> mark_own(OptionScope scope, std::vector<OptionField<O>> fields, std::size_t common_begin,
+                                     std::size_t common_end) {
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    if (i < common_begin || i >= common_end) fields[i].scope = scope;
   return fields;
 }
 
@@ -206,7 +205,9 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
     f.push_back(text_field<O>("precond", "precond", "NAME",
                               preconditioners_2d().names() + " (or lbfgs, an alias of --solver lbfgs)",
                               &O::preconditioner, [](const O& o) { require_method(o.preconditioner); }));
+    const std::size_t common_begin = f.size();
     add_common_fields(&f);
+    const std::size_t common_end = f.size();
     f.push_back(number_field<O>("akvf_reuse", "akvf-reuse", "TAU",
                                 "AKVF: reuse the last factorization through CG to relative residual TAU "
                                 "(0 = factor K every iteration, as in Algorithm 1)",
@@ -262,7 +263,7 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                                   "iteration limit of the symmetric Dirichlet warm start of "
                                                   "energies that overflow at the initial map",
                                                   &O::warm_start_iters, ">= 0", [](int n) { return n >= 0; })));
-    return only_for(OptionScope::kParam, std::move(f));
+    return mark_own(OptionScope::kParam, std::move(f), common_begin, common_end);
   }();
   return fields;
 }
@@ -275,7 +276,9 @@ const std::vector<OptionField<DeformOptions>>& deform_option_fields() {
                               [](const O& o) { energies_3d().require(o.energy); }));
     f.push_back(text_field<O>("precond", "precond", "NAME", preconditioners_3d().names() + " (akvf: K + 1e-4 I)",
                               &O::preconditioner, [](const O& o) { preconditioners_3d().require(o.preconditioner); }));
+    const std::size_t common_begin = f.size();
     add_common_fields(&f);
+    const std::size_t common_end = f.size();
     f.push_back(number_field<O>("weight", "weight", "W", "soft constraint weight w (at rest volume 1)", &O::weight,
                                 "> 0", [](double w) { return w > 0; }));
     f.push_back(switch_field<O>("hard", "hard", "",
@@ -290,7 +293,7 @@ const std::vector<OptionField<DeformOptions>>& deform_option_fields() {
                                 "AKVF as Sec. 6.2 states it: K + c I without the constraints' Hessian or the "
                                 "energy scale (slow; for comparison, docs/design.md)",
                                 &O::akvf_as_written));
-    return only_for(OptionScope::kDeform, std::move(f));
+    return mark_own(OptionScope::kDeform, std::move(f), common_begin, common_end);
   }();
   return fields;
 }

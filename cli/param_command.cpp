@@ -26,8 +26,6 @@
 #include "io/text_reader.h"
 #include "io/text_utilities.h"
 #include "akvf/pictures.h"
-#include "pictures/uv_png.h"
-#include "pictures/uv_svg.h"
 
 namespace akvf {
 

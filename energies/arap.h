@@ -6,13 +6,16 @@
 // ARAP itself stays finite as an element collapses, so its infimum over the
 // flip-free maps may lie on a collapsed element: every method then steps
 // ever closer to det J = 0 under the flip-free bound and stalls there. In
-// 2D a collapse barrier b(g) = -(g - g_hat)^2 log(g / g_hat) on g = det J
-// below g_hat = collapse_area_ratio() (IPC's barrier, Li et al. 2020: zero
-// with its first two derivatives at g_hat) puts the minimum inside, where
-// the gradient vanishes. It changes no map whose elements all keep at least
-// g_hat of their rest area, and balances ARAP's O(1) pull on a collapsing
-// element at g of order g_hat^2, adding about g_hat^2 log(1 / g_hat) to that
-// element's density.
+// 2D a collapse barrier b = -(r - 1)^2 log r in r = det J / g_hat, below
+// g_hat = collapse_area_ratio() (IPC's barrier, Li et al. 2020, zero with
+// its first two derivatives at r = 1), puts the minimum inside, where the
+// gradient vanishes. It changes no map whose elements all keep at least
+// g_hat of their rest area. Being O(1) in r, like ARAP's own density, it
+// meets ARAP's O(1) pull on a collapsing element while det J is still a
+// fair fraction of g_hat, where its curvature (of order 1 / g_hat^2) keeps
+// Newton's steps accurate; IPC's form in det J itself, 1 / g_hat^2 weaker,
+// lets the element sink to det J ~ g_hat^2 and the gradient stays far above
+// the tolerance there.
 #include "energies/invariant_density_2d.h"
 
 namespace akvf {
