@@ -104,13 +104,15 @@ class PermutedFactor {
   virtual std::unique_ptr<PermutedFactor> copy_analysis() const = 0;
   // upper_values: the upper input's nonzeros (PermutedPattern::source
   // maps them to the lower triangle). A supernodal factor is computed by
-  // SupernodalFactorization (two cores) unless `by_cholmod`.
+  // SupernodalFactorization (every thread) unless `by_cholmod`.
   virtual void factorize(const double* upper_values, bool by_cholmod) = 0;
   // z = (L L^T)^-1 z in the permuted numbering.
   virtual void solve(double* z) = 0;
   virtual bool supernodal() const = 0;
   virtual bool factored() const = 0;
-  virtual double serial_solve_share() = 0;
+  // SupernodalFactorization::critical_path_share, SupernodalSolve::top_share.
+  virtual double factor_critical_path_share() = 0;
+  virtual double solve_top_share(int threads) = 0;
   virtual int index_bits() const = 0;
   virtual double bytes() const = 0;
   double nonzeros = 0, flops = 0;  // of the factor, from the analysis
@@ -126,7 +128,7 @@ namespace {
 // twice CHOLMOD's column limits for merging supernodes (nrelax 8, 32, 96
 // for its 4, 16, 48; the zero-fraction limits zrelax unchanged): fewer,
 // larger dense blocks, some explicit zeros in them, factored by
-// SupernodalFactorization on two cores. Measured with `akvf_benchmarks
+// SupernodalFactorization on every thread. Measured with `akvf_benchmarks
 // --benchmark_filter='^(NumericFactorization|Solve)/'`: hilbert_b 10.4 -> 7.3-7.8 ms, cow_b 2.7 ->
 // 1.4-1.7 ms; supernodal with CHOLMOD's own limits was no faster on hilbert_b (11.1
 // ms), and three or four times its limits were slower than twice.
@@ -250,7 +252,12 @@ class CholmodFactor final : public PermutedFactor {
 
   bool supernodal() const override { return factor_->is_super; }
   bool factored() const override { return own_factored_ || factor_->xtype != CHOLMOD_PATTERN; }
-  double serial_solve_share() override { return factor_->is_super ? supernodal_solve().top_share() : 1.0; }
+  double factor_critical_path_share() override {
+    return factor_->is_super ? parallel_factorization().critical_path_share() : 1.0;
+  }
+  double solve_top_share(int threads) override {
+    return factor_->is_super ? supernodal_solve().top_share(std::max(2, threads)) : 1.0;
+  }
   int index_bits() const override { return 8 * static_cast<int>(sizeof(Index)); }
   // A supernodal factor stores its supernodes' dense blocks (xsize values,
   // zeros of the relaxed amalgamation included) and ssize row indices; a
@@ -434,7 +441,13 @@ double SparseCholesky::factor_nonzeros() const { return analyzed() ? impl_->fact
 
 double SparseCholesky::factor_flops() const { return analyzed() ? impl_->factor->flops : 0; }
 
-double SparseCholesky::serial_solve_share() { return analyzed() ? impl_->factor->serial_solve_share() : 1.0; }
+double SparseCholesky::factor_critical_path_share() {
+  return analyzed() ? impl_->factor->factor_critical_path_share() : 1.0;
+}
+
+double SparseCholesky::solve_top_share(int threads) {
+  return analyzed() ? impl_->factor->solve_top_share(threads) : 1.0;
+}
 
 double SparseCholesky::factor_bytes() const { return analyzed() ? impl_->factor->bytes() : 0; }
 

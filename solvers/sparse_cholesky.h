@@ -2,7 +2,7 @@
 // Sparse Cholesky factorization of a symmetric positive definite matrix with
 // CHOLMOD's analysis (supernodal, with small supernodes merged more than
 // CHOLMOD does where it would factor simplicially: sparse_cholesky.cpp says
-// why) and our two-core numeric factorization, hidden behind a small class.
+// why) and our multi-threaded numeric factorization, hidden behind a small class.
 // The symbolic analysis (fill-reducing ordering, elimination tree) is done
 // once for a sparsity pattern; each factorize() is numeric only (§5.2). CHOLMOD's
 // 32-bit integers serve while the factor has fewer than 2^31 entries; past
@@ -49,8 +49,8 @@ class SparseCholesky {
   // analyze() would compute for its pattern, without the ordering work
   // (solvers/symbolic_analysis_cache.h).
   void copy_analysis(const SparseCholesky& other);
-  // Numeric factorization A = L L^T: a supernodal factor on two cores
-  // (solvers/supernodal_factorization.h), a simplicial one (only with
+  // Numeric factorization A = L L^T: a supernodal factor on the calling
+  // arena's threads (solvers/supernodal_factorization.h), a simplicial one (only with
   // use_cholmod_alone) by CHOLMOD.
   // Throws NotPositiveDefinite if A is not (numerically) positive
   // definite, NumericalError on other failures.
@@ -85,8 +85,8 @@ class SparseCholesky {
   // Tests: compute METIS's ordering besides AMD's whatever the size.
   void always_try_metis(bool on);
   // Tests and benchmarks: supernodal factors by CHOLMOD's own numeric
-  // factorization (one core) instead of SupernodalFactorization (two cores,
-  // the same factor to rounding; solvers/supernodal_factorization.h).
+  // factorization (one core) instead of SupernodalFactorization (every
+  // thread, the same factor to rounding; solvers/supernodal_factorization.h).
   void use_cholmod_factorization(bool on);
   // Benchmarks: CHOLMOD alone, as it factors with its default settings:
   // simplicial L D L^T (one core) below its supernodal switch, its own
@@ -98,10 +98,14 @@ class SparseCholesky {
   // (default: 1/16 of the physical memory, sparse_cholesky.cpp). Set before
   // analyze().
   void limit_relaxed_factor(double bytes);
-  // Share of the supernodal factor's entries whose triangular solves run on
-  // one core (the top of the elimination tree; the rest is split between two
-  // cores, see solvers/supernodal_solve.h). 1 for a simplicial factor.
-  double serial_solve_share();
+  // The share of a numeric factorization's flops on the elimination tree's
+  // longest chain: what no number of threads shortens
+  // (solvers/supernodal_tree.h). 1 for a simplicial factor.
+  double factor_critical_path_share();
+  // The share of the factor's entries whose triangular solves run on one
+  // thread when the solve has `threads` threads (the top of the elimination
+  // tree, solvers/supernodal_solve.h). 1 for a simplicial factor.
+  double solve_top_share(int threads);
 
  private:
   struct Impl;

@@ -1,9 +1,5 @@
 #include "solvers/supernodal_factorization.h"
 
-#include <tbb/parallel_for_each.h>
-#include <tbb/parallel_invoke.h>
-#include <tbb/task_arena.h>
-
 #include <cholmod.h>  // SuiteSparse_long
 #include <algorithm>
 #include <string>
@@ -16,50 +12,58 @@ namespace akvf {
 
 namespace {
 
-// Flops of a supernode with c columns and b rows below them: its diagonal
-// block (c^3 / 3), the rows below (b c^2) and its updates of later
-// supernodes (b^2 c).
-double supernode_flops(const BlockShape& shape) {
-  const double c = shape.columns, b = shape.rows - shape.columns;
-  return c * c * c / 3 + b * c * c + b * b * c;
+// Below it a subtree is factored by one task (some 100 microseconds).
+constexpr double kMinUnitFlops = 5e5;
+
+// Flops of each supernode's work in the left-looking loop: its block's
+// Cholesky factorization and the updates it receives.
+template <class Index>
+std::vector<double> supernode_flops(const SupernodalStructure<Index>& s, const std::vector<int>& column_node) {
+  const int n_super = static_cast<int>(s.supernodes);
+  std::vector<double> flops(n_super, 0.0);
+  for (int d = 0; d < n_super; ++d) {
+    const BlockShape b = block_shape(s, d);
+    flops[d] += cholesky_flops(b.rows, b.columns);
+    const Index end = s.pattern_start[d + 1];
+    for (Index p = s.pattern_start[d] + b.columns; p < end;) {
+      const int target = column_node[static_cast<std::size_t>(s.pattern[p])];
+      Index q = p;
+      while (q < end && column_node[static_cast<std::size_t>(s.pattern[q])] == target) ++q;
+      flops[target] += update_flops(static_cast<int>(end - p), static_cast<int>(q - p), b.columns);
+      p = q;
+    }
+  }
+  return flops;
 }
 
 }  // namespace
 
 template <class Index>
-SupernodalFactorization<Index>::SupernodalFactorization(const SupernodalStructure<Index>& structure) : s_(structure) {
+SupernodalFactorization<Index>::SupernodalFactorization(const SupernodalStructure<Index>& structure)
+    : s_(structure), head_(static_cast<std::size_t>(structure.supernodes)), workspaces_([n = structure.columns()] {
+        Workspace w;
+        w.local_row.resize(n);
+        return w;
+      }) {
   const int n_super = static_cast<int>(s_.supernodes);
-  SupernodalTree tree = supernodal_tree(s_);
-  column_node_ = std::move(tree.column_node);
-  std::vector<double> work(n_super);
-  for (int node = 0; node < n_super; ++node) work[node] = supernode_flops(block_shape(s_, node));
-  // The top counts about half: its branches are worked on concurrently.
-  const std::vector<char> owner = split_subtrees(tree, work, 0.5);
-  top_children_.resize(n_super);
-  for (int node = 0; node < n_super; ++node) {
-    if (owner[node] != kTop) {
-      group_[static_cast<int>(owner[node])].push_back(node);
-      continue;
-    }
-    if (tree.parent[node] < 0)
-      top_roots_.push_back(node);
-    else
-      top_children_[tree.parent[node]].push_back(node);  // a top node's parent is in the top
-  }
+  const SupernodalTree tree = supernodal_tree(s_);
+  schedule_ = TreeSchedule(tree, supernode_flops(s_, tree.column_node), kMinUnitFlops);
+  column_node_ = tree.column_node;
   next_row_.resize(n_super);
   next_.resize(n_super);
   key_.resize(n_super);
-  for (Workspace& w : workspace_) w.local_row.resize(s_.columns());
 }
 
 template <class Index>
-void SupernodalFactorization<Index>::link(int d, Index position, int worker, Key key) {
+void SupernodalFactorization<Index>::link(int d, Index position, Key key) {
   next_row_[d] = position;
   if (position < s_.pattern_start[d + 1]) {
     const int target = column_node_[static_cast<std::size_t>(s_.pattern[position])];
-    next_[d] = head_[worker][target];
-    head_[worker][target] = d;
     key_[d] = key;
+    int head = head_[target].load(std::memory_order_relaxed);
+    do {
+      next_[d] = head;
+    } while (!head_[target].compare_exchange_weak(head, d, std::memory_order_release, std::memory_order_relaxed));
   }
 }
 
@@ -78,19 +82,17 @@ void SupernodalFactorization<Index>::assemble(int s, const LowerTriangle& A, con
 }
 
 template <class Index>
-void SupernodalFactorization<Index>::collect(int s, int worker) {
+void SupernodalFactorization<Index>::collect(int s, Workspace* w) const {
   const Index last_column = s_.first_column[s + 1];
-  Workspace& w = workspace_[worker];
-  w.descendants.clear();
-  for (const std::vector<int>& head : head_)
-    for (int node = head[s]; node >= 0; node = next_[node]) {
-      const Index first = next_row_[node], end = s_.pattern_start[node + 1];
-      Index inside = first;
-      while (inside < end && s_.pattern[inside] < last_column) ++inside;
-      w.descendants.push_back({node, first, static_cast<int>(inside - first), static_cast<int>(end - first)});
-    }
+  w->descendants.clear();
+  for (int node = head_[s].load(std::memory_order_acquire); node >= 0; node = next_[node]) {
+    const Index first = next_row_[node], end = s_.pattern_start[node + 1];
+    Index inside = first;
+    while (inside < end && s_.pattern[inside] < last_column) ++inside;
+    w->descendants.push_back({node, first, static_cast<int>(inside - first), static_cast<int>(end - first)});
+  }
   // CHOLMOD's order: its one list has the last linked first.
-  std::sort(w.descendants.begin(), w.descendants.end(),
+  std::sort(w->descendants.begin(), w->descendants.end(),
             [&](const Descendant& a, const Descendant& b) { return key_[a.node] > key_[b.node]; });
 }
 
@@ -126,67 +128,42 @@ void SupernodalFactorization<Index>::factor_block(int s, double* values) const {
 }
 
 template <class Index>
-void SupernodalFactorization<Index>::advance(int s, int worker) {
-  const std::vector<Descendant>& descendants = workspace_[worker].descendants;
-  for (std::size_t i = 0; i < descendants.size(); ++i)
-    link(descendants[i].node, descendants[i].first + descendants[i].inside, worker, {s, static_cast<int>(i)});
-}
-
-template <class Index>
-void SupernodalFactorization<Index>::factor_supernode(int s, int worker, const LowerTriangle& A, double* values) {
-  const BlockShape b = block_shape(s_, s);
-  const Index first_row = s_.pattern_start[s];
-  Workspace& w = workspace_[worker];
-  for (int i = 0; i < b.rows; ++i) w.local_row[static_cast<std::size_t>(s_.pattern[first_row + i])] = i;
-  assemble(s, A, w.local_row, values);
-  collect(s, worker);
-  for (const Descendant& d : w.descendants) apply_update(d, s, &w, values);
-  advance(s, worker);
-  const Key key{s, static_cast<int>(w.descendants.size())};  // s links after its descendants
-  factor_block(s, values);
-  link(s, first_row + b.columns, worker, key);
-}
-
-template <class Index>
-void SupernodalFactorization<Index>::factor_unless_stopped(int s, int worker, const LowerTriangle& A, double* values) {
-  if (stopped_.load(std::memory_order_relaxed)) return;
-  try {
-    factor_supernode(s, worker, A, values);
-  } catch (...) {
-    stopped_.store(true, std::memory_order_relaxed);
-    throw;
+void SupernodalFactorization<Index>::advance(int s, const Workspace& w) {
+  for (std::size_t i = 0; i < w.descendants.size(); ++i) {
+    const Descendant& d = w.descendants[i];
+    link(d.node, d.first + d.inside, {s, static_cast<int>(i)});
   }
 }
 
 template <class Index>
-void SupernodalFactorization<Index>::factor_top(int s, const LowerTriangle& A, double* values) {
-  // Branches of the top are disjoint: they run concurrently (a supernode
-  // needs only its descendants, all finished before it starts).
-  const std::vector<int>& children = top_children_[s];
-  if (children.size() == 1)
-    factor_top(children.front(), A, values);
-  else if (children.size() > 1)
-    tbb::parallel_for_each(children.begin(), children.end(), [&](int child) { factor_top(child, A, values); });
-  factor_unless_stopped(s, tbb::this_task_arena::current_thread_index(), A, values);
+void SupernodalFactorization<Index>::factor_supernode(int s, const LowerTriangle& A, double* values) {
+  if (stopped_.load(std::memory_order_relaxed)) return;
+  const BlockShape b = block_shape(s_, s);
+  const Index first_row = s_.pattern_start[s];
+  Workspace& w = workspaces_.local();
+  for (int i = 0; i < b.rows; ++i) w.local_row[static_cast<std::size_t>(s_.pattern[first_row + i])] = i;
+  assemble(s, A, w.local_row, values);
+  collect(s, &w);
+  for (const Descendant& d : w.descendants) apply_update(d, s, &w, values);
+  advance(s, w);
+  const Key key{s, static_cast<int>(w.descendants.size())};  // s links after its descendants
+  try {
+    factor_block(s, values);
+  } catch (...) {
+    stopped_.store(true, std::memory_order_relaxed);
+    throw;
+  }
+  link(s, first_row + b.columns, key);
 }
 
 template <class Index>
 void SupernodalFactorization<Index>::factorize(const LowerTriangle& A, double* values) {
   if (A.n != s_.columns()) throw NumericalError("SupernodalFactorization: the matrix does not fit the analysis");
-  for (auto& head : head_) head.assign(static_cast<std::size_t>(s_.supernodes), -1);
+  for (std::atomic<int>& head : head_) head.store(-1, std::memory_order_relaxed);
   stopped_.store(false);
-  // Two workers, so that each has its own lists and workspace (the arena's
-  // thread index names the worker).
-  tbb::task_arena arena(2);
-  arena.execute([&] {
-    tbb::parallel_invoke(
-        [&] {
-          for (int s : group_[0]) factor_unless_stopped(s, 0, A, values);
-        },
-        [&] {
-          for (int s : group_[1]) factor_unless_stopped(s, 1, A, values);
-        });
-    tbb::parallel_for_each(top_roots_.begin(), top_roots_.end(), [&](int root) { factor_top(root, A, values); });
+  schedule_.bottom_up([&](int unit) {
+    for (const int* s = schedule_.nodes_begin(unit); s != schedule_.nodes_end(unit); ++s)
+      factor_supernode(*s, A, values);
   });
 }
 

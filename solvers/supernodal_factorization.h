@@ -1,6 +1,6 @@
 #pragma once
 // Numeric supernodal Cholesky factorization A = L L^T on the symbolic
-// structure of CHOLMOD's analysis, on two cores.
+// structure of CHOLMOD's analysis, on any number of threads.
 //
 // The algorithm is CHOLMOD's left-looking supernodal one (Chen, Davis, Hager
 // and Rajamanickam 2008, as in cholmod_super_numeric): for each supernode s
@@ -9,15 +9,10 @@
 // s, :)^T (into a buffer, scattered into s's block), then the diagonal
 // block is factored and the rows below it solved (dense_block_kernels.h:
 // CHOLMOD's BLAS and LAPACK calls, dsyrk, dgemm, dpotrf and dtrsm, for large
-// blocks, plain loops for small ones). CHOLMOD 3 runs that loop on one core;
-// on this 2-core machine its factorization of a large mesh's K used one
-// core. Here the same loop runs on two:
-//  - below a cut of the elimination tree, two groups of disjoint subtrees
-//    (supernodal_tree.h) are factored at the same time, one per core; a
-//    subtree's supernodes update only each other and the top;
-//  - above the cut (the top: the largest separators of the nested
-//    dissection), disjoint branches run concurrently.
-// A supernode needs only its descendants, all finished before it starts.
+// blocks, plain loops for small ones). CHOLMOD 3 runs that loop on one core.
+// Here a supernode needs only its descendants, so disjoint subtrees are
+// factored at once, scheduled as a task graph over the elimination tree
+// (supernodal_tree.h, TreeSchedule) on the calling arena's threads.
 // Each supernode's updates are applied in CHOLMOD's order (the last linked
 // first: every link is keyed by when CHOLMOD's one loop would have made it),
 // and each block operation's arithmetic depends on its shape only, so the
@@ -27,7 +22,10 @@
 // (tested: the solution within 1e-10 of CHOLMOD's). Splitting one
 // supernode's work between the cores (an update's rows, or the rows of its
 // triangular solve) changed the shapes of the BLAS calls and gained nothing
-// the branch concurrency did not: measured and left out.
+// on two cores; on many cores the top separators' blocks bound the speed-up
+// (TreeSchedule::critical_path_share, docs/performance.md).
+#include <tbb/enumerable_thread_specific.h>
+
 #include <atomic>
 #include <vector>
 
@@ -49,13 +47,16 @@ struct LowerTriangle {
 template <class Index>
 class SupernodalFactorization {
  public:
-  // Splits the elimination tree (the structure must outlive this object).
+  // Schedules the elimination tree (the structure must outlive this object).
   explicit SupernodalFactorization(const SupernodalStructure<Index>& structure);
 
   // Fills values (structure.value_start[supernodes] entries, CHOLMOD's
   // supernodal layout) with L. Throws NotPositiveDefinite (naming the
   // column) when a pivot is not positive.
   void factorize(const LowerTriangle& A, double* values);
+
+  // The flops on the elimination tree's longest chain over all flops.
+  double critical_path_share() const { return schedule_.critical_path_share(); }
 
  private:
   // An update of the supernode being built by supernode `node`: its rows
@@ -73,8 +74,8 @@ class SupernodalFactorization {
     int node, order;
     bool operator>(const Key& other) const { return node != other.node ? node > other.node : order > other.order; }
   };
-  // What one worker (core) needs: the local row of each row of the
-  // supernode being built, its descendants, the update buffer.
+  // What one thread needs: the local row of each row of the supernode being
+  // built, its descendants, the update buffer.
   struct Workspace {
     std::vector<int> local_row;  // by global row; valid for the rows of the supernode being built
     std::vector<Descendant> descendants;
@@ -82,38 +83,35 @@ class SupernodalFactorization {
     std::vector<double> update;
   };
 
-  void factor_supernode(int s, int worker, const LowerTriangle& A, double* values);
-  // factor_supernode, unless a worker met a non-positive pivot: then the
-  // other stops at its next supernode, so that a matrix that is not
-  // positive definite (projected Newton's exact Hessian far from the
-  // minimum) costs the work up to its first bad pivot, not a whole
-  // factorization (the group without the pivot used to run to its end).
-  void factor_unless_stopped(int s, int worker, const LowerTriangle& A, double* values);
-  // s's branch of the top, then s.
-  void factor_top(int s, const LowerTriangle& A, double* values);
+  // Assembles s, applies its descendants' updates and factors it, unless
+  // another thread met a non-positive pivot: then the factorization costs
+  // the work up to its first bad pivot (projected Newton's exact Hessian
+  // far from the minimum), not a whole factorization.
+  void factor_supernode(int s, const LowerTriangle& A, double* values);
   void assemble(int s, const LowerTriangle& A, const std::vector<int>& local_row, double* values) const;
-  // s's descendants from both workers' lists, in CHOLMOD's order.
-  void collect(int s, int worker);
+  // s's descendants, in CHOLMOD's order.
+  void collect(int s, Workspace* w) const;
   void apply_update(const Descendant& d, int s, Workspace* w, double* values) const;
   // s's diagonal block into L11 L11^T, the rows below into L21 = A21 L11^-T.
   void factor_block(int s, double* values) const;
   // After s's descendants were applied: each is linked to the supernode it updates next.
-  void advance(int s, int worker);
-  void link(int d, Index position, int worker, Key key);
+  void advance(int s, const Workspace& w);
+  // Pushes d on the list of the supernode holding row pattern[position]
+  // (lock-free: threads in disjoint subtrees may push on one list).
+  void link(int d, Index position, Key key);
 
   SupernodalStructure<Index> s_;
   std::vector<int> column_node_;
-  std::vector<int> group_[2];                   // supernodes, in increasing order
-  std::vector<int> top_roots_;                  // the roots of the top's branches
-  std::vector<std::vector<int>> top_children_;  // children of top supernodes that are in the top
+  TreeSchedule schedule_;
   // Per factorization: each supernode's next row to update (an index into
-  // the pattern), and per worker the linked lists of supernodes waiting to
-  // update each supernode, with the keys of their links.
+  // the pattern), and the linked lists of supernodes waiting to update each
+  // supernode, with the keys of their links.
   std::vector<Index> next_row_;
-  std::vector<int> head_[2], next_;
+  std::vector<std::atomic<int>> head_;
+  std::vector<int> next_;
   std::vector<Key> key_;
-  Workspace workspace_[2];
-  std::atomic<bool> stopped_{false};  // a worker met a non-positive pivot in this factorization
+  tbb::enumerable_thread_specific<Workspace> workspaces_;
+  std::atomic<bool> stopped_{false};  // a thread met a non-positive pivot in this factorization
 };
 
 }  // namespace akvf

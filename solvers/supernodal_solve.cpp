@@ -1,6 +1,8 @@
 #include "solvers/supernodal_solve.h"
 
-#include <tbb/parallel_invoke.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <cholmod.h>  // SuiteSparse_long
 #include <Eigen/Core>
@@ -16,38 +18,56 @@ using Block = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
 }  // namespace
 
 template <class Index>
-SupernodalSolve<Index>::SupernodalSolve(const SupernodalStructure<Index>& structure) : s_(structure) {
+SupernodalSolve<Index>::SupernodalSolve(const SupernodalStructure<Index>& structure)
+    : s_(structure), tree_(supernodal_tree(structure)) {
   const int n_super = static_cast<int>(s_.supernodes);
-  const int n = s_.columns();
-  const SupernodalTree tree = supernodal_tree(s_);
-  // A supernode's work: the entries of its block (each is read once).
-  std::vector<double> work(n_super);
+  work_.resize(n_super);
   for (int node = 0; node < n_super; ++node) {
     const BlockShape b = block_shape(s_, node);
-    work[node] = 0.5 * b.columns * (b.columns + 1) + double(b.rows - b.columns) * b.columns;
+    work_[node] = 0.5 * b.columns * (b.columns + 1) + double(b.rows - b.columns) * b.columns;
   }
-  const std::vector<char> owner = split_subtrees(tree, work, 1.0);
-  const double total = std::accumulate(work.begin(), work.end(), 0.0);
-  double top_entries = 0;
-  for (int node = 0; node < n_super; ++node) {
-    (owner[node] == kTop ? top_ : group_[static_cast<int>(owner[node])]).push_back(node);
-    if (owner[node] == kTop) top_entries += work[node];
-  }
-  top_share_ = total > 0 ? top_entries / total : 0;
-  column_owner_.resize(n);
-  for (int j = 0; j < n; ++j) column_owner_[j] = owner[tree.column_node[j]];
-  top_updates_.assign(n, 0);
-  int widest = 0;
-  for (int node = 0; node < n_super; ++node) widest = std::max(widest, block_shape(s_, node).rows);
-  for (auto& scratch : scratch_) scratch.resize(widest);
 }
 
-// L y = z over one group's supernodes (group 2 = the top).
+template <class Index>
+void SupernodalSolve<Index>::split(int groups) {
+  const int n_super = static_cast<int>(s_.supernodes);
+  const std::vector<int> owner = split_subtrees(tree_, work_, groups);
+  groups_.assign(groups, {});
+  top_.clear();
+  top_columns_.clear();
+  double top_entries = 0;
+  int widest = 0;
+  for (int node = 0; node < n_super; ++node) {
+    widest = std::max(widest, block_shape(s_, node).rows);
+    if (owner[node] != kTop) {
+      groups_[owner[node]].push_back(node);
+      continue;
+    }
+    top_.push_back(node);
+    top_entries += work_[node];
+    for (Index j = s_.first_column[node]; j < s_.first_column[node + 1]; ++j)
+      top_columns_.push_back(static_cast<int>(j));
+  }
+  const double total = std::accumulate(work_.begin(), work_.end(), 0.0);
+  top_share_ = total > 0 ? top_entries / total : 0;
+  column_top_.assign(s_.columns(), -1);
+  for (std::size_t i = 0; i < top_columns_.size(); ++i) column_top_[top_columns_[i]] = static_cast<int>(i);
+  top_updates_.assign(groups - 1, std::vector<double>(top_columns_.size(), 0.0));
+  scratch_.assign(groups + 1, std::vector<double>(widest));
+  affinity_ = std::make_unique<tbb::affinity_partitioner>();
+}
+
+template <class Index>
+double SupernodalSolve<Index>::top_share(int groups) {
+  if (static_cast<int>(groups_.size()) != groups) split(groups);
+  return top_share_;
+}
+
 template <class Index>
 void SupernodalSolve<Index>::forward(const double* values, int group, double* z) {
-  const std::vector<int>& order = group == kTop ? top_ : group_[group];
-  std::vector<double>& scratch = scratch_[group == kGroup1 ? 1 : 0];
-  for (int node : order) {
+  std::vector<double>& scratch = scratch_[group == kTop ? groups_.size() : group];
+  double* top_updates = group == kTop || group == 0 ? nullptr : top_updates_[group - 1].data();
+  for (int node : members(group)) {
     const BlockShape b = block_shape(s_, node);
     const Block L(values + s_.value_start[node], b.rows, b.columns, Eigen::OuterStride<>(b.rows));
     Eigen::Map<Eigen::VectorXd> y(z + b.first_column, b.columns);
@@ -58,18 +78,21 @@ void SupernodalSolve<Index>::forward(const double* values, int group, double* z)
     update.noalias() = L.bottomRows(below_count) * y;
     for (int i = 0; i < below_count; ++i) {
       const Index row = below[i];
-      if (group == kGroup1 && column_owner_[row] == kTop)
-        top_updates_[row] += update[i];  // group 0 may be writing z[row] now
+      // A row below a group's supernode is the group's own or the top's
+      // (group 0 writes those, the others keep theirs apart).
+      const int top_index = top_updates ? column_top_[static_cast<std::size_t>(row)] : -1;
+      if (top_index >= 0)
+        top_updates[top_index] += update[i];
       else
         z[row] -= update[i];
     }
   }
 }
 
-// L^T x = y over supernodes `order`, last first.
 template <class Index>
-void SupernodalSolve<Index>::backward(const double* values, const std::vector<int>& order, double* z,
-                                      std::vector<double>* scratch) const {
+void SupernodalSolve<Index>::backward(const double* values, int group, double* z) {
+  std::vector<double>& scratch = scratch_[group == kTop ? groups_.size() : group];
+  const std::vector<int>& order = members(group);
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     const int node = *it;
     const BlockShape b = block_shape(s_, node);
@@ -77,7 +100,7 @@ void SupernodalSolve<Index>::backward(const double* values, const std::vector<in
     Eigen::Map<Eigen::VectorXd> x(z + b.first_column, b.columns);
     const int below_count = b.rows - b.columns;
     const Index* below = s_.pattern + s_.pattern_start[node] + b.columns;
-    Eigen::Map<Eigen::VectorXd> known(scratch->data(), below_count);
+    Eigen::Map<Eigen::VectorXd> known(scratch.data(), below_count);
     for (int i = 0; i < below_count; ++i) known[i] = z[below[i]];
     x.noalias() -= L.bottomRows(below_count).transpose() * known;
     L.topRows(b.columns).triangularView<Eigen::Lower>().transpose().solveInPlace(x);
@@ -86,16 +109,28 @@ void SupernodalSolve<Index>::backward(const double* values, const std::vector<in
 
 template <class Index>
 void SupernodalSolve<Index>::solve(const double* values, double* z) {
-  tbb::parallel_invoke([&] { forward(values, kGroup0, z); }, [&] { forward(values, kGroup1, z); });
-  for (int node : top_)
-    for (Index j = s_.first_column[node]; j < s_.first_column[node + 1]; ++j) {
-      z[j] -= top_updates_[j];
-      top_updates_[j] = 0;
+  const int threads = std::max(2, tbb::this_task_arena::max_concurrency());
+  if (static_cast<int>(groups_.size()) != threads) split(threads);
+  const tbb::blocked_range<int> groups(0, threads, 1);
+  tbb::parallel_for(
+      groups,
+      [&](const tbb::blocked_range<int>& range) {
+        for (int g = range.begin(); g != range.end(); ++g) forward(values, g, z);
+      },
+      *affinity_);
+  for (std::size_t i = 0; i < top_columns_.size(); ++i)
+    for (std::vector<double>& updates : top_updates_) {
+      z[top_columns_[i]] -= updates[i];
+      updates[i] = 0;
     }
   forward(values, kTop, z);
-  backward(values, top_, z, &scratch_[0]);
-  tbb::parallel_invoke([&] { backward(values, group_[0], z, &scratch_[0]); },
-                       [&] { backward(values, group_[1], z, &scratch_[1]); });
+  backward(values, kTop, z);
+  tbb::parallel_for(
+      groups,
+      [&](const tbb::blocked_range<int>& range) {
+        for (int g = range.begin(); g != range.end(); ++g) backward(values, g, z);
+      },
+      *affinity_);
 }
 
 template class SupernodalSolve<int>;

@@ -1,28 +1,31 @@
 #include "solvers/supernodal_tree.h"
 
-#include <cholmod.h>  // SuiteSparse_long
+#include <tbb/task_group.h>
 
+#include <cholmod.h>  // SuiteSparse_long
 #include <algorithm>
+#include <atomic>
+#include <memory>
 #include <numeric>
 
 namespace akvf {
 
 namespace {
 
-// Splits `roots` (subtree work w) into two groups, heaviest first into the
-// lighter group; returns the heavier group's work and the assignment.
-double balance(const std::vector<int>& roots, const std::vector<double>& w, std::vector<char>* group) {
+// Splits `roots` (subtree work w) into `groups` groups, heaviest first into
+// the lightest group; returns the heaviest group's work and the assignment.
+double balance(const std::vector<int>& roots, const std::vector<double>& w, int groups, std::vector<int>* group) {
   std::vector<int> order(roots.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return w[roots[a]] > w[roots[b]]; });
-  double load[2] = {0, 0};
+  std::vector<double> load(groups, 0.0);
   group->assign(roots.size(), 0);
   for (int i : order) {
-    const int g = load[1] < load[0] ? 1 : 0;
-    (*group)[i] = static_cast<char>(g);
+    const int g = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    (*group)[i] = g;
     load[g] += w[roots[i]];
   }
-  return std::max(load[0], load[1]);
+  return *std::max_element(load.begin(), load.end());
 }
 
 }  // namespace
@@ -49,16 +52,126 @@ SupernodalTree supernodal_tree(const SupernodalStructure<Index>& s) {
   return tree;
 }
 
-std::vector<char> split_subtrees(const SupernodalTree& tree, const std::vector<double>& work, double top_weight) {
+TreeSchedule::TreeSchedule(const SupernodalTree& tree, const std::vector<double>& work, double min_unit_work) {
+  const int n_super = static_cast<int>(tree.parent.size());
+  if (n_super == 0) return;
+  std::vector<double> subtree = work, chain = work;
+  for (int node = 0; node < n_super; ++node)  // children have smaller indices
+    if (const int p = tree.parent[node]; p >= 0) {
+      subtree[p] += subtree[node];
+      chain[p] = std::max(chain[p], work[p] + chain[node]);
+    }
+  double total = 0, longest = 0;
+  for (int root : tree.roots) {
+    total += subtree[root];
+    longest = std::max(longest, chain[root]);
+  }
+  critical_path_share_ = total > 0 ? longest / total : 0;
+
+  // Parents first. A supernode whose subtree passes the limit is large:
+  // large supernodes form chains (a large one joins its parent's chain when
+  // it is the parent's only large child: the two could not run at once
+  // anyway), and each subtree below them is one unit.
+  const double limit = std::max(total / kUnits, min_unit_work);
+  std::vector<int> large_children(n_super, 0);
+  for (int node = 0; node < n_super; ++node)
+    if (tree.parent[node] >= 0 && subtree[node] > limit) ++large_children[tree.parent[node]];
+  std::vector<int>& unit_of = unit_of_;
+  unit_of.resize(n_super);
+  std::vector<int> unit_root;
+  std::vector<char> is_chain;
+  for (int node = n_super - 1; node >= 0; --node) {
+    const int p = tree.parent[node];
+    const bool large = subtree[node] > limit;
+    if (p >= 0 && (large ? is_chain[unit_of[p]] && large_children[p] == 1 : !is_chain[unit_of[p]])) {
+      unit_of[node] = unit_of[p];
+      continue;
+    }
+    unit_of[node] = static_cast<int>(unit_root.size());
+    unit_root.push_back(node);
+    is_chain.push_back(large);
+  }
+  const int n_units = static_cast<int>(unit_root.size());
+  unit_start_.assign(n_units + 1, 0);
+  for (int node = 0; node < n_super; ++node) ++unit_start_[unit_of[node] + 1];
+  std::partial_sum(unit_start_.begin(), unit_start_.end(), unit_start_.begin());
+  unit_nodes_.resize(n_super);
+  std::vector<int> fill(unit_start_.begin(), unit_start_.end() - 1);
+  for (int node = 0; node < n_super; ++node) unit_nodes_[fill[unit_of[node]]++] = node;
+
+  unit_parent_.resize(n_units);
+  child_start_.assign(n_units + 1, 0);
+  for (int u = 0; u < n_units; ++u) {
+    const int p = tree.parent[unit_root[u]];
+    unit_parent_[u] = p >= 0 ? unit_of[p] : -1;
+    if (p >= 0) ++child_start_[unit_parent_[u] + 1];
+  }
+  std::partial_sum(child_start_.begin(), child_start_.end(), child_start_.begin());
+  child_units_.resize(child_start_.back());
+  fill.assign(child_start_.begin(), child_start_.end() - 1);
+  for (int u = 0; u < n_units; ++u) {
+    if (unit_parent_[u] >= 0)
+      child_units_[fill[unit_parent_[u]]++] = u;
+    else
+      root_units_.push_back(u);
+    if (child_start_[u + 1] == child_start_[u]) leaf_units_.push_back(u);
+  }
+}
+
+void TreeSchedule::bottom_up(const std::function<void(int)>& visit) const {
+  const int n_units = units();
+  if (n_units <= 1) {
+    if (n_units == 1) visit(0);
+    return;
+  }
+  // Each unit counts the child units not yet done; the task finishing the
+  // last one goes on with the parent.
+  const std::unique_ptr<std::atomic<int>[]> waiting(new std::atomic<int>[n_units]);
+  for (int u = 0; u < n_units; ++u) waiting[u].store(child_start_[u + 1] - child_start_[u], std::memory_order_relaxed);
+  const auto climb = [&](int u) {
+    for (;;) {
+      visit(u);
+      u = unit_parent_[u];
+      if (u < 0 || waiting[u].fetch_sub(1, std::memory_order_acq_rel) != 1) return;
+    }
+  };
+  tbb::task_group group;
+  for (int u : leaf_units_) group.run([&climb, u] { climb(u); });
+  group.wait();
+}
+
+void TreeSchedule::top_down(const std::function<void(int)>& visit) const {
+  const int n_units = units();
+  if (n_units <= 1) {
+    if (n_units == 1) visit(0);
+    return;
+  }
+  tbb::task_group group;
+  // A unit, then its child units: the first on this task, the others on new
+  // ones.
+  std::function<void(int)> descend = [&](int u) {
+    for (;;) {
+      visit(u);
+      const int first = child_start_[u], end = child_start_[u + 1];
+      if (first == end) return;
+      for (int c = first + 1; c < end; ++c) group.run([&descend, u = child_units_[c]] { descend(u); });
+      u = child_units_[first];
+    }
+  };
+  for (int u : root_units_) group.run([&descend, u] { descend(u); });
+  group.wait();
+}
+
+std::vector<int> split_subtrees(const SupernodalTree& tree, const std::vector<double>& work, int groups) {
   const int n_super = static_cast<int>(tree.parent.size());
   std::vector<double> subtree = work;
   for (int node = 0; node < n_super; ++node)  // children have smaller indices
     if (tree.parent[node] >= 0) subtree[tree.parent[node]] += subtree[node];
 
   std::vector<int> frontier = tree.roots, best_frontier = tree.roots;
-  std::vector<char> group, best_group;
+  std::vector<int> group, best_group;
   double top_work = 0;
-  double best_time = balance(frontier, subtree, &best_group);
+  double best_time = balance(frontier, subtree, groups, &best_group);
   for (int step = 0; step < 256 && !frontier.empty(); ++step) {
     const auto heaviest =
         std::max_element(frontier.begin(), frontier.end(), [&](int a, int b) { return subtree[a] < subtree[b]; });
@@ -66,7 +179,7 @@ std::vector<char> split_subtrees(const SupernodalTree& tree, const std::vector<d
     frontier.erase(heaviest);
     top_work += work[node];
     frontier.insert(frontier.end(), tree.children[node].begin(), tree.children[node].end());
-    const double time = top_weight * top_work + balance(frontier, subtree, &group);
+    const double time = top_work + balance(frontier, subtree, groups, &group);
     if (time < best_time) {
       best_time = time;
       best_frontier = frontier;
@@ -75,7 +188,7 @@ std::vector<char> split_subtrees(const SupernodalTree& tree, const std::vector<d
   }
 
   // A frontier subtree belongs to its group, everything above it to the top.
-  std::vector<char> owner(n_super, kTop);
+  std::vector<int> owner(n_super, kTop);
   for (std::size_t i = 0; i < best_frontier.size(); ++i) owner[best_frontier[i]] = best_group[i];
   for (int node = n_super - 1; node >= 0; --node)
     if (owner[node] == kTop && tree.parent[node] >= 0 && owner[tree.parent[node]] != kTop)

@@ -1,8 +1,9 @@
-// SparseCholesky: ordering on the vertex graph, our (two-core) supernodal
+// SparseCholesky: ordering on the vertex graph, our (multi-threaded) supernodal
 // solve and CHOLMOD's simplicial one against a direct dense reference.
 #include <doctest/doctest.h>
 
 #include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include "akvf/error.h"
 #include "framework/optimization/distortion_objective.h"
@@ -116,30 +117,29 @@ TEST_CASE("a block size that does not divide the matrix is refused") {
   CHECK(akvf::test::error_message([&] { cholesky.analyze(K.upper(), 3); }).find("block size") != std::string::npos);
 }
 
-TEST_CASE("the supernodal solve splits the elimination tree across two cores and gives the same bits on one") {
-  const akvf::ElementMatrix2D K = shifted_killing(70);
-  akvf::SparseCholesky cholesky;
-  cholesky.analyze(K.upper(), 2);
-  cholesky.factorize(K.upper());
-  REQUIRE(cholesky.supernodal());
-  // Most of the factor is in the two concurrent groups.
-  CHECK(cholesky.serial_solve_share() < 0.3);
-  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), -1.0, 2.0).array().cos();
-  std::vector<Eigen::VectorXd> solutions;
-  for (const int threads : {1, 2, 2, 1}) {
+namespace {
+
+// x = A^-1 b by `cholesky` (analyzed), factored on `factor_threads` threads
+// and solved on `solve_threads`.
+Eigen::VectorXd factor_and_solve(akvf::SparseCholesky& cholesky, const akvf::ElementMatrix2D& K,
+                                 const Eigen::VectorXd& b, int factor_threads, int solve_threads) {
+  Eigen::VectorXd x;
+  const auto on = [](int threads, const auto& work) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    Eigen::VectorXd x;
-    cholesky.solve(b, &x);
-    solutions.push_back(x);
-  }
-  for (const auto& x : solutions) CHECK(x == solutions.front());
-  const Eigen::SparseMatrix<double> A = K.upper().selfadjointView<Eigen::Upper>();
-  CHECK((A * solutions.front() - b).norm() <= 1e-10 * b.norm());
+    tbb::task_arena arena(threads);
+    arena.execute(work);
+  };
+  on(factor_threads, [&] { cholesky.factorize(K.upper()); });
+  on(solve_threads, [&] { cholesky.solve(b, &x); });
+  return x;
 }
 
-TEST_CASE("the two-core supernodal factorization: the same bits on one thread or two, 32- or 64-bit, and CHOLMOD's to rounding") {
-  // 70 x 70: AMD's ordering; 160 x 160: METIS's, a top with several
-  // branches and blocks large enough for BLAS (dense_block_kernels.h).
+}  // namespace
+
+TEST_CASE("the factor has the same bits on 1, 2, 3, 4 and 8 threads, 32- or 64-bit, and CHOLMOD's to rounding") {
+  // 70 x 70: AMD's ordering; 160 x 160: METIS's, a tree with several
+  // branches at the top and blocks large enough for BLAS
+  // (dense_block_kernels.h).
   for (const int nx : {70, 160}) {
     CAPTURE(nx);
     const akvf::ElementMatrix2D K = shifted_killing(nx);
@@ -158,13 +158,15 @@ TEST_CASE("the two-core supernodal factorization: the same bits on one thread or
       ours.analyze(K.upper(), 2);
       REQUIRE(ours.supernodal());
       CHECK(ours.ordering() == (nx == 70 ? "amd" : "metis"));
-      for (const int threads : {2, 1, 2}) {  // a second factorization reuses the first's lists and memory
+      // Most of the flops are off the tree's longest chain, so threads have
+      // subtrees to share.
+      CHECK(ours.factor_critical_path_share() < 0.5);
+      // Factored on each thread count (more threads than cores still run as
+      // separate threads), solved on two: a second factorization reuses the
+      // first's lists and memory.
+      for (const int threads : {1, 2, 3, 4, 8, 1}) {
         CAPTURE(threads);
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        ours.factorize(K.upper());
-        Eigen::VectorXd x;
-        ours.solve(b, &x);
-        ours_solutions.push_back(x);
+        ours_solutions.push_back(factor_and_solve(ours, K, b, threads, 2));
       }
     }
     for (const Eigen::VectorXd& x : ours_solutions) CHECK(x == ours_solutions.front());
@@ -173,6 +175,29 @@ TEST_CASE("the two-core supernodal factorization: the same bits on one thread or
     CHECK((ours_solutions.front() - by_cholmod).norm() <= 1e-10 * by_cholmod.norm());
     CHECK((ours_solutions.front() - by_cholmod).norm() > 0);
   }
+}
+
+TEST_CASE(
+    "the supernodal solve: the same bits for a given thread count (one as two), and the same solution to rounding on "
+    "any") {
+  const akvf::ElementMatrix2D K = shifted_killing(160);
+  akvf::SparseCholesky cholesky;
+  cholesky.analyze(K.upper(), 2);
+  REQUIRE(cholesky.supernodal());
+  // With two threads most of the factor is in the concurrent groups.
+  CHECK(cholesky.solve_top_share(2) < 0.3);
+  CHECK(cholesky.solve_top_share(4) < 0.4);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), -1.0, 2.0).array().cos();
+  const Eigen::VectorXd one = factor_and_solve(cholesky, K, b, 1, 1);
+  CHECK(factor_and_solve(cholesky, K, b, 2, 2) == one);
+  for (const int threads : {3, 4, 8}) {
+    CAPTURE(threads);
+    const Eigen::VectorXd x = factor_and_solve(cholesky, K, b, threads, threads);
+    CHECK(factor_and_solve(cholesky, K, b, 1, threads) == x);  // again, after another thread count's solve
+    CHECK((x - one).norm() <= 1e-12 * one.norm());
+  }
+  const Eigen::SparseMatrix<double> A = K.upper().selfadjointView<Eigen::Upper>();
+  CHECK((A * one - b).norm() <= 1e-10 * b.norm());
 }
 
 TEST_CASE("CHOLMOD's 64-bit interface gives the 32-bit interface's bits, analyzed or copied") {

@@ -11,6 +11,7 @@
 //   PETSc's GAMG on the same systems where PETSc is installed (gamg_solve.h).
 // Run: ./build/akvf_benchmarks [--benchmark_filter=horse]
 #include <benchmark/benchmark.h>
+#include <tbb/task_arena.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -22,6 +23,7 @@
 #include "akvf/backtracking_line_search.h"
 #include "akvf/internal/parameterization.h"
 #include "akvf/mesh_io.h"
+#include "akvf/threads.h"
 #include "energies/arap.h"
 #include "energies/symmetric_dirichlet.h"
 #include "experiments/bench/gamg_solve.h"
@@ -107,10 +109,12 @@ akvf::ElementMatrix2D shifted_killing_operator(const Fixture& f) {
 
 // by_cholmod: CHOLMOD alone (its default analysis settings and its own
 // one-core numeric factorization) instead of ours (every factor supernodal,
-// small supernodes merged more, solvers/supernodal_factorization.h on two
-// cores).
-void BM_NumericFactorization(benchmark::State& state, const std::string& mesh, int subdivide, bool by_cholmod) {
+// small supernodes merged more, solvers/supernodal_factorization.h on
+// `threads` threads, 0 = all cores).
+void BM_NumericFactorization(benchmark::State& state, const std::string& mesh, int subdivide, bool by_cholmod,
+                             int threads) {
   REQUIRE_FIXTURE(state, mesh, subdivide);
+  const akvf::ThreadLimit limit(threads);
   const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
   akvf::SparseCholesky cholesky;
   cholesky.use_cholmod_alone(by_cholmod);
@@ -119,6 +123,7 @@ void BM_NumericFactorization(benchmark::State& state, const std::string& mesh, i
   state.counters["nnz(L)"] = cholesky.factor_nonzeros();
   state.counters["MiB(L)"] = cholesky.factor_bytes() / (1 << 20);
   state.counters["flops"] = benchmark::Counter(cholesky.factor_flops(), benchmark::Counter::kIsIterationInvariantRate);
+  if (!by_cholmod) state.counters["critical_path"] = cholesky.factor_critical_path_share();
 }
 
 void BM_SymbolicAnalysis(benchmark::State& state, const std::string& mesh, int subdivide) {
@@ -130,8 +135,9 @@ void BM_SymbolicAnalysis(benchmark::State& state, const std::string& mesh, int s
   }
 }
 
-void BM_Solve(benchmark::State& state, const std::string& mesh, int subdivide) {
+void BM_Solve(benchmark::State& state, const std::string& mesh, int subdivide, int threads) {
   REQUIRE_FIXTURE(state, mesh, subdivide);
+  const akvf::ThreadLimit limit(threads);
   const akvf::ElementMatrix2D K = shifted_killing_operator(*f);
   akvf::SparseCholesky cholesky;
   cholesky.analyze(K.upper(), 2);  // as the AKVF preconditioner does
@@ -142,7 +148,8 @@ void BM_Solve(benchmark::State& state, const std::string& mesh, int subdivide) {
     cholesky.solve(g, &d);
     benchmark::DoNotOptimize(d.data());
   }
-  state.counters["serial_share"] = cholesky.serial_solve_share();
+  state.counters["serial_share"] =
+      cholesky.solve_top_share(threads > 0 ? threads : tbb::this_task_arena::max_concurrency());
 }
 
 void BM_SymmetricProduct(benchmark::State& state, const std::string& mesh) {
@@ -373,9 +380,9 @@ void register_all() {
   // analyzes again as supernodal with more merging: the factorization,
   // solve and analysis there.
   for (const std::string mesh : {"hilbert_b.obj", "camel_b.obj", "cow_b.obj", "tricera_b.obj"}) {
-    benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh, 0, false)
+    benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh, 0, false, 0)
         ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh, 0)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh, 0, 0)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("SymbolicAnalysis/" + mesh).c_str(), BM_SymbolicAnalysis, mesh, 0)
         ->Unit(benchmark::kMillisecond);
   }
@@ -385,14 +392,14 @@ void register_all() {
     benchmark::RegisterBenchmark(("EnergyGradient/" + mesh).c_str(), BM_EnergyGradient, mesh, 0)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Energy/" + mesh).c_str(), BM_Energy, mesh)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh, 0, false)
+    benchmark::RegisterBenchmark(("NumericFactorization/" + mesh).c_str(), BM_NumericFactorization, mesh, 0, false, 0)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("NumericFactorization/cholmod/" + mesh).c_str(), BM_NumericFactorization, mesh, 0,
-                                 true)
+                                 true, 0)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("SymbolicAnalysis/" + mesh).c_str(), BM_SymbolicAnalysis, mesh, 0)
         ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh, 0)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Solve/" + mesh).c_str(), BM_Solve, mesh, 0, 0)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("SymmetricProduct/" + mesh).c_str(), BM_SymmetricProduct, mesh)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("WholeIteration/" + mesh).c_str(), BM_WholeIteration, mesh, 0)
@@ -418,9 +425,15 @@ void register_all() {
         ->Unit(benchmark::kMillisecond);
     for (const bool by_cholmod : {false, true})
       benchmark::RegisterBenchmark(("NumericFactorization/" + std::string(by_cholmod ? "cholmod/" : "") + name).c_str(),
-                                   BM_NumericFactorization, "horse_b.obj", subdivide, by_cholmod)
+                                   BM_NumericFactorization, "horse_b.obj", subdivide, by_cholmod, 0)
           ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Solve/" + name).c_str(), BM_Solve, "horse_b.obj", subdivide)
+    benchmark::RegisterBenchmark(("Solve/" + name).c_str(), BM_Solve, "horse_b.obj", subdivide, 0)
+        ->Unit(benchmark::kMillisecond);
+    // Ours on one thread: what the threads buy (the same bits).
+    benchmark::RegisterBenchmark(("NumericFactorization/" + name + "/threads:1").c_str(), BM_NumericFactorization,
+                                 "horse_b.obj", subdivide, false, 1)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Solve/" + name + "/threads:1").c_str(), BM_Solve, "horse_b.obj", subdivide, 1)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("SymbolicAnalysis/" + name).c_str(), BM_SymbolicAnalysis, "horse_b.obj", subdivide)
         ->Unit(benchmark::kMillisecond);
