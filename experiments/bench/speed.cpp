@@ -314,6 +314,10 @@ int main(int argc, char** argv) {
       return arg == "--help" || arg == "-h" ? 0 : 2;
     }
   }
+  if (!akvf::energies_2d().contains(energy)) {
+    std::cerr << "akvf_speed: unknown energy '" << energy << "' (`akvf list` names them)\n";
+    return 2;
+  }
   if (!std::filesystem::is_directory(data / "tri")) {
     std::cerr << "akvf_speed: meshes not found in " << data.string() << " (set AKVF_DATA_DIR or --data)\n";
     return 2;
