@@ -6,19 +6,17 @@
 // takes a lock and a buffer at each call: with thousands of small supernodes
 // that overhead is most of the solve. Here the same arithmetic runs through
 // Eigen maps. The supernodal elimination tree is split into as many groups
-// of disjoint subtrees of similar work as the calling arena has threads (at
-// least two), and the rest above them (the top, solved on one thread): the
-// groups are solved concurrently (forward: groups, then top; backward: top,
-// then groups), each group's backward pass on the thread that did its
-// forward pass where TBB can (its affinity partitioner), so that a factor
-// that fits in the caches is read from them the second time. Group 0
-// writes its updates of top rows into z, the others into buffers of their
-// own, subtracted in group order after all groups finish: the result has
-// the same bits for a given number of threads (and on one thread as on
-// two), and agrees to rounding across thread counts. Splitting the tree
-// into a fixed number of groups, or scheduling it as a task graph like the
-// factorization, made the solve on two threads 10-40 % slower on meshes
-// whose factor fits in the caches (horse_b, cow_b).
+// of disjoint subtrees of similar work as the calling arena has slots (at
+// least two; a global thread limit runs them on fewer threads), and the
+// rest above them (the top, solved on one thread). The groups are solved
+// concurrently (forward: groups, then top; backward: top, then groups),
+// each group's backward pass on the thread that did its forward pass where
+// TBB can (its affinity partitioner), so that a factor that fits in the
+// caches is read from them the second time (a task graph like the
+// factorization's loses that: docs/design.md). Group 0 writes its updates
+// of top rows into z, the others into buffers of their own, subtracted in
+// group order after all groups finish: the result has the same bits for a
+// given arena size (one slot as two), and agrees to rounding across sizes.
 #include <tbb/partitioner.h>
 
 #include <memory>

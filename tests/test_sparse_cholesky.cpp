@@ -178,8 +178,7 @@ TEST_CASE("the factor has the same bits on 1, 2, 3, 4 and 8 threads, 32- or 64-b
 }
 
 TEST_CASE(
-    "the supernodal solve: the same bits for a given thread count (one as two), and the same solution to rounding on "
-    "any") {
+    "the supernodal solve: the same bits for a given arena size (one as two), the same solution to rounding on any") {
   const akvf::ElementMatrix2D K = shifted_killing(160);
   akvf::SparseCholesky cholesky;
   cholesky.analyze(K.upper(), 2);
