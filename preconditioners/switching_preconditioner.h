@@ -94,16 +94,14 @@
 // leaves 0.2 of it, so along a direction of about the same length the next
 // bound is about a fifth of the last; a bound that keeps more than
 // `closing_ratio` (half) of the last is not closing in (Newton's far phase
-// on tricera_b subdivided: 0.713, 0.710, 0.693, which sent the run back to
-// AKVF's stalled steps when any decrease counted). An energy without a
-// barrier does that (ARAP without its collapse barrier, energies/arap.h: on
-// cow_b the default stalled at 0.1496 after 37 iterations, alpha_max falling
-// fivefold per step, where AKVF reached 0.01655 in 100; the 3D ARAP has no
-// barrier), and a barrier's stiff neighbourhood can. After `patience` such Newton steps in a
-// row the first preconditioner is rebuilt (its assembly pattern anew) and
-// takes over the second's analysis and factor. Each return doubles the
-// patience of the next switch to the second, so a run whose Newton phases
-// keep meeting the barrier spends ever less of its iterations there.
+// on tricera_b subdivided: 0.713, 0.710, 0.693). An energy whose infimum
+// lies on a collapse does that (the 3D ARAP, which has no collapse barrier,
+// energies/arap.h), and a barrier's stiff neighbourhood can. After
+// `patience` such Newton steps in a row the first preconditioner is rebuilt
+// (its assembly pattern anew) and takes over the second's analysis and
+// factor. Each return doubles the patience of the next switch to the
+// second, so a run whose Newton phases keep meeting the barrier spends ever
+// less of its iterations there.
 // Whichever preconditioner is not in use is released (its report and
 // statistics are kept): its factor would otherwise stay in memory beside the
 // other's.

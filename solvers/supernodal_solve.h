@@ -13,7 +13,7 @@
 // each group's backward pass on the thread that did its forward pass where
 // TBB can (its affinity partitioner), so that a factor that fits in the
 // caches is read from them the second time (a task graph like the
-// factorization's loses that: docs/design.md). Group 0 writes its updates
+// factorization's loses that: docs/notes/2026-11-26-performance.md). Group 0 writes its updates
 // of top rows into z, the others into buffers of their own, subtracted in
 // group order after all groups finish: the result has the same bits for a
 // given arena size (one slot as two), and agrees to rounding across sizes.

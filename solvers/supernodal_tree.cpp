@@ -76,9 +76,7 @@ TreeSchedule::TreeSchedule(const SupernodalTree& tree, const std::vector<double>
   std::vector<int> large_children(n_super, 0);
   for (int node = 0; node < n_super; ++node)
     if (tree.parent[node] >= 0 && subtree[node] > limit) ++large_children[tree.parent[node]];
-  std::vector<int>& unit_of = unit_of_;
-  unit_of.resize(n_super);
-  std::vector<int> unit_root;
+  std::vector<int> unit_of(n_super), unit_root;
   std::vector<char> is_chain;
   for (int node = n_super - 1; node >= 0; --node) {
     const int p = tree.parent[node];
@@ -100,22 +98,14 @@ TreeSchedule::TreeSchedule(const SupernodalTree& tree, const std::vector<double>
   for (int node = 0; node < n_super; ++node) unit_nodes_[fill[unit_of[node]]++] = node;
 
   unit_parent_.resize(n_units);
-  child_start_.assign(n_units + 1, 0);
+  child_count_.assign(n_units, 0);
   for (int u = 0; u < n_units; ++u) {
     const int p = tree.parent[unit_root[u]];
     unit_parent_[u] = p >= 0 ? unit_of[p] : -1;
-    if (p >= 0) ++child_start_[unit_parent_[u] + 1];
+    if (p >= 0) ++child_count_[unit_parent_[u]];
   }
-  std::partial_sum(child_start_.begin(), child_start_.end(), child_start_.begin());
-  child_units_.resize(child_start_.back());
-  fill.assign(child_start_.begin(), child_start_.end() - 1);
-  for (int u = 0; u < n_units; ++u) {
-    if (unit_parent_[u] >= 0)
-      child_units_[fill[unit_parent_[u]]++] = u;
-    else
-      root_units_.push_back(u);
-    if (child_start_[u + 1] == child_start_[u]) leaf_units_.push_back(u);
-  }
+  for (int u = 0; u < n_units; ++u)
+    if (child_count_[u] == 0) leaf_units_.push_back(u);
 }
 
 void TreeSchedule::bottom_up(const std::function<void(int)>& visit) const {
@@ -127,7 +117,7 @@ void TreeSchedule::bottom_up(const std::function<void(int)>& visit) const {
   // Each unit counts the child units not yet done; the task finishing the
   // last one goes on with the parent.
   const std::unique_ptr<std::atomic<int>[]> waiting(new std::atomic<int>[n_units]);
-  for (int u = 0; u < n_units; ++u) waiting[u].store(child_start_[u + 1] - child_start_[u], std::memory_order_relaxed);
+  for (int u = 0; u < n_units; ++u) waiting[u].store(child_count_[u], std::memory_order_relaxed);
   const auto climb = [&](int u) {
     for (;;) {
       visit(u);
@@ -137,28 +127,6 @@ void TreeSchedule::bottom_up(const std::function<void(int)>& visit) const {
   };
   tbb::task_group group;
   for (int u : leaf_units_) group.run([&climb, u] { climb(u); });
-  group.wait();
-}
-
-void TreeSchedule::top_down(const std::function<void(int)>& visit) const {
-  const int n_units = units();
-  if (n_units <= 1) {
-    if (n_units == 1) visit(0);
-    return;
-  }
-  tbb::task_group group;
-  // A unit, then its child units: the first on this task, the others on new
-  // ones.
-  std::function<void(int)> descend = [&](int u) {
-    for (;;) {
-      visit(u);
-      const int first = child_start_[u], end = child_start_[u + 1];
-      if (first == end) return;
-      for (int c = first + 1; c < end; ++c) group.run([&descend, u = child_units_[c]] { descend(u); });
-      u = child_units_[first];
-    }
-  };
-  for (int u : root_units_) group.run([&descend, u] { descend(u); });
   group.wait();
 }
 

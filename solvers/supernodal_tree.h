@@ -67,18 +67,11 @@ class TreeSchedule {
   // supernodes' descendants). Exceptions stop the units not yet started and
   // are rethrown.
   void bottom_up(const std::function<void(int)>& visit) const;
-  // Calls visit(unit) for every unit, each after its parent unit.
-  void top_down(const std::function<void(int)>& visit) const;
 
   int units() const { return static_cast<int>(unit_parent_.size()); }
   // Unit u's supernodes, in increasing order (its root, the largest, last).
   const int* nodes_begin(int u) const { return unit_nodes_.data() + unit_start_[u]; }
   const int* nodes_end(int u) const { return unit_nodes_.data() + unit_start_[u + 1]; }
-  // Its child units, in increasing order of their roots.
-  const int* children_begin(int u) const { return child_units_.data() + child_start_[u]; }
-  const int* children_end(int u) const { return child_units_.data() + child_start_[u + 1]; }
-  // The unit of each supernode.
-  int unit_of(int node) const { return unit_of_[node]; }
 
   // The work on the tree's longest chain over the whole work: the share no
   // number of threads can shorten (speed-up at most its inverse).
@@ -87,11 +80,10 @@ class TreeSchedule {
   static constexpr int kUnits = 128;
 
  private:
-  std::vector<int> unit_of_;
   std::vector<int> unit_start_, unit_nodes_;  // unit u: unit_nodes_[unit_start_[u] .. unit_start_[u + 1])
   std::vector<int> unit_parent_;              // -1 for a root unit
-  std::vector<int> child_start_, child_units_;
-  std::vector<int> leaf_units_, root_units_;
+  std::vector<int> child_count_;              // child units of each unit
+  std::vector<int> leaf_units_;
   double critical_path_share_ = 0;
 };
 

@@ -200,11 +200,10 @@ TEST_CASE("every method with symmetric Dirichlet on every disk mesh: no flip, en
 }
 
 TEST_CASE("ARAP converges with the default and with projected Newton on the disk meshes, flip-free throughout") {
-  // Without the collapse barrier of energies/arap.h both stalled on a
-  // collapsing triangle (camel_b: Newton at 0.0309 after 28 iterations).
-  // The meshes below 10 000 faces: the larger ones (camelhead, horse_b,
-  // hilbert_b) converge too (docs/pairs.md) but take 17 minutes under the
-  // sanitizers.
+  // The collapse barrier of energies/arap.h keeps the minimum off collapsed
+  // triangles, where both methods would stall. The meshes below 10 000
+  // faces: the larger ones (camelhead, horse_b, hilbert_b) converge too
+  // (docs/pairs.md) but take 17 minutes under the sanitizers.
   const std::string dir = akvf::test::data_dir();
   if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
   for (const char* name : {"camel_b.obj", "cow_b.obj", "tricera_b.obj", "lilium.obj", "snail.obj",
@@ -230,8 +229,8 @@ TEST_CASE("ARAP converges with the default and with projected Newton on the disk
 }
 
 TEST_CASE("SLIM converges on MIPS, its proxy pulling towards the nearest similarity") {
-  // With rotations as the proxy's targets it ended camel_b at E 8.976 after
-  // 1000 iterations, gradient 2.6e4.
+  // MIPS is minimal at every similarity; a proxy pulled towards rotations
+  // fights it and does not converge.
   const std::string dir = akvf::test::data_dir();
   if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
   akvf::ParamConfig config;
