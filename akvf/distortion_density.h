@@ -45,6 +45,13 @@ class DistortionDensity {
   virtual Hessian absolute_hessian(const Matrix& J) const {
     return with_eigenvalues(hessian(J), [](double lambda) { return std::abs(lambda); });
   }
+  // A density with a barrier term in det J that acts only near collapse
+  // (2D ARAP's) returns true where it acts and sets H to that term's Hessian
+  // with negative eigenvalues clamped. Preconditioners whose proxy models
+  // the distortion but not the barrier (SLIM) add it, as IPC adds its
+  // barrier's Hessian to any elasticity proxy: without it they see none of
+  // the barrier's curvature and their steps shrink towards the collapse.
+  virtual bool collapse_barrier_hessian(const Matrix& /*J*/, Hessian* /*H*/) const { return false; }
 
  protected:
   // H's eigen-decomposition with every eigenvalue lambda replaced by f(lambda).

@@ -24,20 +24,42 @@ struct Rotation {
   Eigen::Matrix3d R() const { return U * V.transpose(); }
 };
 
+// The collapse barrier b(g) = -(r - 1)^2 log r in r = g / hat for g < hat
+// (IPC's barrier, C2 at r = 1) and its first two derivatives in g.
+struct CollapseBarrier {
+  double b = 0, b_g = 0, b_gg = 0;
+  explicit CollapseBarrier(double g) {
+    const double hat = Arap2D::collapse_area_ratio();
+    if (!(g < hat)) return;
+    const double r = g / hat, gap = r - 1, log_r = std::log(r);
+    b = -gap * gap * log_r;
+    b_g = (-2 * gap * log_r - gap * gap / r) / hat;
+    b_gg = (-2 * log_r - 4 * gap / r + gap * gap / (r * r)) / (hat * hat);
+  }
+};
+
 }  // namespace
 
 InvariantDerivatives2D Arap2D::derivatives(double s, double g) const {
   const double root = std::sqrt(s + 2 * g);
   const double inv3 = 1 / (root * root * root);
   InvariantDerivatives2D d = {s - 2 * root + 2, 1 - 1 / root, -2 / root, 0.5 * inv3, inv3, 2 * inv3};
-  const double hat = collapse_area_ratio();
-  if (g < hat) {  // b = -(r - 1)^2 log r in r = g / hat, C2 at r = 1 (IPC's barrier)
-    const double r = g / hat, gap = r - 1, log_r = std::log(r);
-    d.f += -gap * gap * log_r;
-    d.f_g += (-2 * gap * log_r - gap * gap / r) / hat;
-    d.f_gg += (-2 * log_r - 4 * gap / r + gap * gap / (r * r)) / (hat * hat);
-  }
+  const CollapseBarrier barrier(g);
+  d.f += barrier.b;
+  d.f_g += barrier.b_g;
+  d.f_gg += barrier.b_gg;
   return d;
+}
+
+bool Arap2D::collapse_barrier_hessian(const Matrix& J, Hessian* H) const {
+  const double g = J.determinant();
+  if (!(g > 0 && g < collapse_area_ratio())) return false;
+  // d2 b(det J) / dvec(J)^2 = b_gg c c^T + b_g H_det, c the cofactor.
+  const CollapseBarrier barrier(g);
+  const Eigen::Vector4d c = cofactor_2d(J);
+  *H = with_eigenvalues(barrier.b_gg * c * c.transpose() + barrier.b_g * determinant_hessian_2d(),
+                        [](double lambda) { return lambda > 0 ? lambda : 0.0; });
+  return true;
 }
 
 double Arap3D::value(const Matrix& J) const {

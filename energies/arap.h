@@ -31,6 +31,7 @@ class Arap2D final : public InvariantDensity2D {
   // (1 - sqrt(g_hat))^2 = 0.94 (sigma_min <= sqrt(det J)), against 1 at
   // full collapse.
   static constexpr double collapse_area_ratio() { return 1e-3; }
+  bool collapse_barrier_hessian(const Matrix& J, Hessian* H) const override;
 
  protected:
   InvariantDerivatives2D derivatives(double s, double g) const override;

@@ -7,11 +7,18 @@ namespace akvf {
 
 namespace {
 
-// vec_2d(J) and the cofactor c = d det / dvec(J), column-major.
 Eigen::Vector4d vec_2d(const Eigen::Matrix2d& J) { return {J(0, 0), J(1, 0), J(0, 1), J(1, 1)}; }
-Eigen::Vector4d cofactor_2d(const Eigen::Matrix2d& J) { return {J(1, 1), -J(0, 1), -J(1, 0), J(0, 0)}; }
 
 }  // namespace
+
+Eigen::Vector4d cofactor_2d(const Eigen::Matrix2d& J) { return {J(1, 1), -J(0, 1), -J(1, 0), J(0, 0)}; }
+
+Eigen::Matrix4d determinant_hessian_2d() {
+  Eigen::Matrix4d H = Eigen::Matrix4d::Zero();
+  H(0, 3) = H(3, 0) = 1;
+  H(1, 2) = H(2, 1) = -1;
+  return H;
+}
 
 double InvariantDensity2D::value(const Matrix& J) const {
   const double g = J.determinant();
@@ -35,10 +42,7 @@ InvariantDensity2D::Hessian InvariantDensity2D::hessian(const Matrix& J) const {
   G.col(1) = cofactor_2d(J);
   Eigen::Matrix2d second;
   second << d.f_ss, d.f_sg, d.f_sg, d.f_gg;
-  Hessian det_hessian = Hessian::Zero();
-  det_hessian(0, 3) = det_hessian(3, 0) = 1;
-  det_hessian(1, 2) = det_hessian(2, 1) = -1;
-  return 2 * d.f_s * Hessian::Identity() + d.f_g * det_hessian + G * second * G.transpose();
+  return 2 * d.f_s * Hessian::Identity() + d.f_g * determinant_hessian_2d() + G * second * G.transpose();
 }
 
 InvariantDensity2D::Hessian InvariantDensity2D::filtered_hessian(const Matrix& J, bool absolute) const {

@@ -10,6 +10,10 @@
 
 namespace akvf {
 
+// c = d det J / dvec(J) (column-major vec), and the constant d2 det J / dvec(J)2.
+Eigen::Vector4d cofactor_2d(const Eigen::Matrix2d& J);
+Eigen::Matrix4d determinant_hessian_2d();
+
 // f and its first and second partial derivatives at (s, g).
 struct InvariantDerivatives2D {
   double f = 0, f_s = 0, f_g = 0, f_ss = 0, f_sg = 0, f_gg = 0;

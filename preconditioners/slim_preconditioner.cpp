@@ -69,10 +69,13 @@ template <int D>
 void SlimPreconditioner<D>::assemble(const OptimizationState& state, Matrix* matrix) {
   matrix->assemble([&](int e, typename Matrix::Local* local) {
     Square WtW, R;
-    proxy_weights(density_, objective_.jacobian(state.x, e), &WtW, &R);
+    const Square J = objective_.jacobian(state.x, e);
+    proxy_weights(density_, J, &WtW, &R);
     // Hessian of |W (J - R)|^2 in vec(J) (column-major): I_D (x) 2 W^T W.
     Eigen::Matrix<double, D * D, D* D> H = Eigen::Matrix<double, D * D, D * D>::Zero();
     for (int c = 0; c < D; ++c) H.template block<D, D>(D * c, D * c) = 2 * WtW;
+    typename DistortionDensity<D>::Hessian barrier;
+    if (objective_.density().collapse_barrier_hessian(J, &barrier)) H += barrier;
     const auto G = jacobian_map<D>(objective_.rest().Dm_inv[e]);
     *local = objective_.weights()[e] * G.transpose() * H * G;
   });

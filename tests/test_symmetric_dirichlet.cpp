@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -77,6 +78,40 @@ TEST_CASE("ARAP's collapse barrier: plain ARAP from g_hat up, smooth below it, u
   // Singular values from 0.005 to 0.06: det J on both sides of g_hat.
   akvf::test::check_density_derivatives<2>(arap, 0.005, 0.06, 40, 3);
   akvf::test::check_filtered_hessians<2>(arap, R * Eigen::Vector2d(1.5, 2e-4).asDiagonal());
+}
+
+TEST_CASE("ARAP's collapse barrier Hessian is the clamped Hessian of the barrier term alone") {
+  const akvf::Arap2D arap;
+  const double hat = akvf::Arap2D::collapse_area_ratio();
+  const Eigen::Matrix2d R = Eigen::Rotation2Dd(0.4).toRotationMatrix();
+  akvf::DistortionDensity2D::Hessian H;
+  CHECK_FALSE(arap.collapse_barrier_hessian(R * Eigen::Vector2d(1.5, 2 * hat).asDiagonal(), &H));
+  CHECK_FALSE(arap.collapse_barrier_hessian(Eigen::Vector2d(1, -hat / 2).asDiagonal(), &H));
+  const Eigen::Matrix2d J = R * Eigen::Vector2d(1.5, hat / 3).asDiagonal() * Eigen::Rotation2Dd(-1.1).toRotationMatrix();
+  REQUIRE(arap.collapse_barrier_hessian(J, &H));
+  // The barrier alone: ARAP's value minus sum (sigma_i - 1)^2, by central
+  // differences in vec(J).
+  const auto barrier = [&](const Eigen::Matrix2d& K) {
+    const Eigen::Vector2d sigma = Eigen::JacobiSVD<Eigen::Matrix2d>(K).singularValues();
+    return arap.value(K) - (sigma.array() - 1).square().sum();
+  };
+  const double h = 1e-6;
+  akvf::DistortionDensity2D::Hessian raw;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      const auto at = [&](double da, double db) {
+        Eigen::Matrix2d K = J;
+        K.data()[a] += da;
+        K.data()[b] += db;
+        return barrier(K);
+      };
+      raw(a, b) = (at(h, h) - at(h, -h) - at(-h, h) + at(-h, -h)) / (4 * h * h);
+    }
+  const Eigen::SelfAdjointEigenSolver<akvf::DistortionDensity2D::Hessian> eig(0.5 * (raw + raw.transpose()));
+  const akvf::DistortionDensity2D::Hessian clamped =
+      eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
+  CHECK((H - clamped).norm() <= 1e-4 * clamped.norm());
+  CHECK(H.selfadjointView<Eigen::Lower>().eigenvalues().minCoeff() >= -1e-9 * H.norm());
 }
 
 TEST_CASE("every energy attains its lower bound at rotations and is infinite when inverted") {
