@@ -21,6 +21,7 @@ else packages+=(
   python3-jsonschema  # the tests check every --summary against docs/run_summary.schema.json
   clang libclang-rt-14-dev  # scripts/sanitize.sh: ASan, UBSan and libFuzzer
   libhypre-dev  # algebraic multigrid (hypre's BoomerAMG) for --linear-solver amg
+  libcgal-dev  # CGAL's ARAP parameterizer, a peer in akvf_speed (experiments/speed)
   chromium  # the browser test of the views (tests/browser/check_pages.py), headless
 )
 fi

@@ -2,7 +2,7 @@
 // Cholesky factorization of the rest Killing operator of the same mesh,
 // measured in the same run (the unit cancels the machine's speed).
 //
-//   2D: every disk mesh in DATA/tri with at least 10 000 faces, with one
+//   2D: every disk mesh in DATA/tri with at least 10 000 faces (--min-faces), with one
 //       energy (--energy, symmetric Dirichlet by default); seconds of
 //       optimizer time to a gradient norm below 1e-3 (the run's own stop),
 //       and to within 1e-6 relative of the lowest energy any method reaches
@@ -19,14 +19,24 @@
 // CHOLMOD alone (its default analysis, simplicial below its supernodal
 // switch, its one-core factorization), the unit issue 14's targets were
 // first set in.
+// With --energy arap, where CGAL was found at configure time, the method
+// `cgal` (in the default list) runs CGAL's ARAP parameterizer on the same
+// normalized mesh (experiments/bench/cgal_arap.h): its own start and stopping
+// rule, its time from its own clock, its final map's energy evaluated as
+// ours, and its inverted triangles counted in its start and every iterate. Its
+// final energy counts as the lowest only when that map is flip-free.
+//
 // Prints a Markdown table.
 //
-// Usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim] [--energy NAME] [--repeat N] [--only 2d|3d]
+// Usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim[,cgal]] [--energy NAME] [--repeat N]
+//                   [--min-faces N] [--only 2d|3d]
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -42,6 +52,9 @@
 #include "preconditioners/killing_operator_2d.h"
 #include "preconditioners/killing_operator_3d.h"
 #include "solvers/sparse_cholesky.h"
+#ifdef AKVF_SPEED_WITH_CGAL
+#include "experiments/bench/cgal_arap.h"
+#endif
 
 namespace {
 
@@ -141,8 +154,42 @@ std::string method_name(const std::string& method, const std::string& default_na
   return method == "default" ? default_name : method;
 }
 
+#ifdef AKVF_SPEED_WITH_CGAL
+// CGAL's ARAP parameterizer on the mesh the ARAP runs optimize (cut, scaled
+// to unit area), its map scored by our ARAP energy; lowers `lowest` when its
+// final map is flip-free.
+Row cgal_arap_row(const akvf::TriMesh& mesh, double* lowest) {
+  akvf::ParamConfig config;
+  config.energy = "arap";
+  config.global_injectivity = false;
+  const akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "mesh", config);
+  akvf::TriMesh rest = setup.disk.mesh;
+  akvf::normalize_to_unit_area(&rest);
+  const akvf::bench::CgalArapRun run = akvf::bench::run_cgal_arap(rest.V, rest.F);
+  Row row{"cgal (own start and stop)", run.iterations, run.seconds, "", std::numeric_limits<double>::quiet_NaN()};
+  if (run.uv.size() == 0) {
+    row.status = "failed: " + run.error;
+    return row;
+  }
+  Eigen::VectorXd x(2 * run.uv.rows());
+  for (int i = 0; i < run.uv.rows(); ++i) x.segment<2>(2 * i) = run.uv.row(i).transpose();
+  row.energy = setup.objective->value(x);
+  const int inverted = setup.objective->count_inverted(x);
+  row.status = "inverted: start " + std::to_string(run.initial_inverted) + ", iterates at most " +
+               std::to_string(run.max_iterate_inverted) + ", final " + std::to_string(inverted) +
+               (run.post_processed ? " (after CGAL's post-processing)" : "") +
+               (run.error.empty() ? "" : "; CGAL's error: " + run.error);
+  if (inverted == 0 && std::isfinite(row.energy)) {
+    *lowest = std::min(*lowest, row.energy);
+    row.gap_iterations = run.iterations;  // kept if it is within 1e-6 of the lowest
+    row.gap_seconds = run.seconds;
+  }
+  return row;
+}
+#endif
+
 void run_2d(const std::filesystem::path& data, const std::vector<std::string>& methods, const std::string& energy,
-            int repeat) {
+            int repeat, int min_faces) {
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(data / "tri")) files.push_back(entry.path());
   std::sort(files.begin(), files.end());
@@ -157,7 +204,7 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
     } catch (const akvf::Error&) {
       continue;
     }
-    if (mesh.num_faces() < 10000) continue;
+    if (mesh.num_faces() < min_faces) continue;
     Unit unit;
     try {
       unit = unit_2d(mesh);
@@ -168,7 +215,14 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
     std::vector<Row> rows;
     std::vector<std::vector<std::vector<akvf::IterationSummary>>> traces;  // per method, per repeat
     double lowest = std::numeric_limits<double>::infinity();
+    std::vector<Row> peers;
     for (const std::string& method : methods) {
+      if (method == "cgal") {
+#ifdef AKVF_SPEED_WITH_CGAL
+        peers.push_back(cgal_arap_row(mesh, &lowest));
+#endif
+        continue;
+      }
       akvf::ParameterizeOptions options;
       options.energy = energy;
       options.preconditioner = method_name(method, options.preconditioner);
@@ -196,6 +250,10 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
           rows[m].gap_iterations = row->iteration;
         }
       if (seconds.size() == traces[m].size()) rows[m].gap_seconds = median(seconds);
+    }
+    for (Row& peer : peers) {
+      if (!(peer.energy - lowest <= 1e-6 * std::abs(lowest))) peer.gap_iterations = -1, peer.gap_seconds = -1;
+      rows.push_back(peer);
     }
     print_rows(file.filename().string(), mesh.num_faces(), unit, rows, true);
   }
@@ -286,7 +344,8 @@ void run_3d(const std::filesystem::path& data, const std::vector<std::string>& m
 int main(int argc, char** argv) {
   std::filesystem::path data = std::getenv("AKVF_DATA_DIR") ? std::getenv("AKVF_DATA_DIR") : "../shared/meshes";
   std::vector<std::string> methods = {"default", "akvf", "newton", "slim"};
-  int repeat = 1;
+  bool methods_given = false;
+  int repeat = 1, min_faces = 10000;
   std::string only, energy = akvf::ParameterizeOptions{}.energy;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -301,18 +360,24 @@ int main(int argc, char** argv) {
       data = value();
     } else if (arg == "--methods") {
       methods.clear();
+      methods_given = true;
       std::stringstream list(value());
       for (std::string m; std::getline(list, m, ',');) methods.push_back(m);
     } else if (arg == "--energy") {
       energy = value();
     } else if (arg == "--repeat") {
       repeat = std::max(1, std::atoi(value().c_str()));
+    } else if (arg == "--min-faces") {
+      min_faces = std::atoi(value().c_str());
     } else if (arg == "--only") {
       only = value();
     } else {
-      std::cerr << "usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim] [--energy NAME] [--repeat N] "
-                   "[--only 2d|3d]\n"
-                   "  --energy NAME  the 2D runs' energy (default symmetric-dirichlet; `akvf list` names them)\n";
+      std::cerr << "usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim[,cgal]] [--energy NAME] "
+                   "[--repeat N] [--min-faces N] [--only 2d|3d]\n"
+                   "  --energy NAME  the 2D runs' energy (default symmetric-dirichlet; `akvf list` names them)\n"
+                   "  --min-faces N  the 2D meshes of at least N faces (default 10000)\n"
+                   "  cgal           CGAL's ARAP parameterizer, 2D with --energy arap only; in the default list\n"
+                   "                 then, where this build found CGAL\n";
       return arg == "--help" || arg == "-h" ? 0 : 2;
     }
   }
@@ -320,13 +385,33 @@ int main(int argc, char** argv) {
     std::cerr << "akvf_speed: unknown energy '" << energy << "' (`akvf list` names them)\n";
     return 2;
   }
+  const bool has_cgal =
+#ifdef AKVF_SPEED_WITH_CGAL
+      true;
+#else
+      false;
+#endif
+  if (!methods_given && energy == "arap" && has_cgal) methods.push_back("cgal");
+  if (std::find(methods.begin(), methods.end(), "cgal") != methods.end()) {
+    if (!has_cgal) {
+      std::cerr << "akvf_speed: this build has no CGAL (install libcgal-dev: bash scripts/setup.sh, then rebuild)\n";
+      return 2;
+    }
+    if (energy != "arap") {
+      std::cerr << "akvf_speed: the method cgal runs CGAL's ARAP parameterizer; use it with --energy arap\n";
+      return 2;
+    }
+  }
   if (!std::filesystem::is_directory(data / "tri")) {
     std::cerr << "akvf_speed: meshes not found in " << data.string() << " (set AKVF_DATA_DIR or --data)\n";
     return 2;
   }
   try {
-    if (only != "3d") run_2d(data, methods, energy, repeat);
-    if (only != "2d") run_3d(data, methods, repeat);
+    if (only != "3d") run_2d(data, methods, energy, repeat, min_faces);
+    std::vector<std::string> methods_3d;  // CGAL's peer is 2D only
+    std::copy_if(methods.begin(), methods.end(), std::back_inserter(methods_3d),
+                 [](const std::string& m) { return m != "cgal"; });
+    if (only != "2d") run_3d(data, methods_3d, repeat);
   } catch (const akvf::Error& e) {
     std::cerr << "akvf_speed: " << e.what() << '\n';
     return 1;
