@@ -7,15 +7,7 @@ akvf=$1
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 # A 60 x 60 grid on a bumpy height field: identity preconditioning takes many thousands of iterations.
-awk 'BEGIN {
-  n = 60
-  for (j = 0; j < n; ++j) for (i = 0; i < n; ++i)
-    printf "v %.6f %.6f %.6f\n", i / (n - 1), j / (n - 1), 0.2 * sin(6 * i / n) * cos(5 * j / n)
-  for (j = 0; j < n - 1; ++j) for (i = 0; i < n - 1; ++i) {
-    a = j * n + i + 1; b = a + 1; c = a + n; d = c + 1
-    printf "f %d %d %d\nf %d %d %d\n", a, b, d, a, d, c
-  }
-}' > "$dir/grid.obj"
+bash "$(dirname "$0")/grid_mesh.sh" > "$dir/grid.obj"
 "$akvf" param "$dir/grid.obj" --precond identity --max-iters 1000000 --grad-tol 0 --time-limit 60 \
   --out "$dir/uv.obj" --trace "$dir/trace.csv" --quiet > "$dir/stdout" 2> "$dir/stderr" &
 pid=$!

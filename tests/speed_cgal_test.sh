@@ -8,15 +8,7 @@ speed=$1
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 mkdir "$dir/tri"
-awk 'BEGIN {
-  n = 60
-  for (j = 0; j < n; ++j) for (i = 0; i < n; ++i)
-    printf "v %.6f %.6f %.6f\n", i / (n - 1), j / (n - 1), 0.2 * sin(6 * i / n) * cos(5 * j / n)
-  for (j = 0; j < n - 1; ++j) for (i = 0; i < n - 1; ++i) {
-    a = j * n + i + 1; b = a + 1; c = a + n; d = c + 1
-    printf "f %d %d %d\nf %d %d %d\n", a, b, d, a, d, c
-  }
-}' > "$dir/tri/grid.obj"
+bash "$(dirname "$0")/grid_mesh.sh" > "$dir/tri/grid.obj"
 "$speed" --data "$dir" --min-faces 0 --only 2d --energy arap --methods newton,cgal > "$dir/table.md"
 cat "$dir/table.md"
 row=$(grep '| cgal (own start and stop) |' "$dir/table.md") || { echo "no CGAL row"; exit 1; }

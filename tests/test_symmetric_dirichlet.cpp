@@ -87,7 +87,8 @@ TEST_CASE("ARAP's collapse barrier Hessian is the clamped Hessian of the barrier
   akvf::DistortionDensity2D::Hessian H;
   CHECK_FALSE(arap.collapse_barrier_hessian(R * Eigen::Vector2d(1.5, 2 * hat).asDiagonal(), &H));
   CHECK_FALSE(arap.collapse_barrier_hessian(Eigen::Vector2d(1, -hat / 2).asDiagonal(), &H));
-  const Eigen::Matrix2d J = R * Eigen::Vector2d(1.5, hat / 3).asDiagonal() * Eigen::Rotation2Dd(-1.1).toRotationMatrix();
+  const Eigen::Matrix2d J =
+      R * Eigen::Vector2d(1.5, hat / 3).asDiagonal() * Eigen::Rotation2Dd(-1.1).toRotationMatrix();
   REQUIRE(arap.collapse_barrier_hessian(J, &H));
   // The barrier alone: ARAP's value minus sum (sigma_i - 1)^2, by central
   // differences in vec(J).

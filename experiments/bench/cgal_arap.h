@@ -11,10 +11,10 @@
 namespace akvf::bench {
 
 struct CgalArapRun {
-  Eigen::MatrixXd uv;         // #V by 2, the final map (after CGAL's post-processing, if it ran; its last on an error)
-  double seconds = 0;         // of the timed run
-  int iterations = 0;         // local/global iterations it took
-  int initial_inverted = 0;   // triangles with area <= 0 in its start
+  Eigen::MatrixXd uv;        // #V by 2, the final map (after CGAL's post-processing, if it ran; its last on an error)
+  double seconds = 0;        // of the timed run
+  int iterations = 0;        // local/global iterations it took
+  int initial_inverted = 0;  // triangles with area <= 0 in its start
   int max_iterate_inverted = 0;  // the most over its iterates
   bool post_processed = false;   // its last iterate was not one-to-one, so CGAL repaired it
   std::string error;             // CGAL's error message; empty when it succeeded
