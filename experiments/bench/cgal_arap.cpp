@@ -37,7 +37,8 @@ CgalArapRun run_cgal_arap(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   run.initial_inverted = iterates.initial_inverted;
   run.max_iterate_inverted = iterates.max_inverted;
   run.post_processed = iterates.post_processed;
-  if (iterates.error != run.error) run.error += "; counting its iterates: " + iterates.error;
+  if (iterates.error != run.error)
+    run.error += (run.error.empty() ? "" : "; ") + ("counting its iterates: " + iterates.error);
   return run;
 }
 

@@ -16,7 +16,7 @@ struct CgalArapRun {
   int iterations = 0;        // local/global iterations it took
   int initial_inverted = 0;  // triangles with area <= 0 in its start
   int max_iterate_inverted = 0;  // the most over its iterates
-  bool post_processed = false;   // its last iterate was not one-to-one, so CGAL repaired it
+  bool post_processed = false;   // CGAL post-processed its last iterate (not one-to-one); may fail: `error`
   std::string error;             // CGAL's error message; empty when it succeeded
 };
 
