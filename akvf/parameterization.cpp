@@ -1,6 +1,7 @@
 #include "akvf/internal/parameterization.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -225,18 +226,59 @@ Eigen::MatrixXd chart_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
   return out;
 }
 
+namespace {
+
+// The UV row of each corner of a face set aside (disk.removed_corners): its
+// own vertex's row, or a new row after the parameterized vertices' (one per
+// interpolated corner, in order); *added counts the new rows.
+std::vector<std::array<int, 3>> removed_corner_rows(const DiskMesh& disk, int* added) {
+  std::vector<std::array<int, 3>> rows(disk.removed_corners.size());
+  int next = disk.mesh.num_vertices();
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const CornerSource& source = disk.removed_corners[i][k];
+      rows[i][k] = source.a >= 0 && source.a == source.b ? source.a : next++;
+    }
+  *added = next - disk.mesh.num_vertices();
+  return rows;
+}
+
+}  // namespace
+
 Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
   const Eigen::MatrixXd UV = chart_uv(setup, x);
-  if (setup.disk.per_corner_uv()) return UV;
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(setup.disk.num_input_vertices, 2);
-  for (int v = 0; v < UV.rows(); ++v) out.row(setup.disk.input_vertex[v]) = UV.row(v);
+  const DiskMesh& disk = setup.disk;
+  if (!disk.per_corner_uv()) {
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(disk.num_input_vertices, 2);
+    for (int v = 0; v < UV.rows(); ++v) out.row(disk.input_vertex[v]) = UV.row(v);
+    return out;
+  }
+  int added = 0;
+  const std::vector<std::array<int, 3>> rows = removed_corner_rows(disk, &added);
+  Eigen::MatrixXd out(UV.rows() + added, 2);
+  out.topRows(UV.rows()) = UV;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const CornerSource& source = disk.removed_corners[i][k];
+      if (rows[i][k] < UV.rows()) continue;
+      out.row(rows[i][k]).setZero();
+      if (source.a >= 0) out.row(rows[i][k]) = (1 - source.t) * UV.row(source.a) + source.t * UV.row(source.b);
+    }
   return out;
 }
 
 Eigen::MatrixXi output_uv_faces(const ParamSetup& setup) {
-  const Eigen::MatrixXi& F = setup.disk.mesh.F;
-  if (setup.disk.per_corner_uv()) return F;
-  return F.unaryExpr([&](int v) { return setup.disk.input_vertex[v]; });
+  const DiskMesh& disk = setup.disk;
+  const Eigen::MatrixXi& F = disk.mesh.F;
+  if (!disk.per_corner_uv()) return F.unaryExpr([&](int v) { return disk.input_vertex[v]; });
+  if (disk.removed_faces.empty()) return F;
+  int added = 0;
+  const std::vector<std::array<int, 3>> rows = removed_corner_rows(disk, &added);
+  Eigen::MatrixXi out(F.rows() + static_cast<Eigen::Index>(rows.size()), 3);
+  for (int f = 0; f < F.rows(); ++f) out.row(disk.input_face[f]) = F.row(f);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (int k = 0; k < 3; ++k) out(disk.removed_faces[i], k) = rows[i][k];
+  return out;
 }
 
 Eigen::VectorXd start_from_map(const ParamSetup& setup, const Eigen::MatrixXd& uv, const std::string& what,

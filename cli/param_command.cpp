@@ -63,7 +63,7 @@ Json param_summary(const std::string& mesh_file, const ParameterizeOptions& opti
   record["overlap"] = Json{{"boundary_crossings", run.boundary_crossings}, {"area_fraction", run.overlap.fraction()}};
   record["distortion_energy"] = run.distortion_energy;
   if (setup.disk.cut) record["cut"] = cut_record(setup.disk);
-  if (setup.disk.repair.any()) record["repair"] = repair_record(setup.disk.repair, setup.disk.mesh.index_base);
+  if (setup.disk.repair.any() || !setup.disk.removed_faces.empty()) record["repair"] = repair_record(setup.disk);
   if (texture_uv_scale > 0) record["texture_uv_scale"] = texture_uv_scale;
   return single_run_summary("param", mesh_file, settings, record);
 }

@@ -128,9 +128,9 @@ TEST_CASE("validation names vertices and faces as the file numbers them") {
   CHECK(off_message == "m.off: edge (0, 1) is shared by 3 faces (numbered from 0); the mesh must be edge-manifold");
   // A degenerate face after an unreferenced vertex: the file's numbers, not the compacted ones.
   const std::string degenerate = "v 9 9 9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 2 3 4\nf 2 3 5\n";
-  CHECK(error_message([&] { akvf::prepare_parameterization(obj(degenerate), "d.obj", {}); }) ==
+  CHECK(error_message([&] { akvf::prepare_parameterization(obj(degenerate), "d.obj", no_repair); }) ==
         "d.obj: face 2 (vertices 2, 3, 5) has zero area (numbered from 1, as in the file); remove degenerate faces "
-        "first");
+        "first (--repair auto sets them aside)");
 }
 
 TEST_CASE("a tet mesh with an unreferenced vertex deforms with every factored method, the output keeps numbering") {

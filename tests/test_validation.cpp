@@ -4,6 +4,7 @@
 
 #include <limits>
 
+#include "akvf/parameterize.h"
 #include "akvf/rest_geometry.h"
 #include "framework/mesh/mesh_subdivision.h"
 #include "framework/mesh/mesh_validation.h"
@@ -183,6 +184,46 @@ TEST_CASE("midpoint subdivision keeps a disk a disk and multiplies the faces by 
   CHECK(akvf::surface_area(fine) == doctest::Approx(akvf::surface_area(grid)));
   const std::string expected = "would make " + std::to_string(64 * grid.num_faces()) + " faces (more than 100)";
   CHECK(akvf::test::error_message([&] { akvf::subdivide_midpoint(grid, 3, 100); }).find(expected) != std::string::npos);
+}
+
+TEST_CASE("repair: degenerate and repeated faces are set aside, numbered as in the file, and kept in the outputs") {
+  TriMesh m = akvf::test::grid_disk(3, 3);
+  const int faces = m.num_faces(), extra = m.num_vertices();
+  m.V.conservativeResize(extra + 1, 3);
+  m.V.row(extra) = 0.25 * m.V.row(0) + 0.75 * m.V.row(1);  // on the edge (0, 1)
+  m.F.conservativeResize(faces + 3, 3);
+  m.F.row(faces) << 0, extra, 1;                          // zero area; vertex `extra` only here
+  m.F.row(faces + 1) << m.F(4, 1), m.F(4, 2), m.F(4, 0);  // face 4 again, rotated
+  m.F.row(faces + 2) << 2, 2, 3;                          // a vertex twice
+  CHECK(akvf::test::error_message([&] { akvf::prepare_disk_mesh(m, "m.obj"); }).find("uses the same vertex twice") !=
+        std::string::npos);
+  const akvf::DiskMesh disk = akvf::prepare_disk_mesh(m, "m.obj", false, true);
+  CHECK(disk.removed_faces == std::vector<int>{faces, faces + 1, faces + 2});
+  CHECK(disk.mesh.num_faces() == faces);
+  CHECK(disk.mesh.num_vertices() == extra);
+  CHECK(disk.per_corner_uv());
+  REQUIRE(disk.warnings.size() == 1);
+  CHECK(disk.warnings[0] ==
+        "m.obj: set aside 3 faces the map cannot use (1 of zero area, 1 repeating an earlier face, 1 using a vertex "
+        "twice; faces 8, 9, 10) (numbered from 0); the outputs keep them, their corners at their vertices' UVs "
+        "(--repair none refuses them)");
+  // Vertex `extra` is interpolated a quarter of the way from 1 to 0 (the next two corners of its face).
+  const akvf::CornerSource& middle = disk.removed_corners[0][1];
+  CHECK(disk.input_vertex[middle.a] == 1);
+  CHECK(disk.input_vertex[middle.b] == 0);
+  CHECK(middle.t == doctest::Approx(0.25));
+  CHECK(disk.removed_corners[1][0].a == disk.removed_corners[1][0].b);
+
+  // Through the API: every input face has its corners' UVs, the new corner
+  // on its edge's map.
+  const akvf::ParameterizeResult result = akvf::parameterize(m.V, m.F);
+  REQUIRE(result.uv_faces.rows() == m.num_faces());
+  const auto uv = [&](int f, int k) { return result.uv.row(result.uv_faces(f, k)).eval(); };
+  CHECK((uv(faces, 1) - (0.75 * uv(faces, 2) + 0.25 * uv(faces, 0))).norm() < 1e-12);
+  CHECK((uv(faces + 1, 0) - uv(4, 1)).norm() == 0);
+  CHECK((uv(faces + 2, 0) - uv(faces + 2, 1)).norm() == 0);
+  REQUIRE(!result.warnings.empty());
+  CHECK(result.warnings[0].find("set aside 3 faces") != std::string::npos);
 }
 
 TEST_CASE("repair: a vertex where two fans meet is split, an edge of three faces opened, or both refused") {

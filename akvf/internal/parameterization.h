@@ -108,13 +108,14 @@ ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config
 // packed side by side (framework/mesh/chart_layout.h).
 Eigen::MatrixXd chart_uv(const ParamSetup& setup, const Eigen::VectorXd& x);
 
-// The UV map as the output gives it: without a cut, in the input's numbering
-// (#input V by 2; unreferenced vertices get (0, 0)); with the cut, chart_uv
-// (one row per vertex of the cut mesh: a seam vertex has one per side).
+// The UV map as the output gives it: without a cut or repair, in the input's
+// numbering (#input V by 2; unreferenced vertices get (0, 0)); otherwise
+// chart_uv (one row per vertex of the cut or repaired mesh: a seam vertex has
+// one per side), then a row per interpolated corner of a face set aside.
 Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x);
 
-// The rows of output_uv each input face's corners use (#F by 3): the input's
-// F without a cut, the cut mesh's faces with it (libigl's FTC).
+// The rows of output_uv each input face's corners use (#F by 3, in the
+// input's order): the input's F without a cut or repair (libigl's FTC).
 Eigen::MatrixXi output_uv_faces(const ParamSetup& setup);
 
 // A start map of the input's vertices (#V by 2, any scale and placement) as

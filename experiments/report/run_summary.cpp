@@ -91,16 +91,24 @@ Json cut_record(const DiskMesh& disk) {
           {"boundary_loops", disk.chart_input_loops}};
 }
 
-Json repair_record(const ManifoldRepair& repair, int index_base) {
+Json repair_record(const DiskMesh& disk) {
+  const ManifoldRepair& repair = disk.repair;
+  const int index_base = disk.mesh.index_base;
   Json opened = Json::array();
   for (const auto& [a, b] : repair.first_opened) opened.push_back({a + index_base, b + index_base});
   Json split = Json::array();
   for (const int v : repair.first_split) split.push_back(v + index_base);
-  return {{"opened_edges", repair.opened_edges},
-          {"split_vertices", repair.split_vertices},
-          {"added_copies", repair.added_copies},
-          {"first_opened_edges", opened},
-          {"first_split_vertices", split}};
+  Json first_set_aside = Json::array();
+  for (std::size_t i = 0; i < std::min<std::size_t>(disk.removed_faces.size(), 5); ++i)
+    first_set_aside.push_back(disk.removed_faces[i] + index_base);
+  Json record = {{"opened_edges", repair.opened_edges},
+                 {"split_vertices", repair.split_vertices},
+                 {"added_copies", repair.added_copies},
+                 {"first_opened_edges", opened},
+                 {"first_split_vertices", split}};
+  record["set_aside_faces"] = disk.removed_faces.size();
+  record["first_set_aside_faces"] = first_set_aside;
+  return record;
 }
 
 Json single_run_summary(const std::string& problem, const std::string& mesh_file, const Json& settings,

@@ -41,9 +41,9 @@ Json linear_algebra_record(const PreconditionerStatistics& statistics, const std
 // What the automatic cut did (--cut auto): charts, cut_edges, and per chart
 // the genus and boundary loops of its component before the cut.
 Json cut_record(const DiskMesh& disk);
-// What --repair auto did: counts, and the first few edges and vertices
-// numbered as the file numbers them.
-Json repair_record(const ManifoldRepair& repair, int index_base);
+// What --repair auto did: counts, and the first few edges, vertices and
+// faces set aside, numbered as the file numbers them.
+Json repair_record(const DiskMesh& disk);
 
 // The options as the schema writes them: numbers as numbers, integers as
 // integers (a time limit of inf as the text "inf"), switches as booleans,

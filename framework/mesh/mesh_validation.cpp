@@ -4,16 +4,19 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 
 #include "akvf/error.h"
 #include "framework/mesh/cut_to_disk.h"
 #include "framework/mesh/mesh_topology.h"
+#include "framework/mesh/unusable_faces.h"
 
 namespace akvf {
 
 namespace {
 
-void check_finite_and_indices(const TriMesh& m, const std::string& name) {
+// A face that uses a vertex twice is refused unless `repair` sets it aside.
+void check_finite_and_indices(const TriMesh& m, const std::string& name, bool repair) {
   const int b = m.index_base;
   for (int v = 0; v < m.num_vertices(); ++v)
     if (!m.V.row(v).allFinite())
@@ -24,31 +27,37 @@ void check_finite_and_indices(const TriMesh& m, const std::string& name) {
       if (m.F(f, k) < 0 || m.F(f, k) >= m.num_vertices())
         throw ValidationError(name + ": face " + file_number(f, b) + " has vertex index " + file_number(m.F(f, k), b) +
                               " out of range (" + std::to_string(m.num_vertices()) + " vertices)" + numbering_note(b));
-    if (m.F(f, 0) == m.F(f, 1) || m.F(f, 1) == m.F(f, 2) || m.F(f, 0) == m.F(f, 2))
+    if (!repair && (m.F(f, 0) == m.F(f, 1) || m.F(f, 1) == m.F(f, 2) || m.F(f, 0) == m.F(f, 2)))
       throw ValidationError(name + ": face " + file_number(f, b) + " uses the same vertex twice (" +
                             file_number(m.F(f, 0), b) + ", " + file_number(m.F(f, 1), b) + ", " +
                             file_number(m.F(f, 2), b) + ")" + numbering_note(b));
   }
 }
 
-DiskMesh compact(const TriMesh& input, const std::string& name) {
+// The mesh of input's faces `kept`, without the vertices none of them uses
+// (a warning names those no face at all uses).
+DiskMesh compact(const TriMesh& input, const std::vector<int>& kept, const std::string& name) {
   DiskMesh out;
   out.num_input_vertices = input.num_vertices();
-  std::vector<int> new_index(input.num_vertices(), -1);
+  std::vector<int> new_index(input.num_vertices(), -2);
   for (int f = 0; f < input.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) new_index[input.F(f, k)] = -1;
+  for (const int f : kept)
     for (int k = 0; k < 3; ++k) new_index[input.F(f, k)] = 0;
   int dropped = 0, first_dropped = -1;
   for (int v = 0; v < input.num_vertices(); ++v) {
     if (new_index[v] == 0) {
       new_index[v] = static_cast<int>(out.input_vertex.size());
       out.input_vertex.push_back(v);
-    } else if (dropped++ == 0) {
+    } else if (new_index[v] == -2 && dropped++ == 0) {
       first_dropped = v;
     }
   }
   out.mesh.V.resize(static_cast<Eigen::Index>(out.input_vertex.size()), 3);
   for (std::size_t i = 0; i < out.input_vertex.size(); ++i) out.mesh.V.row(i) = input.V.row(out.input_vertex[i]);
-  out.mesh.F = input.F.unaryExpr([&](int v) { return new_index[v]; });
+  out.mesh.F.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    for (int k = 0; k < 3; ++k) out.mesh.F(i, k) = new_index[input.F(kept[i], k)];
   out.mesh.index_base = input.index_base;
   if (dropped > 0)
     out.warnings.push_back(name + ": dropped " + std::to_string(dropped) + " unreferenced vertices (first: " +
@@ -61,19 +70,31 @@ DiskMesh compact(const TriMesh& input, const std::string& name) {
 void check_face_areas(const TriMesh& m, const std::string& name, const std::vector<int>& input_vertex) {
   const int base = m.index_base;
   auto at_input = [&](int v) { return file_number(input_vertex[v], base); };
-  // A face is degenerate when its area is zero to working precision relative
-  // to its own edges (the cross product's rounding is about eps |b - a| |c - a|):
-  // slivers are allowed, collapsed faces are not, whatever the rest of the
-  // mesh's size.
-  for (int f = 0; f < m.num_faces(); ++f) {
-    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
-    const double area = 0.5 * (b - a).cross(c - a).norm();
-    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-    if (!(area > 1e-14 * longest * longest))
+  for (int f = 0; f < m.num_faces(); ++f)
+    if (zero_area_face(m, f))
       throw ValidationError(name + ": face " + file_number(f, base) + " (vertices " + at_input(m.F(f, 0)) + ", " +
                             at_input(m.F(f, 1)) + ", " + at_input(m.F(f, 2)) + ") has zero area" +
-                            numbering_note(base) + "; remove degenerate faces first");
-  }
+                            numbering_note(base) + "; remove degenerate faces first (--repair auto sets them aside)");
+}
+
+// The faces set aside, in words, numbered as in the file.
+std::string unusable_description(const UnusableFaces& unusable, const std::string& name, int base) {
+  std::string kinds;
+  const auto add = [&](int n, const char* what) {
+    if (n > 0) kinds += (kinds.empty() ? "" : ", ") + std::to_string(n) + " " + what;
+  };
+  add(unusable.zero_area, "of zero area");
+  add(unusable.repeated_face, "repeating an earlier face");
+  add(unusable.repeated_vertex, "using a vertex twice");
+  std::string first;
+  const std::size_t listed = std::min<std::size_t>(unusable.removed.size(), 5);
+  for (std::size_t i = 0; i < listed; ++i) first += (i ? ", " : "") + file_number(unusable.removed[i], base);
+  const int n = static_cast<int>(unusable.removed.size());
+  return name + ": set aside " + std::to_string(n) + (n == 1 ? " face" : " faces") + " the map cannot use (" + kinds +
+         "; face" + (n == 1 ? " " : "s ") + first + (unusable.removed.size() > listed ? ", ..." : "") + ")" +
+         numbering_note(base) +
+         "; the outputs keep them, their corners at their vertices' UVs (--repair none refuses "
+         "them)";
 }
 
 constexpr const char* kCutHint = " it must be cut to a disk first: use the option cut auto (akvf param --cut auto)";
@@ -183,11 +204,25 @@ bool orientable(const Eigen::MatrixXi& F) {
 
 DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool cut, bool repair) {
   if (input.num_faces() == 0) throw ValidationError(name + ": mesh has no faces");
-  check_finite_and_indices(input, name);
-  DiskMesh out = compact(input, name);
+  check_finite_and_indices(input, name, repair);
+  UnusableFaces unusable;
+  if (repair) {
+    unusable = find_unusable_faces(input);
+    if (unusable.kept.empty()) throw ValidationError(name + ": no face has an area (every face is degenerate)");
+  } else {
+    unusable.kept.resize(input.num_faces());
+    std::iota(unusable.kept.begin(), unusable.kept.end(), 0);
+  }
+  DiskMesh out = compact(input, unusable.kept, name);
   const TriMesh& m = out.mesh;
   const int b = m.index_base;
   auto at_input = [&](int v) { return file_number(out.input_vertex[v], b); };
+  auto face_at_input = [&](int f) { return file_number(out.input_face.empty() ? f : out.input_face[f], b); };
+  if (unusable.any()) {
+    out.warnings.push_back(unusable_description(unusable, name, b));
+    out.input_face = unusable.kept;
+    out.removed_faces = unusable.removed;
+  }
   check_face_areas(m, name, out.input_vertex);
   if (repair) {
     out.repair = repair_manifold(&out.mesh, &out.input_vertex);
@@ -205,8 +240,8 @@ DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool c
                           ": the surface is non-orientable (like a Moebius strip or a Klein bottle): no choice "
                           "of face orientations agrees across every edge, so it has no UV map as one piece");
   if (!topology.misoriented_edge.empty())
-    throw ValidationError(name + ": faces " + file_number(topology.misoriented_edge[2], b) + " and " +
-                          file_number(topology.misoriented_edge[3], b) + " traverse edge (" +
+    throw ValidationError(name + ": faces " + face_at_input(topology.misoriented_edge[2]) + " and " +
+                          face_at_input(topology.misoriented_edge[3]) + " traverse edge (" +
                           at_input(topology.misoriented_edge[0]) + ", " + at_input(topology.misoriented_edge[1]) +
                           ") in the same direction" + numbering_note(b) + "; faces must be consistently oriented");
 
@@ -218,6 +253,7 @@ DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool c
                             " is non-manifold: two separate boundary fans meet there");
   if (cut) cut_into_charts(name, &out);
   find_chart_boundaries(name, &out);
+  out.removed_corners = corner_sources(input, out.removed_faces, out.input_vertex);
   return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include "akvf/mesh.h"
 #include "framework/mesh/manifold_repair.h"
+#include "framework/mesh/unusable_faces.h"
 
 namespace akvf {
 
@@ -23,17 +24,23 @@ struct DiskMesh {
   int cut_edges = 0;                                // input edges opened by it
   std::vector<int> chart_genus, chart_input_loops;  // per chart, before the cut
   ManifoldRepair repair;                            // what was repaired (repair asked for)
+  // Faces set aside with repair (unusable_faces.h): mesh face i is input face
+  // input_face[i] (empty: the same), and removed_faces are the others, their
+  // corners' UVs taken from removed_corners.
+  std::vector<int> input_face, removed_faces;
+  std::vector<std::array<CornerSource, 3>> removed_corners;
   Warnings warnings;
 
   int num_charts() const { return static_cast<int>(boundary_loops.size()); }
   // Whether a vertex may have several UVs (seams of the cut, split
   // vertices): outputs then carry per-corner texture coordinates.
-  bool per_corner_uv() const { return cut || repair.any(); }
+  bool per_corner_uv() const { return cut || repair.any() || !removed_faces.empty(); }
 };
 
 // Validates `input` (read from `name`, used in messages) and drops
-// unreferenced vertices with a warning. With `repair`, edges of three or more
-// faces are opened and non-manifold vertices split (manifold_repair.h), with
+// unreferenced vertices with a warning. With `repair`, degenerate and
+// repeated faces are set aside (unusable_faces.h), edges of three or more
+// faces opened and non-manifold vertices split (manifold_repair.h), each with
 // a warning. With `cut`, a closed, multi-boundary, higher-genus or
 // multi-component manifold mesh is cut into disks (cut_to_disk.h); without,
 // it is refused with a message naming the option. Throws ValidationError

@@ -40,8 +40,12 @@ def test_non_finite_coordinates_are_input_errors():
 def test_bad_meshes_are_validation_errors():
     V, F = bumpy_disk()
     F[3] = [0, 0, 1]
-    with pytest.raises(akvf.ValidationError):
-        akvf.parameterize(V, F)
+    with pytest.raises(akvf.ValidationError, match="face 3 uses the same vertex twice"):
+        akvf.parameterize(V, F, repair="none")
+    # The default repair sets the face aside, says so, and keeps it in uv_faces.
+    with pytest.warns(UserWarning, match="set aside 1 face"):
+        result = akvf.parameterize(V, F)
+    assert result.uv_faces.shape == F.shape
 
 
 def test_options_as_the_command_line_says(program, tmp_path):
