@@ -222,7 +222,7 @@ Eigen::MatrixXd chart_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
   // and J is unchanged when mesh and map scale alike).
   const double scale = 1 / (setup.normalization.scale * setup.unit_scale);
   Eigen::MatrixXd out = scale * unstack_uv(x);
-  pack_charts(setup.objective->elements(), setup.disk.face_chart, setup.disk.num_charts(), &out);
+  pack_charts(setup.objective->elements(), setup.disk.face_chart, setup.disk.num_charts(), &out, true);
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include "akvf/internal/options.h"
 #include "akvf/internal/parameterization.h"
 #include "akvf/mesh_io.h"
+#include "akvf/pictures.h"
 #include "akvf/threads.h"
 #include "cli/command_line.h"
 #include "cli/exit_codes.h"
@@ -18,6 +19,7 @@
 #include "cli/schema_options.h"
 #include "experiments/report/run_summary.h"
 #include "experiments/report/trace_csv.h"
+#include "framework/mesh/chart_layout.h"
 #include "framework/process/output_file.h"
 #include "io/checker_texture.h"
 #include "io/gltf_writer.h"
@@ -25,7 +27,6 @@
 #include "io/ply_reader.h"
 #include "io/text_reader.h"
 #include "io/text_utilities.h"
-#include "akvf/pictures.h"
 
 namespace akvf {
 
@@ -53,8 +54,9 @@ ParameterizeOptions options_from(const CommandLine& cl) {
 // The --summary record: the run's options, then its outcome and the machine.
 //   texture_uv_scale  the factor of the unit-square vt written (textured OBJ,
 //                     GLB), or 0 when none were
+//   coverage          the fraction of the UV square the map covers
 Json param_summary(const std::string& mesh_file, const ParameterizeOptions& options, const ParamSetup& setup,
-                   const ParamRun& run, double texture_uv_scale) {
+                   const ParamRun& run, double texture_uv_scale, double coverage) {
   Json settings;
   record_options(parameterize_option_fields(), options, &settings);
   Json record = run_record(run.result, setup.objective->lower_bound(), setup.disk.mesh.num_vertices(),
@@ -65,6 +67,7 @@ Json param_summary(const std::string& mesh_file, const ParameterizeOptions& opti
   if (setup.disk.cut) record["cut"] = cut_record(setup.disk);
   if (setup.disk.repair.any() || !setup.disk.removed_faces.empty()) record["repair"] = repair_record(setup.disk);
   if (texture_uv_scale > 0) record["texture_uv_scale"] = texture_uv_scale;
+  record["uv_coverage"] = coverage;
   return single_run_summary("param", mesh_file, settings, record);
 }
 
@@ -103,6 +106,10 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
 
   const Eigen::MatrixXd UV = output_uv(setup, result.x);
   const Eigen::MatrixXi UV_faces = output_uv_faces(setup);
+  const double coverage = square_coverage(UV_faces, UV);
+  if (setup.disk.num_charts() > 1)
+    out << count_of(setup.disk.num_charts(), "chart") << " packed, covering " << 100 * coverage
+        << " % of the UV square\n";
   double texture_uv_scale = 0;
   if (!outputs.obj.empty()) {
     MeshWriteOptions write_options;
@@ -117,7 +124,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
                          " iterations, E = " + std::to_string(last.energy));
   if (!outputs.png.empty()) write_layout_png(outputs.png, input, UV, UV_faces, outputs.png_size);
   if (!outputs.summary.empty() || !outputs.view.empty()) {
-    const Json summary = param_summary(name, options, setup, run, texture_uv_scale);
+    const Json summary = param_summary(name, options, setup, run, texture_uv_scale, coverage);
     if (!outputs.summary.empty()) write_summary(outputs.summary, summary);
     if (!outputs.view.empty())
       write_view(outputs.view, input, UV, UV_faces, std::filesystem::path(name).filename().string(), summary.dump());

@@ -3,10 +3,12 @@
 // side, written with per-corner vt.
 #include <doctest/doctest.h>
 
+#include <Eigen/Geometry>
 #include <fstream>
 #include <sstream>
 
 #include "akvf/parameterize.h"
+#include "framework/mesh/chart_layout.h"
 #include "framework/mesh/cut_to_disk.h"
 #include "framework/mesh/initialization.h"
 #include "framework/mesh/mesh_topology.h"
@@ -120,6 +122,45 @@ TEST_CASE("cut meshes parameterize flip-free at every iterate, charts side by si
         CHECK(apart);
       }
   }
+}
+
+TEST_CASE("output packing turns charts flat, never mirrors them, keeps their boxes apart and fills the square better") {
+  // 24 thin rectangles (2 triangles each) at random angles and lengths.
+  const int n = 24;
+  Eigen::MatrixXi F(2 * n, 3);
+  Eigen::MatrixXd UV(4 * n, 2);
+  std::vector<int> face_chart(2 * n);
+  for (int c = 0; c < n; ++c) {
+    const double length = 1 + c % 5, angle = 0.37 * c;
+    const Eigen::Matrix2d R = Eigen::Rotation2Dd(angle).toRotationMatrix();
+    const Eigen::Vector2d corners[4] = {{0, 0}, {length, 0}, {length, 0.3}, {0, 0.3}};
+    for (int k = 0; k < 4; ++k) UV.row(4 * c + k) = (R * corners[k]).transpose() + Eigen::RowVector2d(7.0 * c, 0);
+    F.row(2 * c) << 4 * c, 4 * c + 1, 4 * c + 2;
+    F.row(2 * c + 1) << 4 * c, 4 * c + 2, 4 * c + 3;
+    face_chart[2 * c] = face_chart[2 * c + 1] = c;
+  }
+  Eigen::MatrixXd plain = UV, tight = UV;
+  akvf::pack_charts(F, face_chart, n, &plain);
+  akvf::pack_charts(F, face_chart, n, &tight, true);
+  CHECK(akvf::square_coverage(F, tight) > 1.5 * akvf::square_coverage(F, plain));
+  CHECK(akvf::square_coverage(F, tight) > 0.5);
+  for (int c = 0; c < n; ++c) {
+    CAPTURE(c);
+    // A rigid motion: every distance kept, the orientation too.
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        CHECK((tight.row(4 * c + a) - tight.row(4 * c + b)).norm() ==
+              doctest::Approx((UV.row(4 * c + a) - UV.row(4 * c + b)).norm()).epsilon(1e-12));
+    CHECK(akvf::count_inverted_triangles(F.middleRows(2 * c, 2), tight) == 0);
+    // Flat: the rectangle lies along u.
+    CHECK(std::abs(tight(4 * c + 1, 1) - tight(4 * c, 1)) < 1e-9);
+  }
+  const auto boxes = chart_boxes(tight, F);
+  REQUIRE(static_cast<int>(boxes.size()) == n);
+  for (std::size_t a = 0; a < boxes.size(); ++a)
+    for (std::size_t b = a + 1; b < boxes.size(); ++b)
+      CHECK((boxes[a][2] < boxes[b][0] || boxes[b][2] < boxes[a][0] || boxes[a][3] < boxes[b][1] ||
+             boxes[b][3] < boxes[a][1]));
 }
 
 TEST_CASE("without the cut the default is unchanged: uv per vertex, uv_faces = F") {

@@ -1,7 +1,9 @@
 #include "framework/mesh/chart_layout.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace akvf {
@@ -18,6 +20,45 @@ std::vector<std::vector<int>> chart_vertices(const Eigen::MatrixXi& F, const std
   for (int v = 0; v < num_vertices; ++v)
     if (chart_of[v] >= 0) vertices[chart_of[v]].push_back(v);
   return vertices;
+}
+
+// The angle that turns `points` to their smallest bounding rectangle, which
+// has a side on the convex hull (Freeman and Shapira 1975), lying flat.
+double flat_box_angle(std::vector<Eigen::Vector2d> points) {
+  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  const auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
+  };
+  std::vector<Eigen::Vector2d> hull;  // Andrew's monotone chain
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t base = hull.size();
+    for (const Eigen::Vector2d& p : points) {
+      while (hull.size() >= base + 2 && cross(hull[hull.size() - 2], hull.back(), p) <= 0) hull.pop_back();
+      hull.push_back(p);
+    }
+    hull.pop_back();
+    std::reverse(points.begin(), points.end());
+  }
+  double best_area = std::numeric_limits<double>::infinity(), best_angle = 0;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Eigen::Vector2d edge = hull[(i + 1) % hull.size()] - hull[i];
+    if (edge.squaredNorm() == 0) continue;
+    const double angle = -std::atan2(edge.y(), edge.x());
+    const Eigen::Rotation2Dd turn(angle);
+    Eigen::Vector2d lo = turn * hull[0], hi = lo;
+    for (const Eigen::Vector2d& p : hull) {
+      lo = lo.cwiseMin(turn * p);
+      hi = hi.cwiseMax(turn * p);
+    }
+    const Eigen::Vector2d size = hi - lo;
+    if (size.prod() < best_area) {
+      best_area = size.prod();
+      best_angle = size.y() > size.x() ? angle + M_PI / 2 : angle;
+    }
+  }
+  return best_angle;
 }
 
 }  // namespace
@@ -60,10 +101,18 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
   return UV;
 }
 
-void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV) {
+void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV,
+                 bool rotate_to_boxes) {
   if (num_charts <= 1) return;
   const std::vector<std::vector<int>> vertices =
       chart_vertices(F, face_chart, num_charts, static_cast<int>(UV->rows()));
+  if (rotate_to_boxes)
+    for (int c = 0; c < num_charts; ++c) {
+      std::vector<Eigen::Vector2d> points;
+      for (int v : vertices[c]) points.push_back(UV->row(v).transpose());
+      const Eigen::Matrix2d turn = Eigen::Rotation2Dd(flat_box_angle(points)).toRotationMatrix();
+      for (int v : vertices[c]) UV->row(v) = (turn * UV->row(v).transpose()).transpose();
+    }
   std::vector<Eigen::RowVector2d> low(num_charts), size(num_charts);
   double box_area = 0;
   for (int c = 0; c < num_charts; ++c) {
@@ -76,24 +125,64 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
     size[c] = hi - lo;
     box_area += size[c].x() * size[c].y();
   }
-  double row_width = std::sqrt(box_area);
-  for (int c = 0; c < num_charts; ++c) row_width = std::max(row_width, size[c].x());
+  double widest = 0, total_width = 0;
+  for (int c = 0; c < num_charts; ++c) {
+    widest = std::max(widest, size[c].x());
+    total_width += size[c].x();
+  }
   const double gap = 0.02 * std::sqrt(box_area);
   std::vector<int> order(num_charts);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size[a].y() > size[b].y(); });
-  double x = 0, y = 0, row_height = 0;
-  for (int c : order) {
-    if (x > 0 && x + size[c].x() > row_width) {  // start a new row above
-      x = 0;
-      y += row_height + gap;
-      row_height = 0;
+  // Rows of at most row_width: each chart's lower corner (or, without
+  // `corners`, only the side of the square around them all).
+  const auto rows = [&](double row_width, std::vector<Eigen::RowVector2d>* corners) {
+    double x = 0, y = 0, row_height = 0, width = 0;
+    for (int c : order) {
+      if (x > 0 && x + size[c].x() > row_width) {  // start a new row above
+        x = 0;
+        y += row_height + gap;
+        row_height = 0;
+      }
+      if (corners) (*corners)[c] = Eigen::RowVector2d(x, y);
+      width = std::max(width, x + size[c].x());
+      x += size[c].x() + gap;
+      row_height = std::max(row_height, size[c].y());
     }
-    const Eigen::RowVector2d shift = Eigen::RowVector2d(x, y) - low[c];
-    for (int v : vertices[c]) UV->row(v) += shift;
-    x += size[c].x() + gap;
-    row_height = std::max(row_height, size[c].y());
+    return std::max(width, y + row_height);
+  };
+  double row_width = std::max(std::sqrt(box_area), widest);
+  if (rotate_to_boxes) {  // the row width of the smallest square, among 32 from one chart to all per row
+    const double last = total_width + num_charts * gap;
+    double best = rows(row_width, nullptr);
+    for (int i = 0; i <= 32; ++i) {
+      const double candidate = widest * std::pow(std::max(last / widest, 1.0), i / 32.0);
+      if (const double side = rows(candidate, nullptr); side < best) {
+        best = side;
+        row_width = candidate;
+      }
+    }
   }
+  std::vector<Eigen::RowVector2d> corner(num_charts);
+  rows(row_width, &corner);
+  for (int c = 0; c < num_charts; ++c)
+    for (int v : vertices[c]) UV->row(v) += corner[c] - low[c];
+}
+
+double square_coverage(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV) {
+  if (F.rows() == 0) return 0;
+  Eigen::RowVector2d lo = UV.row(F(0, 0)), hi = lo;
+  double area = 0;
+  for (int f = 0; f < F.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      lo = lo.cwiseMin(UV.row(F(f, k)));
+      hi = hi.cwiseMax(UV.row(F(f, k)));
+    }
+    const Eigen::RowVector2d a = UV.row(F(f, 1)) - UV.row(F(f, 0)), b = UV.row(F(f, 2)) - UV.row(F(f, 0));
+    area += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+  }
+  const double side = (hi - lo).maxCoeff();
+  return side > 0 ? area / (side * side) : 0;
 }
 
 }  // namespace akvf

@@ -20,8 +20,18 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
 // Translates every chart of UV (#V by 2) so that their bounding boxes do not
 // overlap: rows of charts, tallest first, each row at most as wide as the
 // square root of the charts' total bounding-box area (a roughly square
-// layout), with a gap of 2 % of that width between boxes. The charts keep
-// their scale and orientation. No-op for one chart.
-void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV);
+// layout), with a gap of 2 % of that width between boxes. With
+// `rotate_to_boxes` (the outputs), each chart is first turned (a rotation,
+// never a mirror) to its smallest bounding rectangle, lying flat (wider than
+// tall), and the row width is the one, of 33 from the widest chart to all in
+// one row, whose layout fits the smallest square. The charts keep their
+// scale. No-op for one chart.
+void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV,
+                 bool rotate_to_boxes = false);
+
+// The fraction of the square around UV's bounding box (side: its longer
+// extent; the unit square once the map is scaled into it) that the triangles
+// F cover.
+double square_coverage(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV);
 
 }  // namespace akvf
