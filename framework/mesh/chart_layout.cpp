@@ -1,5 +1,7 @@
 #include "framework/mesh/chart_layout.h"
 
+#include "framework/mesh/raster_packing.h"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -164,7 +166,16 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
     }
   }
   std::vector<Eigen::RowVector2d> corner(num_charts);
-  rows(row_width, &corner);
+  const double shelf_side = rows(row_width, &corner);
+  if (rotate_to_boxes) {  // charts that interlock, when they fit a smaller square so
+    std::vector<std::vector<int>> chart_faces(num_charts);
+    for (int f = 0; f < F.rows(); ++f) chart_faces[face_chart[f]].push_back(f);
+    std::vector<ChartPlacement> placement;
+    if (raster_pack(F, chart_faces, *UV, &placement) < shelf_side) {
+      apply_placement(F, chart_faces, placement, UV);
+      return;
+    }
+  }
   for (int c = 0; c < num_charts; ++c)
     for (int v : vertices[c]) UV->row(v) += corner[c] - low[c];
 }

@@ -24,8 +24,10 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
 // `rotate_to_boxes` (the outputs), each chart is first turned (a rotation,
 // never a mirror) to its smallest bounding rectangle, lying flat (wider than
 // tall), and the row width is the one, of 33 from the widest chart to all in
-// one row, whose layout fits the smallest square. The charts keep their
-// scale. No-op for one chart.
+// one row, whose layout fits the smallest square; then, if charts that
+// interlock (raster_packing.h, turned by quarters) fit a smaller square,
+// they are placed so instead. The charts keep their scale. No-op for one
+// chart.
 void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV,
                  bool rotate_to_boxes = false);
 

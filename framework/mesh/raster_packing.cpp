@@ -1,0 +1,240 @@
+#include "framework/mesh/raster_packing.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace akvf {
+
+namespace {
+
+Eigen::RowVector2d turned(const Eigen::RowVector2d& p, int quarter_turns) {
+  switch (quarter_turns & 3) {
+    case 1:
+      return {-p.y(), p.x()};
+    case 2:
+      return {-p.x(), -p.y()};
+    case 3:
+      return {p.y(), -p.x()};
+    default:
+      return p;
+  }
+}
+
+// One chart in one orientation on the grid: its cells (one row of runs
+// [begin, end) per grid row), and where its points' lowest corner lies.
+struct Mask {
+  int width = 0, height = 0;
+  std::vector<std::vector<std::array<int, 2>>> runs;
+  std::vector<int> longest;   // per row, its longest run
+  Eigen::RowVector2d origin;  // the turned chart's point at the mask's cell (0, 0) corner
+  long cells = 0;
+};
+
+// Whether the closed triangle t and the cell [x0, x0 + h] x [y0, y0 + h]
+// overlap: separated along no edge normal (the axes are the bounding box's).
+bool touches(const std::array<Eigen::RowVector2d, 3>& t, double x0, double y0, double h) {
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::RowVector2d e = t[(k + 1) % 3] - t[k];
+    const Eigen::RowVector2d n(-e.y(), e.x());
+    const double third = n.dot(t[(k + 2) % 3] - t[k]);
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const Eigen::RowVector2d corner : {Eigen::RowVector2d(x0, y0), Eigen::RowVector2d(x0 + h, y0),
+                                            Eigen::RowVector2d(x0, y0 + h), Eigen::RowVector2d(x0 + h, y0 + h)}) {
+      const double d = n.dot(corner - t[k]);
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+    if (std::min(0.0, third) > hi || std::max(0.0, third) < lo) return false;
+  }
+  return true;
+}
+
+Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Eigen::MatrixXd& UV, int quarter_turns,
+               double h) {
+  Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (int f : faces)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::RowVector2d p = turned(UV.row(F(f, k)), quarter_turns);
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  Mask mask;
+  mask.origin = lo - Eigen::RowVector2d::Constant(h);  // one cell of gap on every side
+  mask.width = static_cast<int>(std::floor((hi.x() - mask.origin.x()) / h)) + 2;
+  mask.height = static_cast<int>(std::floor((hi.y() - mask.origin.y()) / h)) + 2;
+  std::vector<char> cell(static_cast<std::size_t>(mask.width) * mask.height, 0);
+  for (int f : faces) {
+    std::array<Eigen::RowVector2d, 3> t;
+    for (int k = 0; k < 3; ++k) t[k] = (turned(UV.row(F(f, k)), quarter_turns) - mask.origin) / h;
+    const Eigen::RowVector2d tlo = t[0].cwiseMin(t[1]).cwiseMin(t[2]), thi = t[0].cwiseMax(t[1]).cwiseMax(t[2]);
+    for (int y = std::max(0, static_cast<int>(tlo.y())); y <= std::min(mask.height - 1, static_cast<int>(thi.y())); ++y)
+      for (int x = std::max(0, static_cast<int>(tlo.x())); x <= std::min(mask.width - 1, static_cast<int>(thi.x()));
+           ++x)
+        if (!cell[static_cast<std::size_t>(y) * mask.width + x] && touches(t, x, y, 1.0))
+          cell[static_cast<std::size_t>(y) * mask.width + x] = 1;
+  }
+  // The gap: every cell next to a marked one (8 neighbours).
+  std::vector<char> grown = cell;
+  for (int y = 0; y < mask.height; ++y)
+    for (int x = 0; x < mask.width; ++x)
+      if (cell[static_cast<std::size_t>(y) * mask.width + x])
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int yy = y + dy, xx = x + dx;
+            if (yy >= 0 && yy < mask.height && xx >= 0 && xx < mask.width)
+              grown[static_cast<std::size_t>(yy) * mask.width + xx] = 1;
+          }
+  mask.runs.resize(mask.height);
+  mask.longest.assign(mask.height, 0);
+  for (int y = 0; y < mask.height; ++y)
+    for (int x = 0; x < mask.width;) {
+      if (!grown[static_cast<std::size_t>(y) * mask.width + x]) {
+        ++x;
+        continue;
+      }
+      const int begin = x;
+      while (x < mask.width && grown[static_cast<std::size_t>(y) * mask.width + x]) ++x;
+      mask.runs[y].push_back({begin, x});
+      mask.cells += x - begin;
+      mask.longest[y] = std::max(mask.longest[y], x - begin);
+    }
+  return mask;
+}
+
+// The atlas: rows of cells, `width` wide, as high as it needs. Each row
+// keeps, per cell, how many free cells start there, so a run of a mask is
+// tested in one look.
+class Atlas {
+ public:
+  explicit Atlas(int width) : width_(width) {}
+
+  // 0 if m fits with its corner at (x, y); otherwise how far right the next
+  // place that may fit is (every place before it fails on the same run).
+  int misses(const Mask& m, int x, int y) const {
+    for (int j = 0; j < m.height && y + j < static_cast<int>(free_.size()); ++j) {
+      const std::vector<int>& free = free_[y + j];
+      for (const auto& [begin, end] : m.runs[j])
+        if (free[x + begin] < end - begin) return free[x + begin] + 1;
+    }
+    return 0;
+  }
+
+  // The first place (lowest row, then leftmost) where m fits.
+  std::array<int, 2> first_fit(const Mask& m) const {
+    for (int y = first_open_;; ++y) {
+      // A row whose longest free run is shorter than the mask's there: no x fits.
+      bool possible = true;
+      for (int j = 0; possible && j < m.height && y + j < static_cast<int>(free_.size()); ++j)
+        possible = longest_free_[y + j] >= m.longest[j];
+      if (!possible) continue;
+      for (int x = 0; x + m.width <= width_;) {
+        const int skip = misses(m, x, y);
+        if (skip == 0) return {x, y};
+        x += skip;
+      }
+    }
+  }
+
+  void place(const Mask& m, int x, int y) {
+    while (static_cast<int>(free_.size()) < y + m.height) {
+      std::vector<int> row(width_);
+      for (int i = 0; i < width_; ++i) row[i] = width_ - i;
+      free_.push_back(std::move(row));
+      longest_free_.push_back(width_);
+    }
+    for (int j = 0; j < m.height; ++j) {
+      std::vector<int>& free = free_[y + j];
+      for (const auto& [begin, end] : m.runs[j])
+        for (int i = begin; i < end; ++i) free[x + i] = 0;
+      for (int i = width_ - 1; i >= 0; --i)
+        if (free[i] > 0) free[i] = i + 1 < width_ ? free[i + 1] + 1 : 1;
+      longest_free_[y + j] = *std::max_element(free.begin(), free.end());
+    }
+    while (first_open_ < static_cast<int>(free_.size()) && longest_free_[first_open_] == 0) ++first_open_;
+  }
+
+ private:
+  int width_;
+  std::vector<std::vector<int>> free_;
+  std::vector<int> longest_free_;  // per row
+  int first_open_ = 0;
+};
+
+}  // namespace
+
+double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,
+                   const Eigen::MatrixXd& UV, std::vector<ChartPlacement>* placement) {
+  const int n = static_cast<int>(chart_faces.size());
+  std::vector<double> area(n, 0.0);
+  for (int c = 0; c < n; ++c)
+    for (int f : chart_faces[c]) {
+      const Eigen::RowVector2d a = UV.row(F(f, 1)) - UV.row(F(f, 0)), b = UV.row(F(f, 2)) - UV.row(F(f, 0));
+      area[c] += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+    }
+  const double total = std::accumulate(area.begin(), area.end(), 0.0);
+  // About 64 cells per chart, at least 2^14 and at most 2^18 in all: fine
+  // enough for the charts' shapes, coarse enough for the brute-force search.
+  const double target = std::clamp(64.0 * n, 16384.0, 262144.0);
+  const double h = std::sqrt(total / target);
+  if (!(h > 0)) return std::numeric_limits<double>::infinity();
+  std::vector<std::array<Mask, 2>> masks(n);
+  long cells = 0;
+  int widest = 0;
+  for (int c = 0; c < n; ++c) {
+    for (int q = 0; q < 2; ++q) masks[c][q] = rasterize(F, chart_faces[c], UV, q, h);
+    cells += masks[c][0].cells;
+    widest = std::max(widest, std::min(masks[c][0].width, masks[c][1].width));
+  }
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return area[a] > area[b]; });
+
+  double best_side = std::numeric_limits<double>::infinity();
+  for (const double fill : {0.9, 0.8, 0.7, 0.6, 0.5}) {
+    const int width = std::max(widest, static_cast<int>(std::ceil(std::sqrt(cells / fill))));
+    Atlas atlas(width);
+    std::vector<ChartPlacement> trial(n);
+    int used_width = 0, used_height = 0;
+    for (int c : order) {
+      int best_q = -1;
+      std::array<int, 2> best_at{};
+      for (int q = 0; q < 2; ++q) {
+        if (masks[c][q].width > width) continue;
+        const std::array<int, 2> at = atlas.first_fit(masks[c][q]);
+        if (best_q < 0 || at[1] + masks[c][q].height < best_at[1] + masks[c][best_q].height) {
+          best_q = q;
+          best_at = at;
+        }
+      }
+      const Mask& m = masks[c][best_q];
+      atlas.place(m, best_at[0], best_at[1]);
+      trial[c].quarter_turns = best_q;
+      trial[c].offset = Eigen::RowVector2d(best_at[0], best_at[1]) * h - m.origin;
+      used_width = std::max(used_width, best_at[0] + m.width);
+      used_height = std::max(used_height, best_at[1] + m.height);
+    }
+    const double side = h * std::max(used_width, used_height);
+    if (side < best_side) {
+      best_side = side;
+      *placement = std::move(trial);
+    }
+  }
+  return best_side;
+}
+
+void apply_placement(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,
+                     const std::vector<ChartPlacement>& placement, Eigen::MatrixXd* UV) {
+  std::vector<char> moved(UV->rows(), 0);
+  for (std::size_t c = 0; c < chart_faces.size(); ++c)
+    for (int f : chart_faces[c])
+      for (int k = 0; k < 3; ++k)
+        if (const int v = F(f, k); !moved[v]) {
+          moved[v] = 1;
+          UV->row(v) = turned(UV->row(v), placement[c].quarter_turns) + placement[c].offset;
+        }
+}
+
+}  // namespace akvf

@@ -1,0 +1,30 @@
+#pragma once
+// Charts packed on a grid of square cells so that they interlock where their
+// shapes allow (the brute-force placement xatlas and Blender use): each
+// chart's triangles mark every cell they touch, grown by one cell (the
+// gap between charts); largest chart first, each goes to the first free
+// place in row-major order (lowest row, then leftmost) of an atlas of a
+// fixed width, as given or turned a quarter, whichever ends lower. Several
+// atlas widths are tried; the one that fits the smallest square wins.
+#include <Eigen/Core>
+#include <vector>
+
+namespace akvf {
+
+// How one chart moves: uv -> R(quarter_turns * 90 degrees) uv + offset.
+struct ChartPlacement {
+  int quarter_turns = 0;
+  Eigen::RowVector2d offset = Eigen::RowVector2d::Zero();
+};
+
+// chart_faces[c]: the rows of F in chart c; UV: the charts as they are (their
+// scale is kept). Returns the side of the square the placed charts fit in,
+// and each chart's placement.
+double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,
+                   const Eigen::MatrixXd& UV, std::vector<ChartPlacement>* placement);
+
+// UV after `placement` (the vertices of chart c are those of its faces).
+void apply_placement(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,
+                     const std::vector<ChartPlacement>& placement, Eigen::MatrixXd* UV);
+
+}  // namespace akvf
