@@ -151,7 +151,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
       {"summary", "RUN.json",
        "write the run's summary: options, status, iterations, energy, memory (docs/experiments.md)"},
       {"view", "VIEW.html",
-       "write one self-contained HTML page: the checkerboard on the surface, the layout, the summary (akvf view)"},
+       "write one self-contained HTML page: the checkerboard on the surface (seams in red), the layout, the summary "
+       "(akvf view)"},
   };
   for (auto& spec : optimization_options()) specs.push_back(spec);
   CommandLine cl(

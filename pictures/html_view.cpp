@@ -1,8 +1,11 @@
 #include "pictures/html_view.h"
 
 #include <Eigen/LU>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "akvf/error.h"
@@ -72,6 +75,26 @@ TriMesh unit_extent(const TriMesh& mesh) {
   return unit;
 }
 
+// The seams: edges of two faces whose corners there take different UV rows,
+// as segments (6 floats each) of `mesh`, at most kMaxSeamSegments of them.
+constexpr std::size_t kMaxSeamSegments = 1 << 18;
+std::vector<float> seam_segments(const TriMesh& mesh, const Eigen::MatrixXi& uv_faces) {
+  std::map<std::pair<int, int>, std::array<int, 2>> first_side;  // edge -> the UV rows of its first face
+  std::vector<float> segments;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
+      const int ua = uv_faces(f, k), ub = uv_faces(f, (k + 1) % 3);
+      const auto key = std::minmax(a, b);
+      const std::array<int, 2> rows = a < b ? std::array<int, 2>{ua, ub} : std::array<int, 2>{ub, ua};
+      const auto [it, first] = first_side.emplace(key, rows);
+      if (first || it->second == rows || segments.size() >= 6 * kMaxSeamSegments) continue;
+      for (const int v : {a, b})
+        for (int c = 0; c < 3; ++c) segments.push_back(static_cast<float>(mesh.V(v, c)));
+    }
+  return segments;
+}
+
 nlohmann::json page_data(const ViewContent& content) {
   const TriMesh mesh = unit_extent(content.mesh);
   const Eigen::MatrixXd uv = unit_square_uv(content.uv);
@@ -116,6 +139,7 @@ nlohmann::json page_data(const ViewContent& content) {
           {"uv", base64_of(texcoords)},
           {"indices", base64_of(indices)},
           {"face_colors", base64_of(colors)},
+          {"seams", base64_of(seam_segments(mesh, content.uv_faces))},
           {"summary", content.summary}};
 }
 

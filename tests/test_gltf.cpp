@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "akvf/parameterize.h"
+#include "framework/mesh/mesh_validation.h"
 #include "io/checker_texture.h"
 #include "io/gltf_writer.h"
 #include "pictures/display_decimation.h"
@@ -139,6 +140,32 @@ TEST_CASE("display decimation: at most the asked faces, seam copies kept apart, 
   CHECK((small.mesh.uv.colwise().minCoeff().array() >= r.uv.colwise().minCoeff().array() - 1e-12).all());
   CHECK((small.mesh.uv.colwise().maxCoeff().array() <= r.uv.colwise().maxCoeff().array() + 1e-12).all());
   CHECK(small.mesh.mesh.V.rowwise().norm().maxCoeff() <= 3 + 1e-12);
+}
+
+TEST_CASE("the view's data holds the seams: one segment per edge the cut opened, none without a cut") {
+  if (!akvf::html_view_available()) return akvf::test::skip("three.js was not found at configure time");
+  const fs::path dir = akvf::test::scratch_dir("view_seams");
+  const akvf::TriMesh torus = akvf::test::torus(8);
+  akvf::ParameterizeOptions options;
+  options.cut = akvf::Cut::kAuto;
+  const akvf::ParameterizeResult r = akvf::parameterize(torus.V, torus.F, options);
+  const int cut_edges = akvf::prepare_disk_mesh(torus, "torus", true).cut_edges;
+  REQUIRE(cut_edges > 0);
+  const auto seams_text = [&](const Eigen::MatrixXd& uv, const Eigen::MatrixXi& uv_faces) {
+    akvf::ViewContent content;
+    content.mesh = torus;
+    content.uv = uv;
+    content.uv_faces = uv_faces;
+    akvf::write_html_view((dir / "v.html").string(), content);
+    const std::string page = akvf::test::read_text(dir / "v.html");
+    const std::string open = "id=\"akvf-data\">";
+    const std::size_t start = page.find(open) + open.size();
+    return nlohmann::json::parse(page.substr(start, page.find("</script>", start) - start))["seams"].get<std::string>();
+  };
+  // 6 floats (24 bytes, 32 base64 characters) per segment.
+  CHECK(seams_text(r.uv, r.uv_faces).size() == 32 * static_cast<std::size_t>(cut_edges));
+  CHECK(seams_text(torus.V.leftCols(2), torus.F).empty());
+  fs::remove_all(dir);
 }
 
 TEST_CASE("the view's data: any coordinate range, finite numbers, the distortion's mean at equal area") {

@@ -29,10 +29,11 @@
   const T = decode(data.uv, Float32Array);
   const I = decode(data.indices, Uint32Array);
   const C = decode(data.face_colors, Uint8Array);
+  const S = decode(data.seams, Float32Array);
   document.getElementById('note').textContent =
     data.faces + ' faces, ' + data.vertices + ' vertices; mean distortion ' + data.mean_distortion.toFixed(4) +
     ' (symmetric Dirichlet, the map scaled to the surface\'s area; 4 = isometric)' + (data.degenerate_or_inverted ? '; ' + data.degenerate_or_inverted + ' faces inverted or collapsed' : '') +
-    (data.note ? '. ' + data.note : '');
+    (S.length ? '; seams in red (' + S.length / 6 + ' edges)' : '') + (data.note ? '. ' + data.note : '');
 
   // Unindexed corners: a face's colour on each of its corners.
   const corners = I.length;
@@ -73,11 +74,18 @@
   geometry.computeBoundingSphere();
   const texture = new THREE.CanvasTexture(checker);
   texture.anisotropy = renderer.capabilities.getMaxAnisotropy();
-  const checkerMaterial = new THREE.MeshLambertMaterial({ map: texture, side: THREE.DoubleSide });
-  const distortionMaterial = new THREE.MeshLambertMaterial({ vertexColors: THREE.VertexColors, side: THREE.DoubleSide });
+  // The surface sits a little behind its seams (polygon offset), so the lines show.
+  const behind = { side: THREE.DoubleSide, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 };
+  const checkerMaterial = new THREE.MeshLambertMaterial(Object.assign({ map: texture }, behind));
+  const distortionMaterial = new THREE.MeshLambertMaterial(Object.assign({ vertexColors: THREE.VertexColors }, behind));
   const surface = new THREE.Mesh(geometry, checkerMaterial);
   const scene = new THREE.Scene();
   scene.add(surface);
+  if (S.length) {
+    const seamGeometry = new THREE.BufferGeometry();
+    seamGeometry.setAttribute('position', new THREE.BufferAttribute(S, 3));
+    scene.add(new THREE.LineSegments(seamGeometry, new THREE.LineBasicMaterial({ color: 0xd01c1c })));
+  }
   scene.add(new THREE.AmbientLight(0xffffff, 0.7));
   const camera = new THREE.PerspectiveCamera(35, 1, 1e-3, 1e3);
   const headlight = new THREE.DirectionalLight(0xffffff, 0.35);
