@@ -30,8 +30,9 @@ enum class InitialMap {
 
 // Meshes that are not one disk.
 enum class Cut {
-  kNone,  // refused, naming the reason
-  kAuto,  // cut into one disk chart per component
+  kNone,   // refused, naming the reason
+  kAuto,   // cut into one disk chart per component
+  kSeams,  // kAuto, then seams until the symmetric Dirichlet energy is bounded
 };
 
 // Non-manifold input.
@@ -88,7 +89,7 @@ inline std::span<const ChoiceWord<InitialMap>> choice_words(InitialMap) {
   return words;
 }
 inline std::span<const ChoiceWord<Cut>> choice_words(Cut) {
-  static constexpr ChoiceWord<Cut> words[] = {{Cut::kNone, "none"}, {Cut::kAuto, "auto"}};
+  static constexpr ChoiceWord<Cut> words[] = {{Cut::kNone, "none"}, {Cut::kAuto, "auto"}, {Cut::kSeams, "seams"}};
   return words;
 }
 inline std::span<const ChoiceWord<Repair>> choice_words(Repair) {

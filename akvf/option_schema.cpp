@@ -240,8 +240,13 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
     f.push_back(recomputes_start(
         choice_field<O>("cut", "cut", "cut",
                         "auto cuts a closed, multi-boundary, higher-genus or multi-component mesh into disks "
-                        "(one chart per component, side by side); none refuses such meshes",
+                        "(one chart per component, side by side); seams cuts so, then adds seams until every "
+                        "chart's symmetric Dirichlet energy is at most --max-distortion; none refuses such meshes",
                         &O::cut)));
+    f.push_back(number_field<O>("max_distortion", "max-distortion", "E",
+                                "with --cut seams: the bound on each chart's symmetric Dirichlet energy (4 is an "
+                                "isometry)",
+                                &O::max_distortion, "> 4", [](double e) { return e > 4; }));
     f.push_back(recomputes_start(
         choice_field<O>("repair", "repair", "repair",
                         "auto sets aside zero-area and repeated faces (kept in the outputs), opens edges shared "

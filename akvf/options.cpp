@@ -41,7 +41,9 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.init = o.init == InitialMap::kCotan ? TutteWeights::kCotangent : TutteWeights::kUniform;
   c.optimize_flaps = o.flaps;
   c.global_injectivity = o.injectivity == Injectivity::kGlobal;
-  c.cut = o.cut == Cut::kAuto;
+  c.cut = o.cut != Cut::kNone;
+  c.seams = o.cut == Cut::kSeams;
+  c.max_distortion = o.max_distortion;
   c.repair = o.repair == Repair::kAuto;
   c.optimizer.gradient_tolerance = o.grad_tol;
   c.optimizer.max_iterations = o.max_iters;

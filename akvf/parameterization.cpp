@@ -8,6 +8,7 @@
 #include "akvf/catalog.h"
 #include "akvf/error.h"
 #include "akvf/internal/preconditioner_settings.h"
+#include "akvf/internal/seam_cutting.h"
 #include "akvf/threads.h"
 #include "framework/mesh/chart_layout.h"
 #include "framework/mesh/vertex_graph.h"
@@ -101,6 +102,19 @@ int shorten_crossing_flaps(const BoundaryContact& contact, const Eigen::MatrixXd
   return static_cast<int>(std::count_if(halvings.begin(), halvings.end(), [](int n) { return n > 0; }));
 }
 
+// setup->x0 = the Tutte map of the charts of `normalized` (+ flaps).
+void start_at_tutte_map(const ParamConfig& config, const TriMesh& normalized, ParamSetup* setup) {
+  Eigen::MatrixXd UV = tutte_embedding_charts(normalized, setup->disk.boundary_loops, setup->disk.face_chart,
+                                              config.init, &setup->warnings, tutte_solver(setup->vertex_ordering));
+  if (config.optimize_flaps) {
+    const Eigen::MatrixXd tutte = UV;
+    setup->flaps_moved = optimize_flaps(normalized, &UV);
+    if (config.global_injectivity)
+      setup->flaps_shortened = shorten_crossing_flaps(*setup->boundary_contact, tutte, &UV);
+  }
+  setup->x0 = stack_uv(UV);
+}
+
 }  // namespace
 
 ParamSetup prepare_parameterization(const TriMesh& input, const std::string& name, const ParamConfig& config) {
@@ -140,15 +154,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
     setup.x0 = start_from_map(setup, config.start_uv, name + ": the texture coordinates", true, &setup.warnings);
   } else {
     setup.vertex_ordering = mesh_vertex_ordering(normalized);
-    Eigen::MatrixXd UV = tutte_embedding_charts(normalized, setup.disk.boundary_loops, setup.disk.face_chart,
-                                                config.init, &setup.warnings, tutte_solver(setup.vertex_ordering));
-    if (config.optimize_flaps) {
-      const Eigen::MatrixXd tutte = UV;
-      setup.flaps_moved = optimize_flaps(normalized, &UV);
-      if (config.global_injectivity)
-        setup.flaps_shortened = shorten_crossing_flaps(*setup.boundary_contact, tutte, &UV);
-    }
-    setup.x0 = stack_uv(UV);
+    start_at_tutte_map(config, normalized, &setup);
   }
   if (!usable_start(*setup.objective, setup.x0) && config.energy != kWarmStartEnergy) warm_start(config, &setup);
   return setup;
@@ -170,12 +176,39 @@ void prepend_warm_start(const OptimizerResult& warm, OptimizerResult* result) {
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks) {
   const ThreadLimit threads(config.threads);
+  if (config.seams) return run_with_seams(setup, config, callbacks);
+  ParamRun run = optimize_from_start(setup, config, callbacks);
+  measure_final_map(setup, &run);
+  return run;
+}
+
+ParamRun optimize_from_start(const ParamSetup& setup, const ParamConfig& config,
+                             const std::vector<IterationCallback>& callbacks) {
   ParamRun run = run_from_start(setup, config, callbacks);
   prepend_warm_start(setup.warm_start, &run.result);
-  run.boundary_crossings = setup.boundary_contact->count_crossings(run.result.x);
-  run.overlap = measure_uv_overlap(unstack_uv(run.result.x), setup.objective->elements(), setup.disk.face_chart);
-  run.distortion_energy = setup.objective->value(run.result.x);
   return run;
+}
+
+void measure_final_map(const ParamSetup& setup, ParamRun* run) {
+  const Eigen::VectorXd& x = run->result.x;
+  run->boundary_crossings = setup.boundary_contact->count_crossings(x);
+  run->overlap = measure_uv_overlap(unstack_uv(x), setup.objective->elements(), setup.disk.face_chart);
+  run->distortion_energy = setup.objective->value(x);
+}
+
+void rebuild_problem(const ParamConfig& config, ParamSetup* setup, bool tutte_start) {
+  TriMesh normalized = setup->disk.mesh;
+  normalized.V = (normalized.V.rowwise() - setup->normalization.center) * setup->normalization.scale;
+  const Eigen::MatrixXi& F = normalized.F;
+  auto objective = std::make_shared<DistortionObjective2D>(F, setup->objective->rest(),
+                                                           energies_2d().create(config.energy, config.energy_settings),
+                                                           normalized.num_vertices());
+  objective->set_file_numbering(setup->disk.input_vertex, normalized.index_base);
+  setup->objective = std::move(objective);
+  setup->boundary_contact = boundary_contact_of(normalized, setup->disk.boundary_loops);
+  setup->vertex_ordering = nullptr;  // of the old vertices
+  setup->warm_start = {};
+  if (tutte_start) start_at_tutte_map(config, normalized, setup);
 }
 
 namespace {

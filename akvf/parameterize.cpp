@@ -37,12 +37,17 @@ struct Parameterizer::State {
     callbacks.insert(callbacks.end(), more.begin(), more.end());
     const ParamRun run = run_parameterization(from, config, callbacks);
     ParameterizeResult result;
-    result.uv = output_uv(from, run.result.x);
-    result.uv_faces = output_uv_faces(from);
+    result.uv = output_uv(final_setup(from, run), run.result.x);
+    result.uv_faces = output_uv_faces(final_setup(from, run));
     fill_run_fields(run.result, run.preconditioner_statistics, run.preconditioner_report, from.warnings, &result);
     result.boundary_crossings = run.boundary_crossings;
     result.overlap_fraction = run.overlap.fraction();
     result.distortion_energy = run.distortion_energy;
+    result.seams_added = run.seams.seams;
+    result.seam_length = run.seams.seam_length;
+    result.chart_distortion = run.seams.chart_distortion;
+    result.distortion_bounded = run.seams.bound_met;
+    result.seam_stop_reason = run.seams.stop_reason;
     return result;
   }
 };

@@ -28,32 +28,34 @@ namespace akvf {
 // Every option of `akvf param`, with the command line's defaults
 // (docs/api.md lists the flag of each field).
 struct ParameterizeOptions {
-  std::string energy = "symmetric-dirichlet";  // a name of energies_2d(), built in or registered
-  double exponent = 1;                         // k of exp-symmetric-dirichlet and amips; > 0
-  Solver solver = Solver::kDescent;            // Algorithm 1 with `preconditioner`, or L-BFGS
-  std::string preconditioner = "akvf-newton";  // a name of preconditioners_2d(); "lbfgs" = solver lbfgs
-  std::string line_search = "backtracking";    // or "wolfe-bisection"
+  std::string energy = "symmetric-dirichlet";       // a name of energies_2d(), built in or registered
+  double exponent = 1;                              // k of exp-symmetric-dirichlet and amips; > 0
+  Solver solver = Solver::kDescent;                 // Algorithm 1 with `preconditioner`, or L-BFGS
+  std::string preconditioner = "akvf-newton";       // a name of preconditioners_2d(); "lbfgs" = solver lbfgs
+  std::string line_search = "backtracking";         // or "wolfe-bisection"
   Acceleration acceleration = Acceleration::kAuto;  // AQP momentum (kAuto: the laplacian only)
-  double akvf_reuse = 0.03;                    // AKVF: reuse the last factor through CG to this residual; 0 = never
-  std::optional<double> newton_reuse;          // projected Newton's reuse tolerance; none ("auto"): 0 for
-                                               // newton, akvf_reuse for the Newton phase of akvf-newton
-  double ls_rho = 0.5;                         // backtracking shrink factor in (0, 1)
-  InitialMap init = InitialMap::kTutte;        // kFile is the command line's (the API takes
-                                               // Parameterizer::solve(uv0))
-  Cut cut = Cut::kNone;                        // kAuto: cut closed / multi-boundary / higher-genus /
-                                               // multi-component meshes into disk charts (uv_faces)
-  Repair repair = Repair::kAuto;               // kAuto: open edges of 3+ faces, split non-manifold vertices
-                                               // (per-corner uv_faces); kNone: refuse such meshes
-  bool flaps = true;                           // flap optimization of §5.4 after the Tutte map
+  double akvf_reuse = 0.03;                        // AKVF: reuse the last factor through CG to this residual; 0 = never
+  std::optional<double> newton_reuse;              // projected Newton's reuse tolerance; none ("auto"): 0 for
+                                                   // newton, akvf_reuse for the Newton phase of akvf-newton
+  double ls_rho = 0.5;                             // backtracking shrink factor in (0, 1)
+  InitialMap init = InitialMap::kTutte;            // kFile is the command line's (the API takes
+                                                   // Parameterizer::solve(uv0))
+  Cut cut = Cut::kNone;                            // kAuto: cut closed / multi-boundary / higher-genus /
+                                                   // multi-component meshes into disk charts (uv_faces);
+                                                   // kSeams: then add seams (max_distortion)
+  double max_distortion = 4.2;                     // kSeams: bound on each chart's symmetric Dirichlet energy
+  Repair repair = Repair::kAuto;                   // kAuto: open edges of 3+ faces, split non-manifold vertices
+                                                   // (per-corner uv_faces); kNone: refuse such meshes
+  bool flaps = true;                               // flap optimization of §5.4 after the Tutte map
   Injectivity injectivity = Injectivity::kGlobal;  // kGlobal: no UV overlap (boundary contact-free);
                                                    // kLocal: flip-free only, the paper's Algorithm 1
-  double grad_tol = 1e-3;                      // converged when ||grad E|| < grad_tol (area-1 units)
-  int max_iters = 1000;                        // >= 0
+  double grad_tol = 1e-3;                          // converged when ||grad E|| < grad_tol (area-1 units)
+  int max_iters = 1000;                            // >= 0
   double time_limit = std::numeric_limits<double>::infinity();  // optimizer seconds, > 0
-  int warm_start_iters = 1000;         // limit of the symmetric Dirichlet warm start of overflowing energies
+  int warm_start_iters = 1000;  // limit of the symmetric Dirichlet warm start of overflowing energies
   LinearSolver linear_solver = LinearSolver::kAuto;  // kAuto: kAmg only if the factor would not fit
   EigenFilter eigen_filter = EigenFilter::kAuto;     // projected Newton's element Hessians
-  int threads = 0;                     // worker threads for this call; 0 = all cores
+  int threads = 0;                                   // worker threads for this call; 0 = all cores
   // Called after every iteration (row 0 = the initial map) with the summary
   // and the current map (interleaved u0 v0 u1 v1 ..., area-1 units; use
   // Parameterizer::uv_of to get #V by 2 at the input's scale). Returning
@@ -95,6 +97,15 @@ struct ParameterizeResult {
   // The energy of the map in uv: energy() less the boundary barrier that
   // global injectivity adds where it holds the map off an overlap.
   double distortion_energy = 0;
+  // With cut kSeams: the seams added after the first cut, the length of
+  // every seam (that cut's too) over the square root of the mesh's area,
+  // each chart's symmetric Dirichlet energy at the end, and whether all are
+  // at most max_distortion (if not, seam_stop_reason says why seams stopped).
+  int seams_added = 0;
+  double seam_length = 0;
+  std::vector<double> chart_distortion;
+  bool distortion_bounded = false;
+  std::string seam_stop_reason;
 
   double energy() const { return trace.empty() ? 0 : trace.back().energy; }
   double grad_norm() const { return trace.empty() ? 0 : trace.back().grad_norm; }

@@ -9,6 +9,7 @@
 #include "akvf/internal/demo_mesh.h"
 #include "akvf/internal/options.h"
 #include "akvf/internal/parameterization.h"
+#include "akvf/internal/seam_cutting.h"
 #include "akvf/mesh_io.h"
 #include "akvf/pictures.h"
 #include "akvf/threads.h"
@@ -65,6 +66,7 @@ Json param_summary(const std::string& mesh_file, const ParameterizeOptions& opti
   record["overlap"] = Json{{"boundary_crossings", run.boundary_crossings}, {"area_fraction", run.overlap.fraction()}};
   record["distortion_energy"] = run.distortion_energy;
   if (setup.disk.cut) record["cut"] = cut_record(setup.disk);
+  if (options.cut == Cut::kSeams) record["seams"] = seam_record(run.seams, options.max_distortion);
   if (setup.disk.repair.any() || !setup.disk.removed_faces.empty()) record["repair"] = repair_record(setup.disk);
   if (texture_uv_scale > 0) record["texture_uv_scale"] = texture_uv_scale;
   record["uv_coverage"] = coverage;
@@ -94,6 +96,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   callbacks.push_back(trace.callback());
   const ParamRun run = run_parameterization(setup, config, callbacks);
   const OptimizerResult& result = run.result;
+  const ParamSetup& final = final_setup(setup, run);
   const IterationSummary& last = result.trace.back();
   out << summary_line(result);
   if (!run.preconditioner_report.empty()) out << run.preconditioner_name << ": " << run.preconditioner_report << '\n';
@@ -104,11 +107,17 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
         << (config.global_injectivity ? " (global injectivity keeps only a start without overlap so)\n"
                                       : " (--injectivity global prevents it)\n");
 
-  const Eigen::MatrixXd UV = output_uv(setup, result.x);
-  const Eigen::MatrixXi UV_faces = output_uv_faces(setup);
+  if (config.seams) {
+    out << name << ": " << seam_description(run.seams, config.max_distortion) << '\n';
+    if (!run.seams.bound_met && is_normal_termination(result.status))
+      err << "warning: the distortion bound " << config.max_distortion
+          << " does not hold in every chart; a larger --max-distortion ends sooner\n";
+  }
+  const Eigen::MatrixXd UV = output_uv(final, result.x);
+  const Eigen::MatrixXi UV_faces = output_uv_faces(final);
   const double coverage = square_coverage(UV_faces, UV);
-  if (setup.disk.num_charts() > 1)
-    out << count_of(setup.disk.num_charts(), "chart") << " packed, covering " << 100 * coverage
+  if (final.disk.num_charts() > 1)
+    out << count_of(final.disk.num_charts(), "chart") << " packed, covering " << 100 * coverage
         << " % of the UV square\n";
   double texture_uv_scale = 0;
   if (!outputs.obj.empty()) {
@@ -124,7 +133,7 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
                          " iterations, E = " + std::to_string(last.energy));
   if (!outputs.png.empty()) write_layout_png(outputs.png, input, UV, UV_faces, outputs.png_size);
   if (!outputs.summary.empty() || !outputs.view.empty()) {
-    const Json summary = param_summary(name, options, setup, run, texture_uv_scale, coverage);
+    const Json summary = param_summary(name, options, final, run, texture_uv_scale, coverage);
     if (!outputs.summary.empty()) write_summary(outputs.summary, summary);
     if (!outputs.view.empty())
       write_view(outputs.view, input, UV, UV_faces, std::filesystem::path(name).filename().string(), summary.dump());
@@ -160,7 +169,8 @@ int param_command(const std::vector<std::string>& args, std::ostream& out, std::
       "Parameterizes a disk-topology triangle mesh by minimizing a distortion energy\n"
       "with a preconditioned, flip-free descent (Claici et al. 2017, Algorithm 1).\n"
       "--cut auto first cuts a closed, multi-boundary, higher-genus or multi-component\n"
-      "mesh into disk charts.",
+      "mesh into disk charts; --cut seams then adds seams until every chart's\n"
+      "symmetric Dirichlet energy is at most --max-distortion (default 4.2).",
       specs);
   cl.parse(args);
   if (cl.has("help")) {

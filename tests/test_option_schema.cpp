@@ -34,6 +34,7 @@ std::string other_value(const akvf::OptionField<Options>& field, const Options& 
   if (field.kind == akvf::OptionKind::kSwitch) return "true";
   if (field.kind == akvf::OptionKind::kInteger) return "7";
   if (field.key == "time_limit") return "12.5";
+  if (field.key == "max_distortion") return "4.5";
   return current == "0.25" ? "0.5" : "0.25";
 }
 

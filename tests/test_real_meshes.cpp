@@ -15,7 +15,9 @@
 #include "akvf/internal/parameterization.h"
 #include "akvf/internal/slim_cube.h"
 #include "akvf/mesh_io.h"
+#include "akvf/parameterize.h"
 #include "akvf/tet_mesh_io.h"
+#include "framework/mesh/initialization.h"
 #include "io/constraints_io.h"
 #include "tests/test_support.h"
 
@@ -92,6 +94,31 @@ TEST_CASE("the closed meshes are cut to a disk and parameterized without an inve
     CHECK(run.inverted_iterates == 0);
     CHECK(akvf::is_normal_termination(run.result.status));
     CHECK(run.result.trace.back().energy < run.result.trace.front().energy);
+  }
+}
+
+TEST_CASE("--cut seams bounds the closed meshes' symmetric Dirichlet energy at 4.2, flip-free, every face kept") {
+  const std::string dir = akvf::test::data_dir();
+  if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
+  for (const char* name : {"cow_closed.off", "bunny_closed.off"}) {
+    CAPTURE(name);
+    const akvf::TriMesh mesh = akvf::read_triangle_mesh(dir + "/tri/" + name);
+    akvf::ParameterizeOptions options;
+    options.cut = akvf::Cut::kSeams;
+    int flipped_rows = 0;
+    options.callbacks.push_back([&](const akvf::IterationSummary& row, const Eigen::VectorXd&) {
+      flipped_rows += row.flips > 0;
+      return akvf::CallbackAction::kContinue;
+    });
+    const akvf::ParameterizeResult r = akvf::parameterize(mesh.V, mesh.F, options);
+    CHECK(r.status == akvf::TerminationStatus::kConverged);
+    CHECK(r.distortion_bounded);
+    for (double e : r.chart_distortion) CHECK(e <= 4.2);
+    CHECK(r.distortion_energy <= 4.2);
+    CHECK(flipped_rows == 0);
+    CHECK(r.boundary_crossings == 0);
+    REQUIRE(r.uv_faces.rows() == mesh.num_faces());
+    CHECK(akvf::count_inverted_triangles(r.uv_faces, r.uv) == 0);
   }
 }
 
@@ -207,8 +234,8 @@ TEST_CASE("ARAP converges with the default, projected Newton and SLIM on the dis
   // (docs/pairs.md) but take 17 minutes under the sanitizers.
   const std::string dir = akvf::test::data_dir();
   if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
-  for (const char* name : {"camel_b.obj", "cow_b.obj", "tricera_b.obj", "lilium.obj", "snail.obj",
-                           "inspired_mesh.obj", "bump-domain.obj"})
+  for (const char* name :
+       {"camel_b.obj", "cow_b.obj", "tricera_b.obj", "lilium.obj", "snail.obj", "inspired_mesh.obj", "bump-domain.obj"})
     for (const char* method : {"akvf-newton", "newton", "slim"}) {
       const std::string label = std::string(name) + " / " + method;
       INFO(label);

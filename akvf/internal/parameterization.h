@@ -11,6 +11,7 @@
 #include "akvf/rest_geometry.h"
 #include "framework/mesh/initialization.h"
 #include "framework/mesh/mesh_validation.h"
+#include "framework/mesh/seam_opening.h"
 #include "framework/mesh/uv_overlap.h"
 #include "framework/optimization/boundary_contact.h"
 #include "framework/optimization/distortion_objective.h"
@@ -30,6 +31,10 @@ struct ParamConfig {
   // disks (one chart per component, framework/mesh/cut_to_disk.h) instead of
   // refusing it.
   bool cut = false;
+  // Then add seams until every chart's symmetric Dirichlet energy is at
+  // most `max_distortion` (akvf/internal/seam_cutting.h).
+  bool seams = false;
+  double max_distortion = 4.2;
   // Open edges of three or more faces and split non-manifold vertices
   // (framework/mesh/manifold_repair.h) instead of refusing them.
   bool repair = true;
@@ -95,12 +100,36 @@ struct ParamRun {
   // (the trace's energy adds the boundary barrier of global injectivity,
   // which is not zero where the map is held off an overlap).
   double distortion_energy = 0;
+  // With seams: the problem the final map is of (the mesh opened along the
+  // seams), and what the seams did. Null / empty otherwise.
+  std::shared_ptr<const ParamSetup> seamed;
+  SeamReport seams;
 };
 
+// The problem run.result.x is a map of: run.seamed if seams were added,
+// else `setup` itself.
+inline const ParamSetup& final_setup(const ParamSetup& setup, const ParamRun& run) {
+  return run.seamed ? *run.seamed : setup;
+}
+
 // The run from setup.x0. A warm start's rows open the trace (warm_start set)
-// and its time is added to the seconds column.
+// and its time is added to the seconds column. With config.seams, the rounds
+// of seam_cutting.h, whose final problem is run.seamed.
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks = {});
+
+// One optimization from setup.x0 with the warm start's rows ahead, without
+// the final map's overlap measures (the rounds of seam_cutting.h).
+ParamRun optimize_from_start(const ParamSetup& setup, const ParamConfig& config,
+                             const std::vector<IterationCallback>& callbacks);
+
+// The overlap measures and the distortion energy of run->result.x.
+void measure_final_map(const ParamSetup& setup, ParamRun* run);
+
+// After setup->disk gained vertices (seams opened, same faces): its
+// objective (same rest shapes) and boundary contact anew; with
+// `tutte_start`, x0 the Tutte map (+ flaps) of the opened charts too.
+void rebuild_problem(const ParamConfig& config, ParamSetup* setup, bool tutte_start = false);
 
 // The UV map of the optimized mesh's vertices (#setup.disk.mesh.V by 2) at
 // the input's scale: x with the normalization undone, so that the input

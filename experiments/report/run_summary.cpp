@@ -91,6 +91,15 @@ Json cut_record(const DiskMesh& disk) {
           {"boundary_loops", disk.chart_input_loops}};
 }
 
+Json seam_record(const SeamReport& seams, double max_distortion) {
+  return {{"added", seams.seams},
+          {"seam_length", seams.seam_length},
+          {"max_distortion", max_distortion},
+          {"chart_distortion", seams.chart_distortion},
+          {"bound_met", seams.bound_met},
+          {"stop_reason", seams.stop_reason}};
+}
+
 Json repair_record(const DiskMesh& disk) {
   const ManifoldRepair& repair = disk.repair;
   const int index_base = disk.mesh.index_base;

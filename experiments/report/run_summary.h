@@ -12,6 +12,7 @@
 #include "akvf/optimizer.h"
 #include "akvf/preconditioner.h"
 #include "framework/mesh/mesh_validation.h"
+#include "framework/mesh/seam_opening.h"
 
 namespace akvf {
 
@@ -41,6 +42,8 @@ Json linear_algebra_record(const PreconditionerStatistics& statistics, const std
 // What the automatic cut did (--cut auto): charts, cut_edges, and per chart
 // the genus and boundary loops of its component before the cut.
 Json cut_record(const DiskMesh& disk);
+// What --cut seams did.
+Json seam_record(const SeamReport& seams, double max_distortion);
 // What --repair auto did: counts, and the first few edges, vertices and
 // faces set aside, numbered as the file numbers them.
 Json repair_record(const DiskMesh& disk);

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "akvf/error.h"
+#include "framework/mesh/corner_copies.h"
 #include "framework/mesh/mesh_topology.h"
 
 namespace akvf {
@@ -32,8 +33,6 @@ struct ClosedSurface {
   std::vector<std::vector<int>> loops;
 };
 
-std::int64_t edge_key(int a, int b, int nv) { return static_cast<std::int64_t>(std::min(a, b)) * nv + std::max(a, b); }
-
 ClosedSurface close_surface(const TriMesh& mesh) {
   const int nv = mesh.num_vertices(), nf = mesh.num_faces();
   const Eigen::MatrixXi& F = mesh.F;
@@ -43,7 +42,7 @@ ClosedSurface close_surface(const TriMesh& mesh) {
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
       const int a = F(f, k), b = F(f, (k + 1) % 3);
-      const auto [it, inserted] = edge_of.emplace(edge_key(a, b, nv), static_cast<int>(s.edges.size()));
+      const auto [it, inserted] = edge_of.emplace(undirected_edge_key(a, b, nv), static_cast<int>(s.edges.size()));
       if (inserted) {
         s.edges.push_back({std::min(a, b), std::max(a, b), {f, -1}, (mesh.V.row(a) - mesh.V.row(b)).norm(), true});
       } else {
@@ -57,7 +56,7 @@ ClosedSurface close_surface(const TriMesh& mesh) {
     const int n = static_cast<int>(loop.size()), first_face = cone_face;
     const int cone = nv + static_cast<int>(h);
     for (int i = 0; i < n; ++i)  // the cone face over boundary edge (loop[i], loop[i + 1])
-      s.edges[edge_of.at(edge_key(loop[i], loop[(i + 1) % n], nv))].face[1] = cone_face++;
+      s.edges[edge_of.at(undirected_edge_key(loop[i], loop[(i + 1) % n], nv))].face[1] = cone_face++;
     for (int i = 0; i < n; ++i)
       s.edges.push_back({cone, loop[i], {first_face + (i + n - 1) % n, first_face + i}, 0.0, false});
   }
@@ -124,38 +123,15 @@ std::vector<int> farthest_per_component(const PathTree& tree, const std::vector<
   return farthest;
 }
 
-// The vertices of the mesh opened along the cut edges: the corners around a
-// vertex stay one vertex across every interior edge that is not cut.
-struct CornerCopies {
-  std::vector<int> copy_of_corner;  // 3 F: the new vertex of each face corner
-  std::vector<int> source_vertex;   // the input vertex of each new vertex, ascending
-};
-
-CornerCopies split_corners(const Eigen::MatrixXi& F, int nv, const std::vector<Edge>& edges,
-                           const std::vector<char>& cut) {
-  const int nf = static_cast<int>(F.rows());
-  auto corner = [&](int f, int v) { return 3 * f + (F(f, 0) == v ? 0 : F(f, 1) == v ? 1 : 2); };
-  DisjointSets corners(3 * nf);
+// The joins of the real interior edges that are not cut.
+std::vector<FaceJoin> uncut_joins(const std::vector<Edge>& edges, int nf, const std::vector<char>& cut) {
+  std::vector<FaceJoin> joins;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const Edge& edge = edges[e];
     if (!edge.real || edge.face[1] < 0 || edge.face[1] >= nf || cut[e]) continue;  // cone, boundary or cut edges
-    for (int v : {edge.a, edge.b}) corners.unite(corner(edge.face[0], v), corner(edge.face[1], v));
+    joins.push_back({edge.face[0], edge.face[1], edge.a, edge.b});
   }
-  // Numbered by input vertex, then by first corner.
-  CornerCopies copies;
-  copies.copy_of_corner.assign(3 * nf, -1);
-  std::vector<int> copy_of_root(3 * nf, -1);
-  const VertexFaces around = vertex_faces(F, nv);
-  for (int v = 0; v < nv; ++v)
-    for (int i = around.offsets[v]; i < around.offsets[v + 1]; ++i) {
-      const int root = corners.find(around.face_corner[i]);
-      if (copy_of_root[root] < 0) {
-        copy_of_root[root] = static_cast<int>(copies.source_vertex.size());
-        copies.source_vertex.push_back(v);
-      }
-      copies.copy_of_corner[around.face_corner[i]] = copy_of_root[root];
-    }
-  return copies;
+  return joins;
 }
 
 }  // namespace
@@ -169,7 +145,7 @@ DiskCut cut_to_disks(const TriMesh& mesh) {
   // A vertex whose corners form several fans across the uncut edges is not
   // manifold (the count of a surface's genus and the cut assume it is).
   {
-    const CornerCopies uncut = split_corners(F, nv, s.edges, std::vector<char>(s.edges.size(), 0));
+    const CornerCopies uncut = split_corners(F, nv, uncut_joins(s.edges, nf, std::vector<char>(s.edges.size(), 0)));
     for (std::size_t i = 1; i < uncut.source_vertex.size(); ++i)
       if (uncut.source_vertex[i] == uncut.source_vertex[i - 1]) {
         out.nonmanifold_vertex = uncut.source_vertex[i];
@@ -270,7 +246,9 @@ DiskCut cut_to_disks(const TriMesh& mesh) {
   std::vector<char> cut(num_edges, 0);
   for (int e = 0; e < num_edges; ++e) cut[e] = in_graph[e] && s.edges[e].real && s.edges[e].face[1] < nf;
   out.cut_edges = static_cast<int>(std::count(cut.begin(), cut.end(), 1));
-  const CornerCopies copies = split_corners(F, nv, s.edges, cut);
+  for (int e = 0; e < num_edges; ++e)
+    if (cut[e]) out.cut_length += s.edges[e].length;
+  const CornerCopies copies = split_corners(F, nv, uncut_joins(s.edges, nf, cut));
   out.source_vertex = copies.source_vertex;
   out.mesh.V.resize(static_cast<Eigen::Index>(out.source_vertex.size()), 3);
   for (std::size_t i = 0; i < out.source_vertex.size(); ++i) out.mesh.V.row(i) = mesh.V.row(out.source_vertex[i]);

@@ -26,6 +26,7 @@ struct DiskCut {
   std::vector<int> face_chart;     // #F: the chart (component) of each face, numbered by first face
   int num_charts = 0;
   int cut_edges = 0;             // input edges opened (each becomes two boundary edges)
+  double cut_length = 0;         // their total length
   std::vector<int> chart_genus;  // #charts: genus of the component before cutting
   std::vector<int> chart_loops;  // #charts: its boundary loops before cutting
   int nonmanifold_vertex = -1;

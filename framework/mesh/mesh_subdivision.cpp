@@ -3,6 +3,7 @@
 #include <unordered_map>
 
 #include "akvf/error.h"
+#include "framework/mesh/mesh_topology.h"
 
 namespace akvf {
 
@@ -14,7 +15,7 @@ TriMesh subdivide_once(const TriMesh& mesh) {
   midpoint.reserve(static_cast<std::size_t>(mesh.num_faces()) * 2);
   std::vector<Eigen::RowVector3d> added;
   const auto vertex_on = [&](int a, int b) {
-    const long long key = static_cast<long long>(std::min(a, b)) * n + std::max(a, b);
+    const long long key = undirected_edge_key(a, b, n);
     const auto [it, inserted] = midpoint.emplace(key, n + static_cast<int>(added.size()));
     if (inserted) added.push_back(0.5 * (mesh.V.row(a) + mesh.V.row(b)));
     return it->second;

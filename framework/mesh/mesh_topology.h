@@ -1,6 +1,8 @@
 #pragma once
 // Combinatorial queries on triangle meshes: edges, components, boundary loops.
 #include <Eigen/Core>
+#include <algorithm>
+#include <cstdint>
 #include <vector>
 
 namespace akvf {
@@ -20,6 +22,12 @@ struct EdgeTopology {
 };
 
 EdgeTopology edge_topology(const Eigen::MatrixXi& F);
+
+// A key of the undirected edge (a, b) among num_vertices vertices, the same
+// for (b, a).
+inline std::int64_t undirected_edge_key(int a, int b, int num_vertices) {
+  return static_cast<std::int64_t>(std::min(a, b)) * num_vertices + std::max(a, b);
+}
 
 // Union-find with path halving; the smaller index is the representative.
 class DisjointSets {

@@ -112,6 +112,7 @@ void cut_into_charts(const std::string& name, DiskMesh* disk) {
   disk->face_chart = std::move(cut.face_chart);
   disk->cut = true;
   disk->cut_edges = cut.cut_edges;
+  disk->cut_length = cut.cut_length;
   disk->chart_genus = std::move(cut.chart_genus);
   disk->chart_input_loops = std::move(cut.chart_loops);
 }

@@ -60,7 +60,10 @@ class Result:
     ``warnings``; parameterize only: ``boundary_crossings`` and
     ``overlap_fraction`` (the final map's self-overlap per chart, 0 with
     injectivity="global") and ``distortion_energy`` (the energy of ``uv``:
-    ``energy`` less the boundary barrier that holds it off an overlap).
+    ``energy`` less the boundary barrier that holds it off an overlap);
+    with cut="seams" also ``seams_added``, ``seam_length`` (over the square
+    root of the area), ``chart_distortion`` (each chart's symmetric
+    Dirichlet energy), ``distortion_bounded`` and ``seam_stop_reason``.
     """
 
     def __init__(self, fields):

@@ -103,9 +103,9 @@ def test_the_schema_says_which_options_recompute_the_initial_map():
     fields = {f["key"]: f for f in akvf.options("parameterize")}
     assert fields["init"]["recomputes_start"] and fields["energy"]["recomputes_start"]
     assert not fields["max_iters"]["recomputes_start"] and not fields["precond"]["recomputes_start"]
-    assert fields["cut"]["values"] == "none|auto" and fields["cut"]["scope"] == "param"
+    assert fields["cut"]["values"] == "none|auto|seams" and fields["cut"]["scope"] == "param"
     assert fields["max_iters"]["scope"] == "both"
-    with pytest.raises(akvf.OptionsError, match=r"unknown cut 'yes' \(valid: none, auto\)"):
+    with pytest.raises(akvf.OptionsError, match=r"unknown cut 'yes' \(valid: none, auto, seams\)"):
         akvf.parameterize(*bumpy_disk(), cut="yes")
     V, F = bumpy_disk()
     solver = akvf.Parameterizer(V, F)

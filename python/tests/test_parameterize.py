@@ -271,6 +271,19 @@ def test_cut_auto_gives_per_corner_uvs_of_a_closed_mesh(tmp_path):
     assert sum(line.startswith("f ") for line in lines) == F.shape[0]
 
 
+def test_cut_seams_bounds_the_distortion_of_every_chart():
+    V, F = torus()
+    r = akvf.parameterize(V, F, cut="seams", max_distortion=4.1)
+    assert r.status == "converged"
+    assert r.distortion_bounded and r.seam_stop_reason == ""
+    assert max(r.chart_distortion) <= 4.1
+    assert r.seam_length > 0 and r.seams_added >= 0
+    corners = r.uv[r.uv_faces]
+    e1, e2 = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
+    assert np.all(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0] > 0)
+    assert not hasattr(akvf.parameterize(V, F, cut="auto"), "seams_added")
+
+
 def test_uv_faces_is_F_without_the_cut(disk):
     V, F = disk
     r = akvf.parameterize(V, F)

@@ -1,0 +1,237 @@
+#include "akvf/internal/seam_cutting.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numeric>
+
+#include "akvf/catalog.h"
+#include "framework/mesh/seam_opening.h"
+
+namespace akvf {
+
+namespace {
+
+constexpr const char* kBoundedEnergy = "symmetric-dirichlet";
+// Seams stop when this many in a row did not lower the largest chart
+// energy: more would lengthen the seams without bounding the distortion.
+constexpr int kFutileSeams = 10;
+constexpr double kRoundGradientTolerance = 1e-2;
+constexpr double kPeakShare = 0.5;
+
+// The symmetric Dirichlet energy of each face at x.
+Eigen::VectorXd face_energy(const ParamSetup& setup, const Eigen::VectorXd& x) {
+  const DistortionObjective2D& objective = *setup.objective;
+  if (objective.density().name() == kBoundedEnergy) return objective.face_distortion(x);
+  const DistortionObjective2D sd(objective.elements(), objective.rest(), energies_2d().create(kBoundedEnergy, {}),
+                                 objective.num_vertices());
+  return sd.face_distortion(x);
+}
+
+// Per chart, the area-weighted mean of the faces' energies.
+std::vector<double> chart_energy(const ParamSetup& setup, const Eigen::VectorXd& energy) {
+  const int charts = setup.disk.num_charts();
+  std::vector<double> sum(charts, 0), area(charts, 0);
+  const Eigen::VectorXd& weight = setup.objective->weights();
+  for (int f = 0; f < energy.size(); ++f) {
+    sum[setup.disk.face_chart[f]] += weight[f] * energy[f];
+    area[setup.disk.face_chart[f]] += weight[f];
+  }
+  for (int c = 0; c < charts; ++c) sum[c] /= area[c];
+  return sum;
+}
+
+// Where the round's seams start: the interior vertices of the charts above
+// the bound whose energy (the area-weighted mean of their faces') is above
+// it too and at least their neighbours' (the peaks of the distortion), most
+// distorted first; if there is none, the most distorted interior vertex of
+// the worst chart.
+std::vector<int> seam_starts(const ParamSetup& setup, const Eigen::VectorXd& energy,
+                             const std::vector<double>& chart_energy, double bound) {
+  const TriMesh& mesh = setup.disk.mesh;
+  const int nv = mesh.num_vertices();
+  const Eigen::VectorXd& weight = setup.objective->weights();
+  std::vector<double> sum(nv, 0), area(nv, 0);
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      sum[mesh.F(f, k)] += weight[f] * energy[f];
+      area[mesh.F(f, k)] += weight[f];
+    }
+  std::vector<double> mean(nv);
+  for (int v = 0; v < nv; ++v) mean[v] = sum[v] / area[v];
+  std::vector<char> interior(nv, 1);
+  for (const auto& loop : setup.disk.boundary_loops)
+    for (int v : loop) interior[v] = 0;
+  std::vector<char> candidate = interior;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.F(f, k);
+      if (chart_energy[setup.disk.face_chart[f]] <= bound) candidate[v] = 0;
+      for (int w : {mesh.F(f, (k + 1) % 3), mesh.F(f, (k + 2) % 3)})
+        if (interior[w] && mean[w] > mean[v]) candidate[v] = 0;
+    }
+  std::vector<int> starts;
+  int most = -1;
+  for (int v = 0; v < nv; ++v) {
+    if (candidate[v] && mean[v] > bound) starts.push_back(v);
+    if (candidate[v] && (most < 0 || mean[v] > mean[most])) most = v;
+  }
+  std::stable_sort(starts.begin(), starts.end(), [&](int a, int b) { return mean[a] > mean[b]; });
+  if (starts.empty() && most >= 0) starts.push_back(most);
+  if (starts.empty()) return starts;
+  const double floor = 4 + kPeakShare * (mean[starts.front()] - 4);
+  starts.erase(std::find_if(starts.begin(), starts.end(), [&](int v) { return mean[v] < floor; }), starts.end());
+  return starts;
+}
+
+// Each copy of a vertex the seam split (source[v] repeated) moved into its
+// own triangles, away from its twin, so that the seam's two sides no longer
+// touch (the boundary barrier of global injectivity is infinite where they
+// do): by `fraction` of the smallest height of its triangles, along the
+// mean direction to their centroids, which flips none of them (a vertex
+// moved by less than a triangle's height keeps to its side of the opposite
+// edge).
+void part_seam_sides(const TriMesh& mesh, const std::vector<int>& source, double fraction, Eigen::VectorXd* x) {
+  const int nv = static_cast<int>(source.size());
+  std::vector<char> split(nv, 0);
+  for (int v = 1; v < nv; ++v)
+    if (source[v] == source[v - 1]) split[v] = split[v - 1] = 1;
+  std::vector<Eigen::Vector2d> direction(nv, Eigen::Vector2d::Zero());
+  std::vector<double> height(nv, std::numeric_limits<double>::infinity());
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    Eigen::Vector2d p[3];
+    for (int k = 0; k < 3; ++k) p[k] = x->segment<2>(2 * mesh.F(f, k));
+    const double twice_area = (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
+    const Eigen::Vector2d centroid = (p[0] + p[1] + p[2]) / 3;
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.F(f, k);
+      if (!split[v]) continue;
+      direction[v] += centroid - p[k];
+      height[v] = std::min(height[v], twice_area / (p[(k + 1) % 3] - p[(k + 2) % 3]).norm());
+    }
+  }
+  for (int v = 0; v < nv; ++v)
+    if (split[v] && direction[v].norm() > 0) x->segment<2>(2 * v) += fraction * height[v] * direction[v].normalized();
+}
+
+// Rows of later rounds continue the numbering and the clock of the earlier
+// ones.
+IterationCallback shifted(const IterationCallback& callback, const int* iterations, const double* seconds) {
+  return [=](const IterationSummary& row, const Eigen::VectorXd& x) {
+    IterationSummary moved = row;
+    moved.iteration += *iterations;
+    moved.seconds += *seconds;
+    if (*iterations > 0 && row.iteration == 0) return CallbackAction::kContinue;  // the previous round's end
+    return callback(moved, x);
+  };
+}
+
+}  // namespace
+
+ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
+                        const std::vector<IterationCallback>& callbacks) {
+  auto setup = std::make_shared<ParamSetup>(start);
+  int iterations = 0;
+  double seconds = 0;
+  std::vector<IterationCallback> round_callbacks;
+  for (const IterationCallback& callback : callbacks)
+    round_callbacks.push_back(shifted(callback, &iterations, &seconds));
+  OptimizerResult all;
+  ParamRun run;
+  // Each round may take max_iterations; the time limit is for all of them.
+  auto optimize = [&](ParamConfig round) {
+    round.optimizer.time_limit = std::max(config.optimizer.time_limit - seconds, 1e-9);
+    run = optimize_from_start(*setup, round, round_callbacks);
+    for (const IterationSummary& row : run.result.trace) {
+      if (iterations > 0 && row.iteration == 0) continue;
+      IterationSummary moved = row;
+      moved.iteration += iterations;
+      moved.seconds += seconds;
+      all.trace.push_back(moved);
+    }
+    iterations = all.trace.back().iteration;
+    seconds = all.trace.back().seconds;
+    all.x = run.result.x;
+    all.status = run.result.status;
+    all.message = run.result.message;
+  };
+  SeamReport report;
+  // Seams until the bound holds, optimizing after each: flip-free only, or
+  // globally injective with the new seam's sides parted first.
+  auto add_seams = [&](const ParamConfig& round) {
+    double best = std::numeric_limits<double>::infinity();
+    int since_best = 0;
+    for (;;) {
+      if (!is_normal_termination(all.status) || all.status == TerminationStatus::kUserStopped) return;
+      const Eigen::VectorXd energy = face_energy(*setup, all.x);
+      report.chart_distortion = chart_energy(*setup, energy);
+      const auto worst = std::max_element(report.chart_distortion.begin(), report.chart_distortion.end());
+      report.bound_met = *worst <= config.max_distortion;
+      if (report.bound_met) return;
+      if (*worst < best) {
+        best = *worst;
+        since_best = 0;
+      } else if (++since_best == kFutileSeams) {
+        report.stop_reason = std::to_string(kFutileSeams) + " seams in a row did not lower the largest energy";
+        return;
+      }
+      const std::vector<std::vector<int>> paths =
+          seam_paths(setup->disk.mesh, seam_starts(*setup, energy, report.chart_distortion, config.max_distortion));
+      if (paths.empty()) {
+        report.stop_reason = "no interior vertex is left to cut from";
+        return;
+      }
+      report.seams += static_cast<int>(paths.size());
+      const std::vector<int> source = open_seams(&setup->disk, paths);
+      Eigen::VectorXd x(2 * source.size());
+      for (std::size_t v = 0; v < source.size(); ++v) x.segment<2>(2 * v) = all.x.segment<2>(2 * source[v]);
+      rebuild_problem(round, setup.get());
+      if (round.global_injectivity) part_seam_sides(setup->disk.mesh, source, 0.1, &x);
+      setup->x0 = x;
+      optimize(round);
+    }
+  };
+  // The rounds that place the seams stop at a looser gradient: they only
+  // need to show where the distortion peaks.
+  ParamConfig round = config;
+  round.seams = false;
+  round.global_injectivity = false;
+  ParamConfig rough = round;
+  rough.optimizer.gradient_tolerance = std::max(config.optimizer.gradient_tolerance, kRoundGradientTolerance);
+  optimize(rough);
+  add_seams(rough);
+  if (is_normal_termination(all.status) && all.status != TerminationStatus::kUserStopped) {
+    // A flip-free map whose boundary does not cross itself is injective
+    // (boundary_contact.h); one that crosses starts again, globally
+    // injective, from the Tutte map of the opened charts.
+    round.global_injectivity = config.global_injectivity && setup->boundary_contact->count_crossings(all.x) > 0;
+    rebuild_problem(round, setup.get(), round.global_injectivity);
+    if (!round.global_injectivity) setup->x0 = all.x;
+    optimize(round);
+    add_seams(round);
+  }
+  report.seam_length = setup->disk.cut_length * setup->normalization.scale;
+  run.result = all;
+  run.seams = report;
+  measure_final_map(*setup, &run);
+  run.seamed = setup;
+  return run;
+}
+
+std::string seam_description(const SeamReport& report, double max_distortion) {
+  const double largest = report.chart_distortion.empty()
+                             ? 0
+                             : *std::max_element(report.chart_distortion.begin(), report.chart_distortion.end());
+  const bool one = report.chart_distortion.size() == 1;
+  char text[200];
+  std::snprintf(
+      text, sizeof text, "%d %s added, %.3g sqrt(area) of seams in all; symmetric Dirichlet %s %.7g %s (%.4g)",
+      report.seams, report.seams == 1 ? "seam" : "seams", report.seam_length, report.bound_met ? "at most" : "above",
+      max_distortion,
+      report.bound_met ? (one ? "in the chart" : "in every chart, largest") : (one ? "in the chart" : "in a chart"),
+      largest);
+  return text + (report.stop_reason.empty() ? std::string() : ": " + report.stop_reason);
+}
+
+}  // namespace akvf

@@ -1,0 +1,137 @@
+// --cut seams: paths from the peaks of the distortion to the boundary, the
+// charts opened along them (still disks), and the distortion bound.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "akvf/parameterize.h"
+#include "framework/mesh/initialization.h"
+#include "framework/mesh/mesh_topology.h"
+#include "framework/mesh/mesh_validation.h"
+#include "framework/mesh/seam_opening.h"
+#include "framework/mesh/uv_overlap.h"
+#include "tests/cli_support.h"
+#include "tests/test_support.h"
+
+using akvf::TriMesh;
+
+namespace {
+
+// The grid's vertex at column i, row j (grid_disk numbers rows of nx).
+int grid_vertex(int nx, int i, int j) { return j * nx + i; }
+
+int euler_characteristic(const TriMesh& mesh) {
+  return mesh.num_vertices() - akvf::edge_topology(mesh.F).num_edges + mesh.num_faces();
+}
+
+}  // namespace
+
+TEST_CASE("a seam runs from an interior vertex to the boundary and opens the disk into a disk") {
+  const int n = 9;
+  akvf::DiskMesh disk = akvf::prepare_disk_mesh(akvf::test::grid_disk(n, n), "grid", true);
+  const TriMesh before = disk.mesh;
+  const int center = grid_vertex(n, 4, 4);
+  const auto paths = akvf::seam_paths(disk.mesh, {center});
+  REQUIRE(paths.size() == 1);
+  const std::vector<int>& path = paths[0];
+  CHECK(path.front() == center);
+  CHECK(path.size() == 5);  // four edges to the nearest side
+  double length = 0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    length += (before.V.row(path[i]) - before.V.row(path[i + 1])).norm();
+
+  const std::vector<int> source = akvf::open_seams(&disk, paths);
+  // Every path vertex but the tip is split in two.
+  CHECK(disk.mesh.num_vertices() == before.num_vertices() + 4);
+  CHECK(static_cast<int>(source.size()) == disk.mesh.num_vertices());
+  CHECK(euler_characteristic(disk.mesh) == 1);
+  REQUIRE(disk.boundary_loops.size() == 1);
+  CHECK(disk.boundary_loops[0].size() == 4 * (n - 1) + 8);  // the old loop and both sides of the seam
+  CHECK(disk.cut_edges == 4);
+  CHECK(disk.cut_length == doctest::Approx(length));
+  for (int f = 0; f < before.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      CHECK(source[disk.mesh.F(f, k)] == before.F(f, k));
+      CHECK(disk.input_vertex[disk.mesh.F(f, k)] == before.F(f, k));
+    }
+}
+
+TEST_CASE("a later seam ends where it meets an earlier one, so the seams form trees") {
+  const int n = 9;
+  akvf::DiskMesh disk = akvf::prepare_disk_mesh(akvf::test::grid_disk(n, n), "grid", true);
+  const auto first = akvf::seam_paths(disk.mesh, {grid_vertex(n, 4, 4)});
+  REQUIRE(first.size() == 1);
+  // A vertex beside the first path's second vertex, farther from every side.
+  const int beside =
+      grid_vertex(n, first[0][1] % n == 4 ? 5 : first[0][1] % n, first[0][1] / n == 4 ? 5 : first[0][1] / n);
+  const auto paths = akvf::seam_paths(disk.mesh, {grid_vertex(n, 4, 4), beside, grid_vertex(n, 4, 4)});
+  REQUIRE(paths.size() == 2);  // the repeated start lies on a path already
+  const std::vector<int>& second = paths[1];
+  CHECK(std::find(paths[0].begin(), paths[0].end(), second.back()) != paths[0].end());
+  akvf::open_seams(&disk, paths);
+  CHECK(euler_characteristic(disk.mesh) == 1);
+  CHECK(disk.boundary_loops.size() == 1);
+}
+
+TEST_CASE("--cut seams bounds every chart's symmetric Dirichlet energy, flip-free and without overlap") {
+  struct Case {
+    const char* name;
+    TriMesh mesh;
+  };
+  using namespace akvf::test;
+  for (const Case& c : {Case{"sphere", sphere(3)}, Case{"torus", torus(12)},
+                        Case{"annulus and sphere", side_by_side(annulus(), sphere(2), 6)}}) {
+    CAPTURE(c.name);
+    akvf::ParameterizeOptions options;
+    options.cut = akvf::Cut::kAuto;
+    const double cut_only = akvf::parameterize(c.mesh.V, c.mesh.F, options).distortion_energy;
+    options.cut = akvf::Cut::kSeams;
+    const akvf::ParameterizeResult r = akvf::parameterize(c.mesh.V, c.mesh.F, options);
+    CHECK(akvf::is_normal_termination(r.status));
+    CHECK(r.distortion_bounded);
+    CHECK(r.seam_stop_reason.empty());
+    REQUIRE_FALSE(r.chart_distortion.empty());
+    for (double e : r.chart_distortion) CHECK(e <= options.max_distortion);
+    for (const auto& row : r.trace) CHECK(row.flips == 0);
+    REQUIRE(r.uv_faces.rows() == c.mesh.num_faces());
+    CHECK(r.uv_faces.maxCoeff() < r.uv.rows());
+    CHECK(akvf::count_inverted_triangles(r.uv_faces, r.uv) == 0);
+    CHECK(akvf::measure_uv_overlap(r.uv, r.uv_faces, std::vector<int>(r.uv_faces.rows(), 0)).overlapped_samples == 0);
+    CHECK(r.seam_length > 0);
+    if (cut_only > options.max_distortion) CHECK(r.seams_added > 0);
+  }
+}
+
+TEST_CASE("a bound no seam can reach stops with the reason, the map still flip-free") {
+  const TriMesh sphere = akvf::test::sphere(2);
+  akvf::ParameterizeOptions options;
+  options.cut = akvf::Cut::kSeams;
+  options.max_distortion = 4 + 1e-12;
+  const akvf::ParameterizeResult r = akvf::parameterize(sphere.V, sphere.F, options);
+  CHECK(akvf::is_normal_termination(r.status));
+  CHECK_FALSE(r.distortion_bounded);
+  CHECK_FALSE(r.seam_stop_reason.empty());
+  CHECK(akvf::count_inverted_triangles(r.uv_faces, r.uv) == 0);
+}
+
+TEST_CASE("param --cut seams reports the seams on stdout and in the summary") {
+  namespace fs = std::filesystem;
+  const fs::path dir = akvf::test::scratch_dir("cut_seams");
+  akvf::test::write_obj(dir / "sphere.obj", akvf::test::sphere(3));
+  const auto r = akvf::test::run_cli({"param", (dir / "sphere.obj").string(), "--cut", "seams", "--summary",
+                                      (dir / "run.json").string(), "--out", (dir / "uv.obj").string(), "--quiet"});
+  CHECK(r.code == 0);
+  CHECK(r.out.find("sqrt(area) of seams in all; symmetric Dirichlet at most 4.2") != std::string::npos);
+  std::ifstream in(dir / "run.json");
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  CHECK(summary["seams"]["bound_met"] == true);
+  CHECK(summary["seams"]["max_distortion"] == 4.2);
+  CHECK(summary["settings"]["cut"] == "seams");
+
+  const auto bad = akvf::test::run_cli(
+      {"param", (dir / "sphere.obj").string(), "--cut", "seams", "--max-distortion", "3.5", "--quiet"});
+  CHECK(bad.code != 0);
+  CHECK(bad.err.find("--max-distortion") != std::string::npos);
+}
