@@ -225,12 +225,14 @@ std::string seam_description(const SeamReport& report, double max_distortion) {
                              : *std::max_element(report.chart_distortion.begin(), report.chart_distortion.end());
   const bool one = report.chart_distortion.size() == 1;
   char text[200];
-  std::snprintf(
-      text, sizeof text, "%d %s added, %.3g sqrt(area) of seams in all; symmetric Dirichlet %s %.7g %s (%.4g)",
-      report.seams, report.seams == 1 ? "seam" : "seams", report.seam_length, report.bound_met ? "at most" : "above",
-      max_distortion,
-      report.bound_met ? (one ? "in the chart" : "in every chart, largest") : (one ? "in the chart" : "in a chart"),
-      largest);
+  std::snprintf(text, sizeof text,
+                "%d %s added, %.3g sqrt(area) of seams in all; symmetric Dirichlet %s %.7g %s (%s%.4g)", report.seams,
+                report.seams == 1 ? "seam" : "seams", report.seam_length, report.bound_met ? "at most" : "above",
+                max_distortion,
+                one                ? "in the chart"
+                : report.bound_met ? "in every chart"
+                                   : "in a chart",
+                one ? "" : "largest ", largest);
   return text + (report.stop_reason.empty() ? std::string() : ": " + report.stop_reason);
 }
 
