@@ -7,10 +7,7 @@
 # Usage: bash scripts/injectivity.sh   (after scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-AKVF=./build/akvf
-DATA=${AKVF_DATA_DIR:-../shared/meshes}
-[ -x "$AKVF" ] || { echo "build first: bash scripts/build.sh" >&2; exit 1; }
-[ -d "$DATA/tri" ] || { echo "meshes not found in $DATA (set AKVF_DATA_DIR)" >&2; exit 1; }
+source scripts/shared_meshes.sh
 summary=$(mktemp --suffix=.json)
 trap 'rm -f "$summary"' EXIT
 

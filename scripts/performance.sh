@@ -6,11 +6,8 @@
 # Takes about five minutes on the 2-core development machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-AKVF=./build/akvf
-DATA=${AKVF_DATA_DIR:-../shared/meshes}
+source scripts/shared_meshes.sh
 REPEAT=${REPEAT:-3}
-[ -x "$AKVF" ] || { echo "build first: bash scripts/build.sh" >&2; exit 1; }
-[ -d "$DATA/tri" ] || { echo "meshes not found in $DATA (set AKVF_DATA_DIR)" >&2; exit 1; }
 
 # One run of the paper's AKVF (these tables study its settings; a later
 # --precond overrides): prints "status iterations seconds energy grad_norm inverted".
