@@ -16,8 +16,13 @@ namespace {
 constexpr const char* kBoundedEnergy = "symmetric-dirichlet";
 // Seams stop when this many in a row did not lower the largest chart
 // energy: more would lengthen the seams without bounding the distortion.
-constexpr int kFutileSeams = 10;
+constexpr int kFutileRounds = 10;
+// The rounds that place seams only need to show where the distortion
+// peaks, not the converged map.
 constexpr double kRoundGradientTolerance = 1e-2;
+// A peak with less than this share of the largest peak's excess over 4 is
+// left to a later round: it may be the shoulder of the larger one, which
+// that one's seam relieves.
 constexpr double kPeakShare = 0.5;
 
 // The symmetric Dirichlet energy of each face at x.
@@ -44,9 +49,9 @@ std::vector<double> chart_energy(const ParamSetup& setup, const Eigen::VectorXd&
 
 // Where the round's seams start: the interior vertices of the charts above
 // the bound whose energy (the area-weighted mean of their faces') is above
-// it too and at least their neighbours' (the peaks of the distortion), most
-// distorted first; if there is none, the most distorted interior vertex of
-// the worst chart.
+// it too, at least their interior neighbours' (the peaks of the distortion)
+// and at least kPeakShare of the largest peak's excess, most distorted
+// first; if there is none, the most distorted interior vertex.
 std::vector<int> seam_starts(const ParamSetup& setup, const Eigen::VectorXd& energy,
                              const std::vector<double>& chart_energy, double bound) {
   const TriMesh& mesh = setup.disk.mesh;
@@ -85,18 +90,16 @@ std::vector<int> seam_starts(const ParamSetup& setup, const Eigen::VectorXd& ene
   return starts;
 }
 
-// Each copy of a vertex the seam split (source[v] repeated) moved into its
-// own triangles, away from its twin, so that the seam's two sides no longer
-// touch (the boundary barrier of global injectivity is infinite where they
-// do): by `fraction` of the smallest height of its triangles, along the
-// mean direction to their centroids, which flips none of them (a vertex
-// moved by less than a triangle's height keeps to its side of the opposite
-// edge).
-void part_seam_sides(const TriMesh& mesh, const std::vector<int>& source, double fraction, Eigen::VectorXd* x) {
-  const int nv = static_cast<int>(source.size());
-  std::vector<char> split(nv, 0);
-  for (int v = 1; v < nv; ++v)
-    if (source[v] == source[v - 1]) split[v] = split[v - 1] = 1;
+// Each copy of an input vertex that lies within `fraction` of its smallest
+// triangle height of another copy (the two sides of a seam that has not
+// opened, or barely) moved into its own
+// triangles, so that the seam's sides no longer touch (the boundary barrier
+// of global injectivity is infinite where they do): by `fraction` of the
+// smallest height of its triangles, along the mean direction to their
+// centroids, which flips none of them (a vertex moved by less than a
+// triangle's height keeps to its side of the opposite edge).
+void part_seam_sides(const TriMesh& mesh, const std::vector<int>& input_vertex, double fraction, Eigen::VectorXd* x) {
+  const int nv = static_cast<int>(input_vertex.size());
   std::vector<Eigen::Vector2d> direction(nv, Eigen::Vector2d::Zero());
   std::vector<double> height(nv, std::numeric_limits<double>::infinity());
   for (int f = 0; f < mesh.num_faces(); ++f) {
@@ -106,13 +109,26 @@ void part_seam_sides(const TriMesh& mesh, const std::vector<int>& source, double
     const Eigen::Vector2d centroid = (p[0] + p[1] + p[2]) / 3;
     for (int k = 0; k < 3; ++k) {
       const int v = mesh.F(f, k);
-      if (!split[v]) continue;
       direction[v] += centroid - p[k];
       height[v] = std::min(height[v], twice_area / (p[(k + 1) % 3] - p[(k + 2) % 3]).norm());
     }
   }
-  for (int v = 0; v < nv; ++v)
-    if (split[v] && direction[v].norm() > 0) x->segment<2>(2 * v) += fraction * height[v] * direction[v].normalized();
+  // The copies of one input vertex, consecutive in `order`.
+  std::vector<int> order(nv);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return input_vertex[a] < input_vertex[b]; });
+  std::vector<Eigen::Vector2d> move(nv, Eigen::Vector2d::Zero());
+  for (int i = 0, j = 0; i < nv; i = j) {
+    for (j = i + 1; j < nv && input_vertex[order[j]] == input_vertex[order[i]];) ++j;
+    for (int a = i; a < j; ++a)
+      for (int b = i; b < j; ++b) {
+        const int v = order[a], w = order[b];
+        const double step = fraction * height[v];
+        if (v != w && (x->segment<2>(2 * v) - x->segment<2>(2 * w)).norm() < step && direction[v].norm() > 0)
+          move[v] = step * direction[v].normalized();
+      }
+  }
+  for (int v = 0; v < nv; ++v) x->segment<2>(2 * v) += move[v];
 }
 
 // Rows of later rounds continue the numbering and the clock of the earlier
@@ -172,8 +188,9 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
       if (*worst < best) {
         best = *worst;
         since_best = 0;
-      } else if (++since_best == kFutileSeams) {
-        report.stop_reason = std::to_string(kFutileSeams) + " seams in a row did not lower the largest energy";
+      } else if (++since_best == kFutileRounds) {
+        report.stop_reason =
+            std::to_string(kFutileRounds) + " rounds of seams in a row did not lower the largest chart energy";
         return;
       }
       const std::vector<std::vector<int>> paths =
@@ -187,29 +204,34 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
       Eigen::VectorXd x(2 * source.size());
       for (std::size_t v = 0; v < source.size(); ++v) x.segment<2>(2 * v) = all.x.segment<2>(2 * source[v]);
       rebuild_problem(round, setup.get());
-      if (round.global_injectivity) part_seam_sides(setup->disk.mesh, source, 0.1, &x);
+      if (round.global_injectivity) part_seam_sides(setup->disk.mesh, setup->disk.input_vertex, 0.1, &x);
       setup->x0 = x;
       optimize(round);
     }
   };
-  // The rounds that place the seams stop at a looser gradient: they only
-  // need to show where the distortion peaks.
-  ParamConfig round = config;
-  round.seams = false;
-  round.global_injectivity = false;
-  ParamConfig rough = round;
+  ParamConfig rough = config;
+  rough.seams = false;
+  rough.global_injectivity = false;
   rough.optimizer.gradient_tolerance = std::max(config.optimizer.gradient_tolerance, kRoundGradientTolerance);
   optimize(rough);
+  setup->warm_start = {};  // its rows open the trace once
   add_seams(rough);
   if (is_normal_termination(all.status) && all.status != TerminationStatus::kUserStopped) {
-    // A flip-free map whose boundary does not cross itself is injective
-    // (boundary_contact.h); one that crosses starts again, globally
-    // injective, from the Tutte map of the opened charts.
-    round.global_injectivity = config.global_injectivity && setup->boundary_contact->count_crossings(all.x) > 0;
-    rebuild_problem(round, setup.get(), round.global_injectivity);
-    if (!round.global_injectivity) setup->x0 = all.x;
-    optimize(round);
-    add_seams(round);
+    // To the requested gradient, as injective as asked. A flip-free map
+    // whose boundary does not cross itself is injective (boundary_contact.h)
+    // and the run goes on from it; one that crosses starts again from the
+    // Tutte map of the opened charts.
+    ParamConfig last = config;
+    last.seams = false;
+    Eigen::VectorXd x0 = all.x;
+    if (last.global_injectivity) part_seam_sides(setup->disk.mesh, setup->disk.input_vertex, 0.1, &x0);
+    if (last.global_injectivity && setup->boundary_contact->count_crossings(x0) > 0) {
+      rebuild_problem(last, setup.get(), true);
+    } else {
+      setup->x0 = x0;
+    }
+    optimize(last);
+    add_seams(last);
   }
   report.seam_length = setup->disk.cut_length * setup->normalization.scale;
   run.result = all;

@@ -83,12 +83,14 @@ TEST_CASE("--cut seams bounds every chart's symmetric Dirichlet energy, flip-fre
   using namespace akvf::test;
   for (const Case& c : {Case{"sphere", sphere(3)}, Case{"torus", torus(12)},
                         Case{"annulus and sphere", side_by_side(annulus(), sphere(2), 6)}}) {
-    CAPTURE(c.name);
+    const std::string name = c.name;
+    CAPTURE(name);
     akvf::ParameterizeOptions options;
     options.cut = akvf::Cut::kAuto;
     const double cut_only = akvf::parameterize(c.mesh.V, c.mesh.F, options).distortion_energy;
     options.cut = akvf::Cut::kSeams;
     const akvf::ParameterizeResult r = akvf::parameterize(c.mesh.V, c.mesh.F, options);
+    CAPTURE(r.message);
     CHECK(akvf::is_normal_termination(r.status));
     CHECK(r.distortion_bounded);
     CHECK(r.seam_stop_reason.empty());
