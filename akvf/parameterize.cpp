@@ -124,7 +124,14 @@ const ParameterizeOptions& Parameterizer::options() const { return state_->optio
 
 Eigen::MatrixXd Parameterizer::initial_uv() const { return output_uv(state_->setup, state_->setup.x0); }
 
-Eigen::MatrixXd Parameterizer::uv_of(const Eigen::VectorXd& x) const { return output_uv(state_->setup, x); }
+Eigen::MatrixXd Parameterizer::uv_of(const Eigen::VectorXd& x) const {
+  const Eigen::Index expected = 2 * static_cast<Eigen::Index>(state_->setup.disk.mesh.num_vertices());
+  if (x.size() != expected)
+    throw OptionsError("Parameterizer::uv_of: x has " + std::to_string(x.size()) + " values, this mesh's maps " +
+                       std::to_string(expected) +
+                       " (with cut seams, a later round's x is of the mesh its seams opened)");
+  return output_uv(state_->setup, x);
+}
 
 ParameterizeResult parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                                 const ParameterizeOptions& options) {

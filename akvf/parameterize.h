@@ -150,7 +150,8 @@ class Parameterizer {
   const ParameterizeOptions& options() const;
 
   // The initial map (#V by 2, at the input's scale) and a callback's x as
-  // #V by 2 at the input's scale.
+  // #V by 2 at the input's scale (OptionsError for an x of another size: with
+  // cut kSeams, the rounds after the first).
   Eigen::MatrixXd initial_uv() const;
   Eigen::MatrixXd uv_of(const Eigen::VectorXd& x) const;
 

@@ -88,7 +88,7 @@ py::dict row_dict(const akvf::IterationSummary& row) {
 // the callback stops it too and is raised when the run has ended.
 class PythonCallback {
  public:
-  PythonCallback(py::object callback, std::function<Eigen::MatrixXd(const Eigen::VectorXd&)> to_map)
+  PythonCallback(py::object callback, std::function<py::object(const Eigen::VectorXd&)> to_map)
       : callback_(std::move(callback)), to_map_(std::move(to_map)) {}
 
   std::vector<akvf::IterationCallback> callbacks() {
@@ -116,7 +116,7 @@ class PythonCallback {
 
  private:
   py::object callback_;
-  std::function<Eigen::MatrixXd(const Eigen::VectorXd&)> to_map_;
+  std::function<py::object(const Eigen::VectorXd&)> to_map_;
   std::optional<py::error_already_set> error_;
 };
 
@@ -171,7 +171,14 @@ py::dict result_dict(const Result& r) {
 py::dict solve(akvf::Parameterizer& solver, const py::object& uv0, const py::object& callback) {
   std::optional<Eigen::MatrixXd> start;
   if (!uv0.is_none()) start = akvf::python::float_matrix(uv0, "uv0", 2);
-  PythonCallback hooks(callback, [&solver](const Eigen::VectorXd& x) { return solver.uv_of(x); });
+  // With cut "seams", a later round's x is of the mesh its seams opened: None.
+  PythonCallback hooks(callback, [&solver](const Eigen::VectorXd& x) -> py::object {
+    try {
+      return py::cast(solver.uv_of(x));
+    } catch (const akvf::OptionsError&) {
+      return py::none();
+    }
+  });
   akvf::ParameterizeResult result;
   const InterruptScope interrupts;
   {
@@ -238,9 +245,9 @@ py::dict solve_deformation(const akvf::Deformer& solver, const py::handle& indic
     throw akvf::InputError("constraints: " + std::to_string(constrained.size()) + " vertex indices but " +
                            std::to_string(constraints.targets.rows()) + " targets");
   akvf::DeformOptions options = akvf::python::options_from_keywords(keywords, akvf::deform_option_fields(), caller);
-  PythonCallback hooks(callback, [](const Eigen::VectorXd& x) {
-    return Eigen::MatrixXd(
-        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(x.data(), x.size() / 3, 3));
+  PythonCallback hooks(callback, [](const Eigen::VectorXd& x) -> py::object {
+    return py::cast(Eigen::MatrixXd(
+        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(x.data(), x.size() / 3, 3)));
   });
   options.callbacks = hooks.callbacks();
   const InterruptScope interrupts;

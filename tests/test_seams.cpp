@@ -137,3 +137,12 @@ TEST_CASE("param --cut seams reports the seams on stdout and in the summary") {
   CHECK(bad.code != 0);
   CHECK(bad.err.find("--max-distortion") != std::string::npos);
 }
+
+TEST_CASE("uv_of refuses an x of another mesh's size, as a later round's of --cut seams") {
+  const TriMesh sphere = akvf::test::sphere(2);
+  akvf::ParameterizeOptions options;
+  options.cut = akvf::Cut::kSeams;
+  const akvf::Parameterizer solver(sphere.V, sphere.F, options);
+  const std::string message = akvf::test::error_message([&] { solver.uv_of(Eigen::VectorXd::Zero(3)); });
+  CHECK(message.find("Parameterizer::uv_of: x has 3 values") == 0);
+}
