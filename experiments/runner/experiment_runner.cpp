@@ -67,33 +67,38 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
   // SVG layouts hold about 60 bytes per triangle: above kSvgFaceLimit they
   // pass 6 MB and browsers crawl, so the layouts are PNG images instead.
   const bool png = setup.disk.mesh.num_faces() > kSvgFaceLimit;
-  const auto snapshot = [&](const std::string& name, const Eigen::VectorXd& x, const std::string& title) {
+  const auto snapshot = [&](const std::string& name, const ParamSetup& of, const Eigen::VectorXd& x,
+                            const std::string& title) {
     if (png)
-      write_layout_png(join_path(case_dir, name + ".png"), setup, x, 2048);
+      write_layout_png(join_path(case_dir, name + ".png"), of, x, 2048);
     else
-      write_layout_svg(join_path(case_dir, name + ".svg"), setup, x, title);
+      write_layout_svg(join_path(case_dir, name + ".svg"), of, x, title);
   };
   std::vector<IterationCallback> callbacks = {progress};
+  // With cut seams, the rounds after the first are maps of the mesh their
+  // seams opened: no snapshot of them but the final one.
+  const Eigen::Index first_mesh_size = 2 * static_cast<Eigen::Index>(setup.disk.mesh.num_vertices());
   callbacks.push_back([&](const IterationSummary& row, const Eigen::VectorXd& x) {
     for (int k : s.snapshots)
-      if (row.iteration == k)
-        snapshot("iter-" + std::to_string(k), x,
+      if (row.iteration == k && x.size() == first_mesh_size)
+        snapshot("iter-" + std::to_string(k), setup, x,
                  c.mesh_label + " - " + c.method_label + ", iteration " + std::to_string(k));
     return CallbackAction::kContinue;
   });
   CaseResult out;
   ParamRun run = run_parameterization(setup, config, callbacks);
+  const ParamSetup& final = final_setup(setup, run);
   out.result = std::move(run.result);
   out.linear_algebra = linear_algebra_record(run.preconditioner_statistics, run.preconditioner_report);
   if (!s.snapshots.empty())  // also the layout where the run stopped (it may stop before a snapshot)
-    snapshot("final", out.result.x,
+    snapshot("final", final, out.result.x,
              c.mesh_label + " - " + c.method_label + ", final (iteration " +
                  std::to_string(out.result.trace.back().iteration) + ")");
-  out.lower_bound = setup.objective->lower_bound();
-  out.vertices = setup.disk.mesh.num_vertices();
-  out.elements = setup.disk.mesh.num_faces();
-  if (setup.disk.cut) out.cut = cut_record(setup.disk);
-  if (views) out.view = view_of(setup, out.result.x, c.mesh_label + " - " + c.method_label);
+  out.lower_bound = final.objective->lower_bound();
+  out.vertices = final.disk.mesh.num_vertices();
+  out.elements = final.disk.mesh.num_faces();
+  if (final.disk.cut) out.cut = cut_record(final.disk);
+  if (views) out.view = view_of(final, out.result.x, c.mesh_label + " - " + c.method_label);
   return out;
 }
 
