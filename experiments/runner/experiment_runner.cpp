@@ -54,7 +54,8 @@ struct CaseResult {
   double lower_bound = 0;
   int vertices = 0, elements = 0;
   std::optional<ViewContent> view;  // the final map, when views are asked for
-  Json cut;                         // cut_record after --cut auto, else null
+  Json cut;                         // cut_record after --cut auto or seams, else null
+  Json seams;                       // seam_record after --cut seams, else null
   Json linear_algebra;              // linear_algebra_record
 };
 
@@ -98,6 +99,7 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
   out.vertices = final.disk.mesh.num_vertices();
   out.elements = final.disk.mesh.num_faces();
   if (final.disk.cut) out.cut = cut_record(final.disk);
+  if (config.seams) out.seams = seam_record(run.seams, config.max_distortion);
   if (views) out.view = view_of(final, out.result.x, c.mesh_label + " - " + c.method_label);
   return out;
 }
@@ -164,6 +166,7 @@ Json run_case(const Manifest& manifest, const ExperimentCase& c, const RunnerOpt
     summary.update(run_record(r.result, r.lower_bound, r.vertices, r.elements));
     summary["linear_algebra"] = r.linear_algebra;
     if (!r.cut.is_null()) summary["cut"] = r.cut;
+    if (!r.seams.is_null()) summary["seams"] = r.seams;
     if (r.view) {
       r.view->summary = summary;
       write_html_view(join_path(case_dir, "view.html"), *r.view);
