@@ -198,7 +198,7 @@ void measure_final_map(const ParamSetup& setup, ParamRun* run) {
 
 void rebuild_problem(const ParamConfig& config, ParamSetup* setup, bool tutte_start) {
   TriMesh normalized = setup->disk.mesh;
-  normalized.V = (normalized.V.rowwise() - setup->normalization.center) * setup->normalization.scale;
+  apply_normalization(setup->normalization, &normalized);
   const Eigen::MatrixXi& F = normalized.F;
   auto objective = std::make_shared<DistortionObjective2D>(F, setup->objective->rest(),
                                                            energies_2d().create(config.energy, config.energy_settings),

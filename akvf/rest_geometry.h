@@ -48,6 +48,9 @@ struct Normalization {
 };
 
 Normalization normalize_to_unit_area(TriMesh* mesh);
+// The same normalization applied to another mesh of those vertices (a copy
+// with some vertices repeated, say).
+void apply_normalization(const Normalization& normalization, TriMesh* mesh);
 
 // The power of two 2^k that brings the largest extent of the bounding box of
 // V (#V by 3) into [0.5, 1). Multiplying by it is exact, so a mesh scaled by

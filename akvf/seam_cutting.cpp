@@ -131,15 +131,21 @@ void part_seam_sides(const TriMesh& mesh, const std::vector<int>& input_vertex, 
   for (int v = 0; v < nv; ++v) x->segment<2>(2 * v) += move[v];
 }
 
-// Rows of later rounds continue the numbering and the clock of the earlier
-// ones.
+// A round's row as the whole run's: later rounds continue the numbering and
+// the clock of the earlier ones (`iterations`, `seconds` so far), and their
+// row 0, the previous round's end, is left out (false).
+bool shift_row(const IterationSummary& row, int iterations, double seconds, IterationSummary* moved) {
+  if (iterations > 0 && row.iteration == 0) return false;
+  *moved = row;
+  moved->iteration += iterations;
+  moved->seconds += seconds;
+  return true;
+}
+
 IterationCallback shifted(const IterationCallback& callback, const int* iterations, const double* seconds) {
   return [=](const IterationSummary& row, const Eigen::VectorXd& x) {
-    IterationSummary moved = row;
-    moved.iteration += *iterations;
-    moved.seconds += *seconds;
-    if (*iterations > 0 && row.iteration == 0) return CallbackAction::kContinue;  // the previous round's end
-    return callback(moved, x);
+    IterationSummary moved;
+    return shift_row(row, *iterations, *seconds, &moved) ? callback(moved, x) : CallbackAction::kContinue;
   };
 }
 
@@ -160,11 +166,8 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
     round.optimizer.time_limit = std::max(config.optimizer.time_limit - seconds, 1e-9);
     run = optimize_from_start(*setup, round, round_callbacks);
     for (const IterationSummary& row : run.result.trace) {
-      if (iterations > 0 && row.iteration == 0) continue;
-      IterationSummary moved = row;
-      moved.iteration += iterations;
-      moved.seconds += seconds;
-      all.trace.push_back(moved);
+      IterationSummary moved;
+      if (shift_row(row, iterations, seconds, &moved)) all.trace.push_back(moved);
     }
     iterations = all.trace.back().iteration;
     seconds = all.trace.back().seconds;

@@ -51,8 +51,12 @@ Normalization normalize_to_unit_area(TriMesh* mesh) {
   n.input_area = surface_area(*mesh);
   n.scale = 1.0 / std::sqrt(n.input_area);
   n.center = mesh->V.colwise().mean();
-  mesh->V = (mesh->V.rowwise() - n.center) * n.scale;
+  apply_normalization(n, mesh);
   return n;
+}
+
+void apply_normalization(const Normalization& normalization, TriMesh* mesh) {
+  mesh->V = (mesh->V.rowwise() - normalization.center) * normalization.scale;
 }
 
 double power_of_two_unit_scale(const Eigen::MatrixXd& V, const std::string& name) {
