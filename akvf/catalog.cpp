@@ -95,7 +95,8 @@ DensityRegistry2D& mutable_energies_2d() {
     DensityRegistry2D r("energy");
     r.add("symmetric-dirichlet", "|J|^2 + |J^-1|^2, Eq. (2); lower bound 4",
           [](const EnergySettings&) { return std::make_unique<SymmetricDirichlet2D>(); });
-    r.add("arap", "|J - R(J)|^2, R the closest rotation, with a collapse barrier below 1e-3 of the rest area; lower bound 0",
+    r.add("arap",
+          "|J - R(J)|^2, R the closest rotation, with a collapse barrier below 1e-3 of the rest area; lower bound 0",
           [](const EnergySettings&) { return std::make_unique<Arap2D>(); });
     r.add("mips", "conformal |J|^2 / det J; lower bound 2",
           [](const EnergySettings&) { return std::make_unique<Mips2D>(); });
@@ -173,12 +174,14 @@ PreconditionerRegistry2D& mutable_preconditioners_2d() {
     r.add("akvf", "Killing operator K(x) of Eq. (5), area-scaled, CHOLMOD (the paper's method)",
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return std::make_unique<AkvfPreconditioner2D>(objective, settings.akvf);
-          });
+          },
+          {kTakesContactCurvature});
     r.add("newton", "projected Newton: element Hessians clamped to PSD, CHOLMOD",
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return std::make_unique<NewtonPreconditioner2D>(objective, settings.newton, default_newton_projection(2),
                                                             settings.newton_filter);
-          });
+          },
+          {kTakesContactCurvature});
     r.add("akvf-newton",
           "AKVF while the flip-free bound sets the step, then Newton (the exact Hessian while it is positive "
           "definite, else projected) once the curvature does or AKVF's bound-held steps stall, and AKVF again if "
@@ -186,17 +189,19 @@ PreconditionerRegistry2D& mutable_preconditioners_2d() {
           "collapse (preconditioners/switching_preconditioner.h)",
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return akvf_then_newton<2, AkvfPreconditioner2D>(objective, settings);
-          });
+          },
+          {kTakesContactCurvature});
     r.add("laplacian",
           "AQP proxy: cotangent Laplacian of the 3D mesh per coordinate, factored once; AQP momentum by default",
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return std::make_unique<LaplacianPreconditioner2D>(objective, settings.laplacian);
           },
-          {kMomentumByDefault});
+          {kMomentumByDefault, kTakesContactCurvature});
     r.add("slim", "SLIM: reweighted ARAP proxy whose gradient is the energy's (Rabinovich et al. 2017)",
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return std::make_unique<SlimPreconditioner2D>(objective, settings.slim);
-          });
+          },
+          {kTakesContactCurvature});
     r.add("identity", "no preconditioning: plain gradient descent",
           [](const MeshObjective2D&, const PreconditionerSettings2D&) {
             return std::make_unique<IdentityPreconditioner>();

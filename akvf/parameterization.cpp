@@ -235,9 +235,15 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
   settings.set_linear_solver(available_linear_solver(config.linear_solver));
   settings.share_vertex_ordering(setup.vertex_ordering);
   settings.akvf_newton_switch.backtracking_factor = config.line_search_settings.rho;
+  // The barrier's curvature goes into a factored P (contact_curvature.h),
+  // or, for the others, into a low-rank update of theirs.
+  const bool takes_contact = preconditioners_2d().has_tag(config.preconditioner, kTakesContactCurvature);
+  if (injective && takes_contact)
+    settings.share_contact_curvature(
+        std::make_shared<ContactCurvature>(setup.boundary_contact, setup.objective->num_vertices()));
   std::unique_ptr<Preconditioner> preconditioner =
       preconditioners_2d().create(config.preconditioner, *setup.objective, settings);
-  if (injective)
+  if (injective && !takes_contact)
     preconditioner = std::make_unique<ContactPreconditioner>(std::move(preconditioner), setup.boundary_contact);
   auto line_search = line_searches().create(config.line_search, config.line_search_settings);
   run.preconditioner_name = preconditioner->name();

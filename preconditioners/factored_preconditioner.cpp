@@ -109,6 +109,7 @@ void FactoredPreconditioner<D>::take_over_factorization(FactoredPreconditioner& 
   if (options_.linear_solver == LinearSolver::kAuto && previous.options_.linear_solver != LinearSolver::kAuto)
     options_.linear_solver = previous.options_.linear_solver;
   cholesky_.take_over(&previous.cholesky_);
+  analyzed_contact_version_ = previous.analyzed_contact_version_;
 }
 
 template <int D>
@@ -126,6 +127,10 @@ void FactoredPreconditioner<D>::choose_linear_solver() {
 
 template <int D>
 void FactoredPreconditioner<D>::update(const OptimizationState& state) {
+  if (options_.contact_curvature) {
+    contact_ = options_.contact_curvature->at(state.x);
+    system_current_ = false;
+  }
   if (options_.linear_solver == LinearSolver::kAuto) choose_linear_solver();
   if (options_.linear_solver == LinearSolver::kAmg || options_.cg_tolerance > 0)
     relative_shift_ = std::max(relative_shift_, options_.iterative_tikhonov);
@@ -138,10 +143,10 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   };
   if (options_.linear_solver == LinearSolver::kAmg) {
     // apply() builds or reuses the hierarchy (a constant P is assembled once).
-    if (!is_constant() || !multigrid_.ready()) assemble_shifted();
+    if (!fixed_system() || !multigrid_.ready()) assemble_shifted();
     return;
   }
-  if (is_constant()) {
+  if (fixed_system()) {
     if (!factored_) {
       assemble_shifted();
       factorize_current();
@@ -164,21 +169,39 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
 
 template <int D>
 void FactoredPreconditioner<D>::add_shift() {
+  system_current_ = false;
   // The Tikhonov shift: relative to mean(diag P), plus the absolute c.
   matrix_.add_to_diagonal(relative_shift_ * matrix_.mean_diagonal() + options_.absolute_shift);
   if (options_.extra_diagonal.size() != 0) matrix_.add_to_diagonal(options_.extra_diagonal);
 }
 
 template <int D>
+const Eigen::SparseMatrix<double>& FactoredPreconditioner<D>::system() {
+  if (!options_.contact_curvature) return matrix_.upper();
+  if (!system_current_) {
+    system_ = matrix_.upper() + contact_;
+    system_current_ = true;
+  }
+  return system_;
+}
+
+template <int D>
 void FactoredPreconditioner<D>::analyze() {
-  if (cholesky_.analyzed()) return;
+  // P + C's pattern grows with C's (contact_curvature.h); until C has a
+  // pair it is P's, which the cache keeps.
+  const int version = options_.contact_curvature ? options_.contact_curvature->pattern_version() : 0;
+  if (cholesky_.analyzed()) {
+    if (analyzed_contact_version_ == version) return;
+    cholesky_.clear();
+  }
+  analyzed_contact_version_ = version;
   const BlockOrdering* order = options_.vertex_ordering.get();
-  if (options_.analysis_cache) {
+  if (options_.analysis_cache && version == 0) {
     // The cache says whether it computed the analysis or copied a kept one.
     if (options_.analysis_cache->analyze(matrix_.upper(), D, &cholesky_, order)) ++statistics_.symbolic_analyses;
     return;
   }
-  cholesky_.analyze(matrix_.upper(), D, order);
+  cholesky_.analyze(system(), D, order);
   ++statistics_.symbolic_analyses;
 }
 
@@ -187,7 +210,7 @@ void FactoredPreconditioner<D>::factorize_current() {
   analyze();
   for (;;) {
     try {
-      cholesky_.factorize(matrix_.upper());
+      cholesky_.factorize(system());
       break;
     } catch (const NotPositiveDefinite& error) {
       if (reassemble_semidefinite(&matrix_)) {
@@ -200,6 +223,7 @@ void FactoredPreconditioner<D>::factorize_current() {
       // P + eps I becomes P + 100 eps I (mean(diag P) taken with the shift:
       // a relative 1e-12 of it).
       matrix_.add_to_diagonal(99 * relative_shift_ * matrix_.mean_diagonal());
+      system_current_ = false;
       relative_shift_ *= 100;
       ++shift_increases_;
     }
@@ -212,7 +236,7 @@ void FactoredPreconditioner<D>::factorize_current() {
 
 template <int D>
 void FactoredPreconditioner<D>::apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) {
-  if (options_.cg_tolerance > 0 && !is_constant()) {
+  if (options_.cg_tolerance > 0 && !fixed_system()) {
     solve_by_conjugate_gradients(gradient, result);
     return;
   }
@@ -255,17 +279,17 @@ void FactoredPreconditioner<D>::solve_by_multigrid(const Eigen::VectorXd& g, Eig
   if (multigrid_.ready()) {
     // A constant P keeps its hierarchy; otherwise the old one serves while it
     // costs less than a new setup (module comment).
-    const int budget = is_constant()
+    const int budget = fixed_system()
                            ? options_.amg_max_cg
                            : std::min(options_.amg_max_cg, fresh_multigrid_iterations_ + options_.amg_setup_cycles);
     const CgOutcome reused =
-        projected_cg(g, multigrid_null_basis_, inverse, options_.amg_tolerance, budget, is_constant() ? 0 : 2, d);
-    if (reused.converged || is_constant()) {
+        projected_cg(g, multigrid_null_basis_, inverse, options_.amg_tolerance, budget, fixed_system() ? 0 : 2, d);
+    if (reused.converged || fixed_system()) {
       ++statistics_.reused_solves;
       return;
     }
   }
-  multigrid_.setup(matrix_.upper(), D);
+  multigrid_.setup(system(), D);
   multigrid_null_basis_ = null_basis_;
   ++statistics_.multigrid_setups;
   fresh_multigrid_iterations_ =
@@ -283,7 +307,7 @@ typename FactoredPreconditioner<D>::CgOutcome FactoredPreconditioner<D>::project
   // space when it was built and P_X the orthogonal projector onto the
   // complement of X.
   const auto project = [](const ComponentMotions& motions, Eigen::VectorXd& v) { motions.project_out(&v); };
-  const auto A = matrix_.upper().template selfadjointView<Eigen::Upper>();
+  const auto A = system().template selfadjointView<Eigen::Upper>();
   const auto precondition = [&](Eigen::VectorXd r, Eigen::VectorXd* z) {
     project(null_basis_, r);
     project(built_null_basis, r);
@@ -338,7 +362,7 @@ void FactoredPreconditioner<D>::solve_by_conjugate_gradients(const Eigen::Vector
   Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Upper> cg;
   cg.setTolerance(options_.cg_tolerance);
   cg.setMaxIterations(options_.cg_max_iterations);
-  cg.compute(matrix_.upper());
+  cg.compute(system());
   Eigen::VectorXd rhs = g;
   null_basis_.project_out(&rhs);
   *d = cg.solve(rhs);

@@ -79,6 +79,7 @@
 #include "akvf/motion_bases.h"
 #include "akvf/preconditioner.h"
 #include "framework/optimization/element_matrix.h"
+#include "preconditioners/contact_curvature.h"
 #include "solvers/algebraic_multigrid.h"
 #include "solvers/sparse_cholesky.h"
 #include "solvers/symbolic_analysis_cache.h"
@@ -119,6 +120,9 @@ struct FactorOptions {
   // for the mesh's matrices, solvers/fill_reducing_ordering.h), which the
   // analyses use instead of ordering P's pattern themselves.
   std::shared_ptr<const BlockOrdering> vertex_ordering;
+  // Set (2D, global injectivity): the boundary barrier's curvature C(x),
+  // added to P (contact_curvature.h); P + C is what is factored and solved.
+  std::shared_ptr<ContactCurvature> contact_curvature;
 };
 
 // Default options with an absolute Tikhonov shift c (P + c I).
@@ -193,6 +197,11 @@ class FactoredPreconditioner : public Preconditioner {
  private:
   FactoredPreconditioner(const Eigen::MatrixXi& elements, int num_vertices, FactorOptions options, Matrix matrix);
   void analyze();
+  // The matrix solved: P with its shift, plus C(x) when the barrier's
+  // curvature is included (FactorOptions::contact_curvature).
+  const Eigen::SparseMatrix<double>& system();
+  // True if the solved matrix does not depend on x: a constant P and no C.
+  bool fixed_system() const { return is_constant() && !options_.contact_curvature; }
   // Adds the Tikhonov shift and the extra diagonal to the assembled P.
   void add_shift();
   // Factors the assembled matrix; when it is not positive definite, raises
@@ -219,6 +228,10 @@ class FactoredPreconditioner : public Preconditioner {
 
   FactorOptions options_;
   Matrix matrix_;
+  Eigen::SparseMatrix<double> contact_;  // C at the last update
+  Eigen::SparseMatrix<double> system_;   // P + C, when C is included
+  bool system_current_ = false;          // system_ holds the current P + C
+  int analyzed_contact_version_ = 0;     // C's pattern when cholesky_ was analyzed
   SparseCholesky cholesky_;
   AlgebraicMultigrid multigrid_;
   ComponentMotions multigrid_null_basis_;  // at the hierarchy's setup

@@ -9,10 +9,14 @@
 #include <random>
 
 #include "akvf/akvf.h"
+#include "akvf/internal/parameterization.h"
 #include "framework/mesh/box_pairs.h"
 #include "framework/mesh/uv_overlap.h"
 #include "framework/optimization/boundary_contact.h"
 #include "framework/optimization/distortion_objective.h"
+#include "preconditioners/contact_curvature.h"
+#include "preconditioners/contact_preconditioner.h"
+#include "preconditioners/newton_preconditioner.h"
 #include "tests/test_support.h"
 
 using namespace akvf;
@@ -198,4 +202,54 @@ TEST_CASE("a helicoid strip of 1.5 turns: flip-free alone overlaps, global injec
   const ParameterizeResult quasi_newton = parameterize(strip.V, strip.F, lbfgs);
   CHECK(quasi_newton.boundary_crossings == 0);
   CHECK(quasi_newton.overlap_fraction == 0);
+}
+
+TEST_CASE("the barrier's curvature in a factored P: the sum of its terms, a pattern that only grows, P + C solved") {
+  // The helicoid strip held off its own overlap: its final map presses the
+  // boundary on itself.
+  const ParamConfig config;
+  const ParamSetup setup = prepare_parameterization(helicoid_strip(1.5, 0.05), "strip", config);
+  const ParamRun run = run_parameterization(setup, config, {});
+  const Eigen::VectorXd& x = run.result.x;
+  const std::vector<BoundaryContact::ActiveTerm> terms = setup.boundary_contact->active_terms(x);
+  REQUIRE(!terms.empty());
+  const Eigen::Index n = x.size();
+  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(n, n);
+  for (const BoundaryContact::ActiveTerm& term : terms)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        expected.block<2, 2>(2 * term.vertex[a], 2 * term.vertex[b]) +=
+            term.curvature * term.gradient[a] * term.gradient[b].transpose();
+  const int nv = setup.objective->num_vertices();
+  ContactCurvature curvature(setup.boundary_contact, nv);
+  const Eigen::MatrixXd upper = Eigen::MatrixXd(curvature.at(x));
+  const Eigen::MatrixXd full = upper + upper.transpose() - Eigen::MatrixXd(upper.diagonal().asDiagonal());
+  CHECK((full - expected).norm() <= 1e-12 * expected.norm());
+  CHECK(curvature.pattern_version() == 1);
+  // Another map's terms add their pairs; back at x, C is the same on the
+  // larger pattern, and the pattern does not change again.
+  const Eigen::Index nonzeros = curvature.at(x).nonZeros();
+  curvature.at(setup.x0);
+  const int version = curvature.pattern_version();
+  const Eigen::SparseMatrix<double>& again = curvature.at(x);
+  CHECK(again.nonZeros() >= nonzeros);
+  CHECK(curvature.pattern_version() == version);
+  CHECK((Eigen::MatrixXd(again) - upper).norm() == 0);
+
+  // Newton with C in its factor gives the direction of Newton with C added
+  // by the Woodbury identity over every term.
+  FactorOptions with_contact;
+  with_contact.contact_curvature = std::make_shared<ContactCurvature>(setup.boundary_contact, nv);
+  NewtonPreconditioner2D factored(*setup.objective, with_contact);
+  ContactPreconditioner woodbury(std::make_unique<NewtonPreconditioner2D>(*setup.objective), setup.boundary_contact,
+                                 static_cast<int>(terms.size()));
+  Eigen::VectorXd gradient;
+  const double energy = setup.objective->value_and_gradient(x, &gradient);
+  const OptimizationState state{x, gradient, energy, 0};
+  factored.update(state);
+  woodbury.update(state);
+  Eigen::VectorXd d_factored, d_woodbury;
+  factored.apply(gradient, &d_factored);
+  woodbury.apply(gradient, &d_woodbury);
+  CHECK((d_factored - d_woodbury).norm() <= 1e-6 * d_woodbury.norm());
 }

@@ -12,6 +12,11 @@
 
 namespace akvf {
 
+// The tag of the 2D preconditioners that take the boundary barrier's
+// curvature through share_contact_curvature(); the others get it through
+// ContactPreconditioner.
+inline constexpr const char* kTakesContactCurvature = "takes-contact-curvature";
+
 // Options of the preconditioners that have them, set from the command line.
 struct PreconditionerSettings2D {
   AkvfOptions2D akvf;
@@ -38,6 +43,12 @@ struct PreconditionerSettings2D {
   void set_linear_solver(LinearSolver solver) {
     for (FactorOptions* options : {&akvf.factor, &newton, &newton_phase, &laplacian, &slim})
       options->linear_solver = solver;
+  }
+  // Every factored preconditioner includes the boundary barrier's curvature
+  // (global injectivity), one pattern shared by them all.
+  void share_contact_curvature(const std::shared_ptr<ContactCurvature>& curvature) {
+    for (FactorOptions* options : {&akvf.factor, &newton, &newton_phase, &laplacian, &slim})
+      options->contact_curvature = curvature;
   }
   // Every factored preconditioner's analysis eliminates the vertices in
   // `ordering` (the mesh's, computed once; null: each orders its own).

@@ -1,0 +1,50 @@
+#include "preconditioners/contact_curvature.h"
+
+#include <algorithm>
+
+namespace akvf {
+
+ContactCurvature::ContactCurvature(std::shared_ptr<const BoundaryContact> contact, int num_vertices)
+    : contact_(std::move(contact)), num_vertices_(num_vertices), matrix_(2 * num_vertices, 2 * num_vertices) {}
+
+const Eigen::SparseMatrix<double>& ContactCurvature::at(const Eigen::VectorXd& x) {
+  const std::vector<BoundaryContact::ActiveTerm> terms = contact_->active_terms(x);
+  const auto n = static_cast<std::uint64_t>(num_vertices_);
+  bool grown = false;
+  for (const BoundaryContact::ActiveTerm& term : terms)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        const auto i = static_cast<std::uint64_t>(term.vertex[a]), j = static_cast<std::uint64_t>(term.vertex[b]);
+        if (i <= j && pairs_.insert(i * n + j).second) {
+          sorted_pairs_.push_back(i * n + j);
+          grown = true;
+        }
+      }
+  if (grown) {
+    std::sort(sorted_pairs_.begin(), sorted_pairs_.end());
+    ++version_;
+  }
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(4 * sorted_pairs_.size() + 36 * terms.size());
+  // Every pair's block, zero, so that the pattern is the pairs'.
+  for (const std::uint64_t pair : sorted_pairs_) {
+    const auto i = static_cast<int>(pair / n), j = static_cast<int>(pair % n);
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c)
+        if (i != j || r <= c) entries.emplace_back(2 * i + r, 2 * j + c, 0.0);
+  }
+  for (const BoundaryContact::ActiveTerm& term : terms)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        const int i = term.vertex[a], j = term.vertex[b];
+        if (i > j) continue;
+        const Eigen::Matrix2d block = term.curvature * term.gradient[a] * term.gradient[b].transpose();
+        for (int r = 0; r < 2; ++r)
+          for (int c = 0; c < 2; ++c)
+            if (i != j || r <= c) entries.emplace_back(2 * i + r, 2 * j + c, block(r, c));
+      }
+  matrix_.setFromTriplets(entries.begin(), entries.end());
+  return matrix_;
+}
+
+}  // namespace akvf

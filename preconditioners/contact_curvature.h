@@ -1,0 +1,45 @@
+#pragma once
+// The boundary barrier's curvature as a sparse matrix, for a factored
+// preconditioner to add to P (global injectivity; boundary_contact.h):
+//   C(x) = sum_k c_k (dq_k/dx)(dq_k/dx)^T
+// over the barrier's active terms k (BoundaryContact::ActiveTerm), each
+// coupling three vertices as a triangle does. Factored with P, C costs one
+// factorization however many terms are active, where ContactPreconditioner's
+// low-rank update costs a solve per term (and a term left out of P stalls the
+// descent: its vertices run into the barrier and the line search shortens
+// every step).
+//
+// The pattern. C is stored on every vertex pair that any term has coupled so
+// far (explicit zeros where none does now): the pattern only grows, so a
+// factorization's symbolic analysis is redone only when a new pair comes
+// within reach, which the version number tells. One object serves the
+// preconditioners of one run (akvf-newton's two phases share it).
+#include <Eigen/SparseCore>
+#include <cstdint>
+#include <memory>
+#include <unordered_set>
+#include <vector>
+
+#include "framework/optimization/boundary_contact.h"
+
+namespace akvf {
+
+class ContactCurvature {
+ public:
+  ContactCurvature(std::shared_ptr<const BoundaryContact> contact, int num_vertices);
+
+  // C(x): the upper triangle, 2|V| square, on the pattern of every pair so far.
+  const Eigen::SparseMatrix<double>& at(const Eigen::VectorXd& x);
+  // Grows by one each time the pattern does.
+  int pattern_version() const { return version_; }
+
+ private:
+  std::shared_ptr<const BoundaryContact> contact_;
+  int num_vertices_;
+  std::unordered_set<std::uint64_t> pairs_;  // vertex pairs (i <= j) as i * |V| + j
+  std::vector<std::uint64_t> sorted_pairs_;
+  int version_ = 0;
+  Eigen::SparseMatrix<double> matrix_;
+};
+
+}  // namespace akvf
