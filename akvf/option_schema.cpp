@@ -247,6 +247,14 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                 "with --cut seams: the bound on each chart's symmetric Dirichlet energy (4 is an "
                                 "isometry)",
                                 &O::max_distortion, "> 4", [](double e) { return e > 4; }));
+    f.push_back(integer_field<O>("texture_size", "texture-size", "N",
+                                 "several charts: the texture they are packed for, N texels per side (the unit "
+                                 "of --gutter)",
+                                 &O::texture_size, ">= 16", [](int n) { return n >= 16; }));
+    f.push_back(number_field<O>("gutter", "gutter", "T",
+                                "several charts: the least gap between packed charts, in texels of "
+                                "--texture-size",
+                                &O::gutter, "in [0, 64]", [](double t) { return t >= 0 && t <= 64; }));
     f.push_back(recomputes_start(
         choice_field<O>("repair", "repair", "repair",
                         "auto sets aside zero-area and repeated faces (kept in the outputs), opens edges shared "

@@ -44,6 +44,11 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.cut = o.cut != Cut::kNone;
   c.seams = o.cut == Cut::kSeams;
   c.max_distortion = o.max_distortion;
+  // A wider gutter would leave the charts little of the texture.
+  if (o.gutter * 16 > o.texture_size)
+    throw OptionsError("gutter " + number_text(o.gutter) + " is more than 1/16 of texture_size " +
+                       std::to_string(o.texture_size) + " (both in texels)");
+  c.gutter = o.gutter / o.texture_size;
   c.repair = o.repair == Repair::kAuto;
   c.optimizer.gradient_tolerance = o.grad_tol;
   c.optimizer.max_iterations = o.max_iters;

@@ -130,6 +130,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   // An exact power-of-two scale first, so that the checks and the Tutte solve
   // see a mesh of extent about 1 whatever the input's units (1e-100 to 1e+100).
   setup.unit_scale = power_of_two_unit_scale(input.V, name);
+  setup.gutter = config.gutter;
   TriMesh unit_input = input;
   unit_input.V *= setup.unit_scale;
   if (config.cut && config.init_from_file)
@@ -261,7 +262,7 @@ Eigen::MatrixXd chart_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
   // and J is unchanged when mesh and map scale alike).
   const double scale = 1 / (setup.normalization.scale * setup.unit_scale);
   Eigen::MatrixXd out = scale * unstack_uv(x);
-  pack_charts(setup.objective->elements(), setup.disk.face_chart, setup.disk.num_charts(), &out, true);
+  pack_charts(setup.objective->elements(), setup.disk.face_chart, setup.disk.num_charts(), &out, true, setup.gutter);
   return out;
 }
 

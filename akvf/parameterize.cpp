@@ -23,6 +23,7 @@ struct Parameterizer::State {
     check_options(options);
     config = param_config(options);
     config.preconditioner_settings.share_analyses(analyses);
+    setup.gutter = config.gutter;  // the outputs' packing: no new start
   }
   void prepare() {
     configure();

@@ -44,6 +44,8 @@ struct ParameterizeOptions {
                                                    // multi-component meshes into disk charts (uv_faces);
                                                    // kSeams: then add seams (max_distortion)
   double max_distortion = 4.2;                     // kSeams: bound on each chart's symmetric Dirichlet energy
+  int texture_size = 1024;                         // several charts: the texture's side in texels, and
+  double gutter = 2;                               // the least gap between packed charts, in its texels
   Repair repair = Repair::kAuto;                   // kAuto: open edges of 3+ faces, split non-manifold vertices
                                                    // (per-corner uv_faces); kNone: refuse such meshes
   bool flaps = true;                               // flap optimization of §5.4 after the Tutte map

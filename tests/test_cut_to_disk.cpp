@@ -149,6 +149,55 @@ TEST_CASE("output packing turns charts flat, never mirrors them, keeps them apar
   CHECK(any_overlap(tight, doubled));  // the check sees an overlap
 }
 
+// The least distance between two segments of the plane that do not cross.
+double segment_distance(Eigen::RowVector2d a, Eigen::RowVector2d b, Eigen::RowVector2d c, Eigen::RowVector2d d) {
+  const auto to_segment = [](Eigen::RowVector2d p, Eigen::RowVector2d s, Eigen::RowVector2d t) {
+    const Eigen::RowVector2d e = t - s;
+    const double u = std::clamp((p - s).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    return (p - s - u * e).norm();
+  };
+  return std::min({to_segment(a, c, d), to_segment(b, c, d), to_segment(c, a, b), to_segment(d, a, b)});
+}
+
+TEST_CASE("a gutter keeps packed charts that share of the square apart") {
+  // 24 rectangles of two triangles, of several lengths and angles.
+  const int n = 24;
+  Eigen::MatrixXi F(2 * n, 3);
+  Eigen::MatrixXd UV(4 * n, 2);
+  std::vector<int> face_chart(2 * n);
+  for (int c = 0; c < n; ++c) {
+    const double length = 1 + c % 5;
+    const Eigen::Matrix2d R = Eigen::Rotation2Dd(0.37 * c).toRotationMatrix();
+    const Eigen::Vector2d corners[4] = {{0, 0}, {length, 0}, {length, 0.3 + 0.1 * (c % 3)}, {0, 0.3}};
+    for (int k = 0; k < 4; ++k) UV.row(4 * c + k) = (R * corners[k]).transpose() + Eigen::RowVector2d(7.0 * c, 0);
+    F.row(2 * c) << 4 * c, 4 * c + 1, 4 * c + 2;
+    F.row(2 * c + 1) << 4 * c, 4 * c + 2, 4 * c + 3;
+    face_chart[2 * c] = face_chart[2 * c + 1] = c;
+  }
+  // The least distance between two charts' outlines, over the square's side.
+  const auto least_gap = [&](const Eigen::MatrixXd& packed) {
+    const double side = (packed.colwise().maxCoeff() - packed.colwise().minCoeff()).maxCoeff();
+    double least = std::numeric_limits<double>::infinity();
+    for (int c = 0; c < n; ++c)
+      for (int d = c + 1; d < n; ++d)
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j)
+            least = std::min(least, segment_distance(packed.row(4 * c + i), packed.row(4 * c + (i + 1) % 4),
+                                                     packed.row(4 * d + j), packed.row(4 * d + (j + 1) % 4)));
+    return least / side;
+  };
+  for (const double gutter : {0.01, 0.03, 0.06}) {
+    CAPTURE(gutter);
+    Eigen::MatrixXd packed = UV;
+    akvf::pack_charts(F, face_chart, n, &packed, true, gutter);
+    CHECK(least_gap(packed) / gutter >= 1 - 1e-9);
+    CHECK_FALSE(any_overlap(packed, F));
+  }
+  Eigen::MatrixXd plain = UV;
+  akvf::pack_charts(F, face_chart, n, &plain, true);
+  CHECK(least_gap(plain) < 0.03);  // the check can fail: without a gutter charts lie closer
+}
+
 TEST_CASE("without the cut the default is unchanged: uv per vertex, uv_faces = F") {
   const TriMesh grid = akvf::test::bumpy_disk(8, 8);
   akvf::ParameterizeOptions options;

@@ -32,6 +32,7 @@ std::string other_value(const akvf::OptionField<Options>& field, const Options& 
   if (field.key == "linear_solver") return "cholmod";
   if (field.key == "eigen_filter") return "adaptive";
   if (field.kind == akvf::OptionKind::kSwitch) return "true";
+  if (field.key == "texture_size") return "2048";
   if (field.kind == akvf::OptionKind::kInteger) return "7";
   if (field.key == "time_limit") return "12.5";
   if (field.key == "max_distortion") return "4.5";

@@ -35,6 +35,9 @@ struct ParamConfig {
   // most `max_distortion` (akvf/internal/seam_cutting.h).
   bool seams = false;
   double max_distortion = 4.2;
+  // Several charts are packed at least this share of the square's side
+  // apart (the gutter over the texture's size).
+  double gutter = 2.0 / 1024;
   // Open edges of three or more faces and split non-manifold vertices
   // (framework/mesh/manifold_repair.h) instead of refusing them.
   bool repair = true;
@@ -81,6 +84,7 @@ struct ParamSetup {
   // (empty trace otherwise); x0 is its end point when it succeeded.
   OptimizerResult warm_start;
   Warnings warnings;
+  double gutter = 2.0 / 1024;  // ParamConfig::gutter, for the packed outputs
 };
 
 // Throws ValidationError / OptionsError with a message naming `name`.

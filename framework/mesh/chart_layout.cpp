@@ -104,7 +104,7 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
 }
 
 void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV,
-                 bool rotate_to_boxes) {
+                 bool rotate_to_boxes, double gutter) {
   if (num_charts <= 1) return;
   const std::vector<std::vector<int>> vertices =
       chart_vertices(F, face_chart, num_charts, static_cast<int>(UV->rows()));
@@ -132,13 +132,12 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
     widest = std::max(widest, size[c].x());
     total_width += size[c].x();
   }
-  const double gap = 0.02 * std::sqrt(box_area);
   std::vector<int> order(num_charts);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size[a].y() > size[b].y(); });
-  // Rows of at most row_width: each chart's lower corner (or, without
-  // `corners`, only the side of the square around them all).
-  const auto rows = [&](double row_width, std::vector<Eigen::RowVector2d>* corners) {
+  // Rows of at most row_width with `gap` between boxes: each chart's lower
+  // corner (or, without `corners`, only the side of the square around them).
+  const auto rows = [&](double row_width, double gap, std::vector<Eigen::RowVector2d>* corners) {
     double x = 0, y = 0, row_height = 0, width = 0;
     for (int c : order) {
       if (x > 0 && x + size[c].x() > row_width) {  // start a new row above
@@ -153,28 +152,51 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
     }
     return std::max(width, y + row_height);
   };
-  double row_width = std::max(std::sqrt(box_area), widest);
-  if (rotate_to_boxes) {  // the row width of the smallest square, among 32 from one chart to all per row
-    const double last = total_width + num_charts * gap;
-    double best = rows(row_width, nullptr);
-    for (int i = 0; i <= 32; ++i) {
-      const double candidate = widest * std::pow(std::max(last / widest, 1.0), i / 32.0);
-      if (const double side = rows(candidate, nullptr); side < best) {
-        best = side;
-        row_width = candidate;
+  std::vector<std::vector<int>> chart_faces(num_charts);
+  for (int f = 0; f < F.rows(); ++f) chart_faces[face_chart[f]].push_back(f);
+  // One layout with at least `least_gap` between charts: its square's side
+  // and the least distance it keeps between charts.
+  std::vector<Eigen::RowVector2d> corner(num_charts);
+  std::vector<ChartPlacement> placement;
+  bool interlocked = false;
+  const auto layout = [&](double least_gap, double* kept) {
+    const double gap = std::max(0.02 * std::sqrt(box_area), least_gap);
+    double row_width = std::max(std::sqrt(box_area), widest);
+    if (rotate_to_boxes) {  // the row width of the smallest square, among 32 from one chart to all per row
+      const double last = total_width + num_charts * gap;
+      double best = rows(row_width, gap, nullptr);
+      for (int i = 0; i <= 32; ++i) {
+        const double candidate = widest * std::pow(std::max(last / widest, 1.0), i / 32.0);
+        if (const double side = rows(candidate, gap, nullptr); side < best) {
+          best = side;
+          row_width = candidate;
+        }
       }
     }
-  }
-  std::vector<Eigen::RowVector2d> corner(num_charts);
-  const double shelf_side = rows(row_width, &corner);
-  if (rotate_to_boxes) {  // charts that interlock, when they fit a smaller square so
-    std::vector<std::vector<int>> chart_faces(num_charts);
-    for (int f = 0; f < F.rows(); ++f) chart_faces[face_chart[f]].push_back(f);
-    std::vector<ChartPlacement> placement;
-    if (raster_pack(F, chart_faces, *UV, &placement) < shelf_side) {
-      apply_placement(F, chart_faces, placement, UV);
-      return;
+    double side = rows(row_width, gap, &corner);
+    *kept = gap;
+    interlocked = false;
+    if (rotate_to_boxes) {  // charts that interlock, when they fit a smaller square so
+      double raster_gap = 0;
+      const double raster_side = raster_pack(F, chart_faces, *UV, least_gap, &placement, &raster_gap);
+      if (raster_side < side) {
+        interlocked = true;
+        side = raster_side;
+        *kept = raster_gap;
+      }
     }
+    return side;
+  };
+  // The gutter is a share of the square's side, which the gap itself
+  // widens: gaps from the last side, 1 % over, until they hold (they
+  // approach that fixed point geometrically; one round for the small
+  // gutters of real textures; the square is at least sqrt(box_area)).
+  double kept = 0;
+  double side = layout(gutter * std::sqrt(box_area), &kept);
+  for (int round = 0; round < 16 && kept < gutter * side; ++round) side = layout(1.01 * gutter * side, &kept);
+  if (interlocked) {
+    apply_placement(F, chart_faces, placement, UV);
+    return;
   }
   for (int c = 0; c < num_charts; ++c)
     for (int v : vertices[c]) UV->row(v) += corner[c] - low[c];

@@ -26,10 +26,11 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
 // tall), and the row width is the one, of 33 from the widest chart to all in
 // one row, whose layout fits the smallest square; then, if charts that
 // interlock (raster_packing.h, turned by quarters) fit a smaller square,
-// they are placed so instead. The charts keep their scale. No-op for one
-// chart.
+// they are placed so instead. Charts end at least `gutter` times the side of
+// the square around them apart (the texture's gutter: texels over its size).
+// The charts keep their scale. No-op for one chart.
 void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV,
-                 bool rotate_to_boxes = false);
+                 bool rotate_to_boxes = false, double gutter = 0);
 
 // The fraction of the square around UV's bounding box (side: its longer
 // extent; the unit square once the map is scaled into it) that the triangles

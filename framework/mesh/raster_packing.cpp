@@ -53,7 +53,7 @@ bool touches(const std::array<Eigen::RowVector2d, 3>& t, double x0, double y0, d
 }
 
 Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Eigen::MatrixXd& UV, int quarter_turns,
-               double h) {
+               double h, int ring) {
   Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (int f : faces)
     for (int k = 0; k < 3; ++k) {
@@ -62,9 +62,9 @@ Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Ei
       hi = hi.cwiseMax(p);
     }
   Mask mask;
-  mask.origin = lo - Eigen::RowVector2d::Constant(h);  // one cell of gap on every side
-  mask.width = static_cast<int>(std::floor((hi.x() - mask.origin.x()) / h)) + 2;
-  mask.height = static_cast<int>(std::floor((hi.y() - mask.origin.y()) / h)) + 2;
+  mask.origin = lo - Eigen::RowVector2d::Constant(ring * h);  // `ring` cells of gap on every side
+  mask.width = static_cast<int>(std::floor((hi.x() - mask.origin.x()) / h)) + 1 + ring;
+  mask.height = static_cast<int>(std::floor((hi.y() - mask.origin.y()) / h)) + 1 + ring;
   std::vector<char> cell(static_cast<std::size_t>(mask.width) * mask.height, 0);
   for (int f : faces) {
     std::array<Eigen::RowVector2d, 3> t;
@@ -76,13 +76,13 @@ Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Ei
         if (!cell[static_cast<std::size_t>(y) * mask.width + x] && touches(t, x, y, 1.0))
           cell[static_cast<std::size_t>(y) * mask.width + x] = 1;
   }
-  // The gap: every cell next to a marked one (8 neighbours).
+  // The gap: every cell within `ring` cells of a marked one.
   std::vector<char> grown = cell;
   for (int y = 0; y < mask.height; ++y)
     for (int x = 0; x < mask.width; ++x)
       if (cell[static_cast<std::size_t>(y) * mask.width + x])
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
+        for (int dy = -ring; dy <= ring; ++dy)
+          for (int dx = -ring; dx <= ring; ++dx) {
             const int yy = y + dy, xx = x + dx;
             if (yy >= 0 && yy < mask.height && xx >= 0 && xx < mask.width)
               grown[static_cast<std::size_t>(yy) * mask.width + xx] = 1;
@@ -166,7 +166,7 @@ class Atlas {
 }  // namespace
 
 double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,
-                   const Eigen::MatrixXd& UV, std::vector<ChartPlacement>* placement) {
+                   const Eigen::MatrixXd& UV, double least_gap, std::vector<ChartPlacement>* placement, double* gap) {
   const int n = static_cast<int>(chart_faces.size());
   std::vector<double> area(n, 0.0);
   for (int c = 0; c < n; ++c)
@@ -180,11 +180,14 @@ double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>
   const double target = std::clamp(64.0 * n, 16384.0, 262144.0);
   const double h = std::sqrt(total / target);
   if (!(h > 0)) return std::numeric_limits<double>::infinity();
+  // Two grown masks never share a cell, so charts lie at least 2 ring h apart.
+  const int ring = std::max(1, static_cast<int>(std::ceil(least_gap / (2 * h))));
+  if (gap) *gap = 2 * ring * h;
   std::vector<std::array<Mask, 2>> masks(n);
   long cells = 0;
   int widest = 0;
   for (int c = 0; c < n; ++c) {
-    for (int q = 0; q < 2; ++q) masks[c][q] = rasterize(F, chart_faces[c], UV, q, h);
+    for (int q = 0; q < 2; ++q) masks[c][q] = rasterize(F, chart_faces[c], UV, q, h, ring);
     cells += masks[c][0].cells;
     widest = std::max(widest, std::min(masks[c][0].width, masks[c][1].width));
   }

@@ -1,7 +1,7 @@
 #pragma once
 // Charts packed on a grid of square cells so that they interlock where their
 // shapes allow (the brute-force placement xatlas and Blender use): each
-// chart's triangles mark every cell they touch, grown by one cell (the
+// chart's triangles mark every cell they touch, grown by a ring of cells (the
 // gap between charts); largest chart first, each goes to the first free
 // place in row-major order (lowest row, then leftmost) of an atlas of a
 // fixed width, as given or turned a quarter, whichever ends lower. Several
@@ -18,10 +18,13 @@ struct ChartPlacement {
 };
 
 // chart_faces[c]: the rows of F in chart c; UV: the charts as they are (their
-// scale is kept). Returns the side of the square the placed charts fit in,
-// and each chart's placement.
+// scale is kept). The gap grows to more cells where one cell would leave
+// charts closer than least_gap (UV's units). Returns the side of the square
+// the placed charts fit in, each chart's placement and, if asked, the least
+// distance between charts the grid guarantees.
 double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,
-                   const Eigen::MatrixXd& UV, std::vector<ChartPlacement>* placement);
+                   const Eigen::MatrixXd& UV, double least_gap, std::vector<ChartPlacement>* placement,
+                   double* gap = nullptr);
 
 // UV after `placement` (the vertices of chart c are those of its faces).
 void apply_placement(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,
