@@ -159,43 +159,65 @@ double segment_distance(Eigen::RowVector2d a, Eigen::RowVector2d b, Eigen::RowVe
   return std::min({to_segment(a, c, d), to_segment(b, c, d), to_segment(c, a, b), to_segment(d, a, b)});
 }
 
-TEST_CASE("a gutter keeps packed charts that share of the square apart") {
-  // 24 rectangles of two triangles, of several lengths and angles.
-  const int n = 24;
-  Eigen::MatrixXi F(2 * n, 3);
-  Eigen::MatrixXd UV(4 * n, 2);
-  std::vector<int> face_chart(2 * n);
-  for (int c = 0; c < n; ++c) {
-    const double length = 1 + c % 5;
-    const Eigen::Matrix2d R = Eigen::Rotation2Dd(0.37 * c).toRotationMatrix();
-    const Eigen::Vector2d corners[4] = {{0, 0}, {length, 0}, {length, 0.3 + 0.1 * (c % 3)}, {0, 0.3}};
-    for (int k = 0; k < 4; ++k) UV.row(4 * c + k) = (R * corners[k]).transpose() + Eigen::RowVector2d(7.0 * c, 0);
-    F.row(2 * c) << 4 * c, 4 * c + 1, 4 * c + 2;
-    F.row(2 * c + 1) << 4 * c, 4 * c + 2, 4 * c + 3;
-    face_chart[2 * c] = face_chart[2 * c + 1] = c;
-  }
+TEST_CASE("a gutter keeps packed charts that share of the square apart, in rows and interlocked") {
+  // Charts of one shape (its outline, triangulated from its first corner),
+  // n of them at several sizes and angles.
+  struct Charts {
+    Eigen::MatrixXi F;
+    Eigen::MatrixXd UV;
+    std::vector<int> face_chart;
+    int corners = 0;
+  };
+  const auto charts = [](const std::vector<Eigen::Vector2d>& outline, int n) {
+    Charts out;
+    const int k = static_cast<int>(outline.size());
+    out.corners = k;
+    out.F.resize(n * (k - 2), 3);
+    out.UV.resize(n * k, 2);
+    for (int c = 0; c < n; ++c) {
+      const Eigen::Matrix2d R = (1 + c % 5) * Eigen::Rotation2Dd(0.37 * c).toRotationMatrix();
+      for (int i = 0; i < k; ++i)
+        out.UV.row(k * c + i) = (R * outline[i]).transpose() + Eigen::RowVector2d(20.0 * c, 0);
+      for (int i = 1; i + 1 < k; ++i) {
+        out.F.row(c * (k - 2) + i - 1) << k * c, k * c + i, k * c + i + 1;
+        out.face_chart.push_back(c);
+      }
+    }
+    return out;
+  };
   // The least distance between two charts' outlines, over the square's side.
-  const auto least_gap = [&](const Eigen::MatrixXd& packed) {
+  const auto least_gap = [](const Charts& set, const Eigen::MatrixXd& packed) {
     const double side = (packed.colwise().maxCoeff() - packed.colwise().minCoeff()).maxCoeff();
+    const int k = set.corners, n = static_cast<int>(packed.rows()) / k;
     double least = std::numeric_limits<double>::infinity();
     for (int c = 0; c < n; ++c)
       for (int d = c + 1; d < n; ++d)
-        for (int i = 0; i < 4; ++i)
-          for (int j = 0; j < 4; ++j)
-            least = std::min(least, segment_distance(packed.row(4 * c + i), packed.row(4 * c + (i + 1) % 4),
-                                                     packed.row(4 * d + j), packed.row(4 * d + (j + 1) % 4)));
+        for (int i = 0; i < k; ++i)
+          for (int j = 0; j < k; ++j)
+            least = std::min(least, segment_distance(packed.row(k * c + i), packed.row(k * c + (i + 1) % k),
+                                                     packed.row(k * d + j), packed.row(k * d + (j + 1) % k)));
     return least / side;
   };
-  for (const double gutter : {0.01, 0.03, 0.06}) {
-    CAPTURE(gutter);
-    Eigen::MatrixXd packed = UV;
-    akvf::pack_charts(F, face_chart, n, &packed, true, gutter);
-    CHECK(least_gap(packed) / gutter >= 1 - 1e-9);
-    CHECK_FALSE(any_overlap(packed, F));
+  // Rectangles (rows of boxes suit them) and L shapes (the grid interlocks
+  // them: its layout covers more of the square than the rows').
+  const Charts rectangles = charts({{0, 0}, {1, 0}, {1, 0.3}, {0, 0.3}}, 24);
+  const Charts ells = charts({{0.5, 0.5}, {0.5, 2}, {0, 2}, {0, 0}, {2, 0}, {2, 0.5}}, 40);
+  for (const Charts* set : {&rectangles, &ells}) {
+    const int n = set->F.rows() / (set->corners - 2);
+    for (const double gutter : {0.0, 0.01, 0.03, 0.06}) {
+      CAPTURE(set->corners);
+      CAPTURE(gutter);
+      Eigen::MatrixXd packed = set->UV;
+      akvf::pack_charts(set->F, set->face_chart, n, &packed, true, gutter);
+      if (gutter > 0) CHECK(least_gap(*set, packed) / gutter >= 1 - 1e-9);
+      if (gutter == 0) CHECK(least_gap(*set, packed) < 0.03);  // the check can fail: charts lie closer
+      CHECK_FALSE(any_overlap(packed, set->F));
+    }
   }
-  Eigen::MatrixXd plain = UV;
-  akvf::pack_charts(F, face_chart, n, &plain, true);
-  CHECK(least_gap(plain) < 0.03);  // the check can fail: without a gutter charts lie closer
+  Eigen::MatrixXd rows = ells.UV, interlocked = ells.UV;
+  akvf::pack_charts(ells.F, ells.face_chart, 40, &rows);
+  akvf::pack_charts(ells.F, ells.face_chart, 40, &interlocked, true, 0.01);
+  CHECK(akvf::square_coverage(ells.F, interlocked) > 1.3 * akvf::square_coverage(ells.F, rows));
 }
 
 TEST_CASE("without the cut the default is unchanged: uv per vertex, uv_faces = F") {
