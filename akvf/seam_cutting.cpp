@@ -149,6 +149,18 @@ IterationCallback shifted(const IterationCallback& callback, const int* iteratio
   };
 }
 
+// A round that starts warm, from the last round's map (opened along new
+// seams, which changes the energy only near them), is where akvf-newton
+// would switch to its Newton phase: the curvature, not the flip-free bound,
+// sets the step. It starts there, with that phase's settings.
+ParamConfig warm(ParamConfig config) {
+  if (config.preconditioner != "akvf-newton") return config;
+  config.preconditioner = "newton";
+  config.preconditioner_settings.newton = config.preconditioner_settings.newton_phase;
+  config.preconditioner_settings.newton_filter = config.preconditioner_settings.newton_phase_filter;
+  return config;
+}
+
 }  // namespace
 
 ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
@@ -209,7 +221,7 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
       rebuild_problem(round, setup.get());
       if (round.global_injectivity) part_seam_sides(setup->disk.mesh, setup->disk.input_vertex, 0.1, &x);
       setup->x0 = x;
-      optimize(round);
+      optimize(warm(round));
     }
   };
   ParamConfig rough = config;
