@@ -3,7 +3,7 @@
 # distortion is above the bound (docs/results.md, "Seams that bound the
 # distortion"): the energy with the first cut alone, then with the seams,
 # as a Markdown table. --large adds bunny_closed subdivided twice (midpoint
-# subdivision, 111 456 faces; about 6 minutes).
+# subdivision, 111 456 faces; about 5 minutes).
 # Usage: bash scripts/seams.sh [--large]   (after scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
