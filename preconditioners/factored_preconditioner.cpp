@@ -177,7 +177,8 @@ void FactoredPreconditioner<D>::add_shift() {
 
 template <int D>
 const Eigen::SparseMatrix<double>& FactoredPreconditioner<D>::system() {
-  if (!options_.contact_curvature) return matrix_.upper();
+  // Until a term comes within reach C has no entry, and P + C is P.
+  if (!options_.contact_curvature || contact_.nonZeros() == 0) return matrix_.upper();
   if (!system_current_) {
     system_ = matrix_.upper() + contact_;
     system_current_ = true;

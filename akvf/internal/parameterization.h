@@ -84,7 +84,7 @@ struct ParamSetup {
   // (empty trace otherwise); x0 is its end point when it succeeded.
   OptimizerResult warm_start;
   Warnings warnings;
-  double gutter = 2.0 / 1024;  // ParamConfig::gutter, for the packed outputs
+  double gutter = 0;  // ParamConfig::gutter (set with it), for the packed outputs
 };
 
 // Throws ValidationError / OptionsError with a message naming `name`.
