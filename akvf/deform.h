@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,16 +28,16 @@ struct DeformOptions {
   std::string preconditioner = "akvf-newton";  // a name of preconditioners_3d()
   std::string line_search = "backtracking";
   Acceleration acceleration = Acceleration::kAuto;
-  double weight = 1e5;           // w of the soft constraints (unit rest volume); > 0
-  bool hard = false;             // hard constraints instead of the penalty
-  double cg_tol = 0;             // > 0: Jacobi-CG to this relative residual instead of factoring
-  bool akvf_as_written = false;  // AKVF as §6.2 states it (K + c I only), for comparison
-  double grad_tol = 1e-3;
-  int max_iters = 100;  // Figure 8 runs 100 iterations
+  double weight = 1e5;             // w of the soft constraints (unit rest volume); > 0
+  bool hard = false;               // hard constraints instead of the penalty
+  double cg_tol = 0;               // > 0: Jacobi-CG to this relative residual instead of factoring
+  bool akvf_as_written = false;    // AKVF as §6.2 states it (K + c I only), for comparison
+  std::optional<double> grad_tol;  // none ("auto"): 1e-3, or 1e-4 for arap
+  int max_iters = 100;             // Figure 8 runs 100 iterations
   double time_limit = std::numeric_limits<double>::infinity();
   LinearSolver linear_solver = LinearSolver::kAuto;  // kAuto: kAmg only if the factor would not fit
   EigenFilter eigen_filter = EigenFilter::kAuto;     // projected Newton's element Hessians
-  int threads = 0;                     // 0 = all cores
+  int threads = 0;                                   // 0 = all cores
   // As ParameterizeOptions::callbacks; x is interleaved x0 y0 z0 x1 ... at
   // the input's scale.
   std::vector<IterationCallback> callbacks;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "akvf/catalog.h"
@@ -74,6 +75,31 @@ OptionField<O> number_field(std::string key, std::string flag, std::string value
           [member](const O& o) { return number_text(o.*member); },
           [member, rule, ok](const O& o, const std::string& name) {
             if (!ok(o.*member)) out_of_range(name, rule, o.*member);
+          }};
+}
+
+// A number or "auto" (std::nullopt: a default that depends on other
+// options); `ok` checks the number.
+template <class O>
+OptionField<O> auto_number_field(std::string key, std::string flag, std::string value_name, std::string help,
+                                 std::optional<double> O::*member, std::string rule, std::function<bool(double)> ok) {
+  return {std::move(key),
+          std::move(flag),
+          "auto|" + value_name,
+          OptionKind::kText,
+          std::move(help),
+          [member](O& o, const std::string& text) {
+            double value = 0;
+            if (text == "auto")
+              (o.*member).reset();
+            else if (parse_real(text, &value))
+              o.*member = value;
+            else
+              throw OptionsError("'" + text + "' is neither auto nor a number");
+          },
+          [member](const O& o) { return o.*member ? number_text(*(o.*member)) : std::string("auto"); },
+          [member, rule, ok](const O& o, const std::string& name) {
+            if (o.*member && !ok(*(o.*member))) out_of_range(name, "auto or " + rule, *(o.*member));
           }};
 }
 
@@ -157,8 +183,10 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
   fields->push_back(choice_field<O>("acceleration", "acceleration", "acceleration",
                                     "AQP momentum: auto (on for the laplacian preconditioner only), on, off",
                                     &O::acceleration));
-  fields->push_back(number_field<O>("grad_tol", "grad-tol", "X", "stop when the gradient norm drops below X",
-                                    &O::grad_tol, ">= 0", [](double x) { return x >= 0; }));
+  fields->push_back(auto_number_field<O>("grad_tol", "grad-tol", "X",
+                                         "stop when the gradient norm drops below X; auto: 1e-3, or 1e-4 for "
+                                         "arap (its minimum is near 0, not an isometry's positive value)",
+                                         &O::grad_tol, ">= 0", [](double x) { return x >= 0; }));
   fields->push_back(integer_field<O>("max_iters", "max-iters", "N", "stop after N iterations", &O::max_iters, ">= 0",
                                      [](int n) { return n >= 0; }));
   fields->push_back(number_field<O>("time_limit", "time-limit", "SECONDS", "stop after this much optimizer time",
@@ -212,24 +240,11 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                 "AKVF: reuse the last factorization through CG to relative residual TAU "
                                 "(0 = factor K every iteration, as in Algorithm 1)",
                                 &O::akvf_reuse, "in [0, 1)", [](double t) { return t >= 0 && t < 1; }));
-    f.push_back({"newton_reuse", "newton-reuse", "auto|TAU", OptionKind::kText,
-                 "projected Newton: reuse the last factorization through CG to relative residual TAU; "
-                 "auto: 0 for newton (factor every iteration), --akvf-reuse for the Newton phase of "
-                 "akvf-newton",
-                 [](O& o, const std::string& text) {
-                   double tau = -1;
-                   if (text == "auto")
-                     o.newton_reuse.reset();
-                   else if (parse_real(text, &tau))
-                     o.newton_reuse = tau;
-                   else
-                     throw OptionsError("'" + text + "' is neither auto nor a number");
-                 },
-                 [](const O& o) { return o.newton_reuse ? number_text(*o.newton_reuse) : std::string("auto"); },
-                 [](const O& o, const std::string& name) {
-                   if (o.newton_reuse && !(*o.newton_reuse >= 0 && *o.newton_reuse < 1))
-                     out_of_range(name, "auto or in [0, 1)", *o.newton_reuse);
-                 }});
+    f.push_back(auto_number_field<O>("newton_reuse", "newton-reuse", "TAU",
+                                     "projected Newton: reuse the last factorization through CG to relative residual "
+                                     "TAU; auto: 0 for newton (factor every iteration), --akvf-reuse for the Newton "
+                                     "phase of akvf-newton",
+                                     &O::newton_reuse, "in [0, 1)", [](double t) { return t >= 0 && t < 1; }));
     f.push_back(number_field<O>("ls_rho", "ls-rho", "X", "backtracking shrink factor (the paper's text says 0.9)",
                                 &O::ls_rho, "in (0, 1)", [](double r) { return r > 0 && r < 1; }));
     f.push_back(recomputes_start(

@@ -51,7 +51,8 @@ struct ParameterizeOptions {
   bool flaps = true;                               // flap optimization of §5.4 after the Tutte map
   Injectivity injectivity = Injectivity::kGlobal;  // kGlobal: no UV overlap (boundary contact-free);
                                                    // kLocal: flip-free only, the paper's Algorithm 1
-  double grad_tol = 1e-3;                          // converged when ||grad E|| < grad_tol (area-1 units)
+  std::optional<double> grad_tol;                  // converged when ||grad E|| < grad_tol (area-1 units); none
+                                                   // ("auto"): 1e-3, or 1e-4 for arap
   int max_iters = 1000;                            // >= 0
   double time_limit = std::numeric_limits<double>::infinity();  // optimizer seconds, > 0
   int warm_start_iters = 1000;  // limit of the symmetric Dirichlet warm start of overflowing energies

@@ -76,8 +76,10 @@ TEST_CASE("bad command lines exit 2 with a message") {
   const Outcome unknown = akvf_run({"param", "m.obj", "--bogus"});
   CHECK(unknown.code == akvf::kExitUsageError);
   CHECK(unknown.err == "error: unknown option --bogus (see --help)\n");
-  const Outcome bad_value = akvf_run({"param", "m.obj", "--grad-tol", "abc"});
-  CHECK(bad_value.err == "error: option --grad-tol: 'abc' is not a finite number\n");
+  const Outcome bad_value = akvf_run({"param", "m.obj", "--exponent", "abc"});
+  CHECK(bad_value.err == "error: option --exponent: 'abc' is not a finite number\n");
+  const Outcome bad_tolerance = akvf_run({"param", "m.obj", "--grad-tol", "abc"});
+  CHECK(bad_tolerance.err == "error: option --grad-tol: 'abc' is neither auto nor a number\n");
   const Outcome precond = akvf_run({"demo", "--precond", "slim2", "--quiet", "--out-dir", scratch_dir("x").string()});
   CHECK(precond.code == akvf::kExitUsageError);
   CHECK(precond.err ==

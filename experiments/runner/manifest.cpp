@@ -91,6 +91,7 @@ std::string option_text(const Context& c, const OptionField<Options>& field, con
   switch (field.kind) {
     case OptionKind::kText:
       if (value.is_boolean()) return value.get<bool>() ? "on" : "off";  // "flaps": true
+      if (value.is_number()) return number_text(value.get<double>());   // "grad_tol": 1e-3 (or "auto")
       return text_of(c, value, where);
     case OptionKind::kNumber:
       return number_text(number_of(c, value, where));

@@ -56,8 +56,8 @@ def test_options_as_the_command_line_says(program, tmp_path):
     assert cli.returncode != 0
     with pytest.raises(akvf.OptionsError) as python:
         akvf.parameterize(V, F, grad_tol=-1)
-    assert str(python.value) == "grad_tol must be >= 0, found -1"
-    assert "must be >= 0, found -1" in cli.stderr
+    assert str(python.value) == "grad_tol must be auto or >= 0, found -1"
+    assert "must be auto or >= 0, found -1" in cli.stderr
     with pytest.raises(akvf.OptionsError, match="unknown preconditioner 'nope'"):
         akvf.parameterize(V, F, precond="nope")
     with pytest.raises(akvf.OptionsError, match="max_iters must be an integer, found float 1.5"):

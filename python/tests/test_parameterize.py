@@ -163,7 +163,7 @@ def test_every_option_of_the_schema_is_a_keyword(disk):
     assert {"energy", "precond", "solver", "exponent", "line_search", "acceleration", "grad_tol", "max_iters",
             "time_limit", "threads", "akvf_reuse", "ls_rho", "init", "flaps", "warm_start_iters"} <= keys
     assert {"weight", "hard", "cg_tol", "akvf_as_written"} <= {o["key"] for o in akvf.options("deform")}
-    assert "grad_tol = 0.001" in akvf.parameterize.__doc__
+    assert "grad_tol = auto" in akvf.parameterize.__doc__
 
 
 def test_registries():
