@@ -69,7 +69,7 @@ for mesh in $CONVERGED_MESHES; do
   echo
   echo "## To convergence: \`$(basename "$mesh")\` ($(case "$mesh" in *.off) awk 'NR == 2 {print $2}' "$mesh" ;; *) grep -c '^f ' "$mesh" ;; esac) faces)"
   echo
-  echo "Default options (gradient norm below 1e-3, at most 1000 iterations), \`--injectivity local\`."
+  echo "Default options (gradient norm below 1e-3, 1e-4 for ARAP, at most 1000 iterations), \`--injectivity local\`."
   echo "Each cell: final energy / iterations / optimizer seconds / status."
   echo
   table "$mesh" "" "iterations"
