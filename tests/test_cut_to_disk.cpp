@@ -149,6 +149,25 @@ TEST_CASE("output packing turns charts flat, never mirrors them, keeps them apar
   CHECK(any_overlap(tight, doubled));  // the check sees an overlap
 }
 
+TEST_CASE("one chart turns to its smallest bounding square") {
+  // A 5 x 0.3 rectangle at 0.4 rad: its smallest square stands on a corner,
+  // side (5 + 0.3) / sqrt(2), where lying flat it needs 5.
+  Eigen::MatrixXi F(2, 3);
+  F << 0, 1, 2, 0, 2, 3;
+  Eigen::MatrixXd UV(4, 2);
+  const Eigen::Matrix2d R = Eigen::Rotation2Dd(0.4).toRotationMatrix();
+  const Eigen::Vector2d corners[4] = {{0, 0}, {5, 0}, {5, 0.3}, {0, 0.3}};
+  for (int k = 0; k < 4; ++k) UV.row(k) = (R * corners[k]).transpose();
+  Eigen::MatrixXd kept = UV, turned = UV;
+  akvf::pack_charts(F, {0, 0}, 1, &kept);
+  CHECK(kept == UV);  // without rotate_to_boxes one chart stays as it is
+  akvf::pack_charts(F, {0, 0}, 1, &turned, true);
+  const double side = 5.3 / std::sqrt(2.0);
+  CHECK(akvf::square_coverage(F, turned) == doctest::Approx(1.5 / (side * side)).epsilon(1e-9));
+  CHECK(akvf::count_inverted_triangles(F, turned) == 0);
+  CHECK((turned.row(1) - turned.row(0)).norm() == doctest::Approx(5).epsilon(1e-12));
+}
+
 // The least distance between two segments of the plane that do not cross.
 double segment_distance(Eigen::RowVector2d a, Eigen::RowVector2d b, Eigen::RowVector2d c, Eigen::RowVector2d d) {
   const auto to_segment = [](Eigen::RowVector2d p, Eigen::RowVector2d s, Eigen::RowVector2d t) {

@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -24,16 +25,15 @@ std::vector<std::vector<int>> chart_vertices(const Eigen::MatrixXi& F, const std
   return vertices;
 }
 
-// The angle that turns `points` to their smallest bounding rectangle, which
-// has a side on the convex hull (Freeman and Shapira 1975), lying flat.
-double flat_box_angle(std::vector<Eigen::Vector2d> points) {
+// The convex hull of `points`, counterclockwise (Andrew's monotone chain).
+std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points) {
   std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
   });
   const auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
   };
-  std::vector<Eigen::Vector2d> hull;  // Andrew's monotone chain
+  std::vector<Eigen::Vector2d> hull;
   for (int pass = 0; pass < 2; ++pass) {
     const std::size_t base = hull.size();
     for (const Eigen::Vector2d& p : points) {
@@ -43,24 +43,58 @@ double flat_box_angle(std::vector<Eigen::Vector2d> points) {
     hull.pop_back();
     std::reverse(points.begin(), points.end());
   }
+  return hull;
+}
+
+// The extent of `hull` turned by `angle`.
+Eigen::Vector2d turned_size(const std::vector<Eigen::Vector2d>& hull, double angle) {
+  const Eigen::Rotation2Dd turn(angle);
+  Eigen::Vector2d lo = turn * hull[0], hi = lo;
+  for (const Eigen::Vector2d& p : hull) {
+    lo = lo.cwiseMin(turn * p);
+    hi = hi.cwiseMax(turn * p);
+  }
+  return hi - lo;
+}
+
+// The angle that turns a hull to its smallest bounding rectangle, which has
+// a side on the hull (Freeman and Shapira 1975), lying flat.
+double flat_box_angle(const std::vector<Eigen::Vector2d>& hull) {
   double best_area = std::numeric_limits<double>::infinity(), best_angle = 0;
   for (std::size_t i = 0; i < hull.size(); ++i) {
     const Eigen::Vector2d edge = hull[(i + 1) % hull.size()] - hull[i];
     if (edge.squaredNorm() == 0) continue;
     const double angle = -std::atan2(edge.y(), edge.x());
-    const Eigen::Rotation2Dd turn(angle);
-    Eigen::Vector2d lo = turn * hull[0], hi = lo;
-    for (const Eigen::Vector2d& p : hull) {
-      lo = lo.cwiseMin(turn * p);
-      hi = hi.cwiseMax(turn * p);
-    }
-    const Eigen::Vector2d size = hi - lo;
+    const Eigen::Vector2d size = turned_size(hull, angle);
     if (size.prod() < best_area) {
       best_area = size.prod();
       best_angle = size.y() > size.x() ? angle + M_PI / 2 : angle;
     }
   }
   return best_angle;
+}
+
+// The angle that turns a hull to its smallest bounding square: the larger
+// extent is minimal where a hull side lies flat or where width and height
+// cross, so 1024 angles of a quarter turn, then the best one refined by
+// golden sections, find it to rounding.
+double square_angle(const std::vector<Eigen::Vector2d>& hull) {
+  const auto side = [&](double angle) { return turned_size(hull, angle).maxCoeff(); };
+  const int samples = 1024;
+  const double step = M_PI / 2 / samples;
+  int best = 0;
+  for (int i = 1; i < samples; ++i)
+    if (side(i * step) < side(best * step)) best = i;
+  double a = (best - 1) * step, b = (best + 1) * step;
+  const double golden = (std::sqrt(5.0) - 1) / 2;
+  for (int i = 0; i < 40; ++i) {
+    const double c = b - golden * (b - a), d = a + golden * (b - a);
+    if (side(c) < side(d))
+      b = d;
+    else
+      a = c;
+  }
+  return side(0.5 * (a + b)) < side(best * step) ? 0.5 * (a + b) : best * step;
 }
 
 }  // namespace
@@ -105,16 +139,30 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
 
 void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV,
                  bool rotate_to_boxes, double gutter) {
-  if (num_charts <= 1) return;
+  if (num_charts < 1 || (num_charts == 1 && !rotate_to_boxes)) return;
   const std::vector<std::vector<int>> vertices =
       chart_vertices(F, face_chart, num_charts, static_cast<int>(UV->rows()));
+  // With rotate_to_boxes, each chart is turned to its smallest bounding
+  // rectangle, lying flat, for the rows; the raster also tries it turned to
+  // its smallest bounding square, both by quarters (one chart: the square).
+  const Eigen::MatrixXd given = *UV;
+  // Two sets of turns for the raster: every chart flat, or every chart in
+  // its square, each as it is or a quarter turned.
+  std::array<std::vector<std::vector<double>>, 2> turns;
+  turns[0].resize(num_charts);
+  turns[1].resize(num_charts);
   if (rotate_to_boxes)
     for (int c = 0; c < num_charts; ++c) {
       std::vector<Eigen::Vector2d> points;
       for (int v : vertices[c]) points.push_back(UV->row(v).transpose());
-      const Eigen::Matrix2d turn = Eigen::Rotation2Dd(flat_box_angle(points)).toRotationMatrix();
+      const std::vector<Eigen::Vector2d> hull = convex_hull(points);
+      const double flat = flat_box_angle(hull), square = square_angle(hull);
+      turns[0][c] = {flat, flat + M_PI / 2};
+      turns[1][c] = {square, square + M_PI / 2};
+      const Eigen::Matrix2d turn = Eigen::Rotation2Dd(num_charts == 1 ? square : flat).toRotationMatrix();
       for (int v : vertices[c]) UV->row(v) = (turn * UV->row(v).transpose()).transpose();
     }
+  if (num_charts == 1) return;
   std::vector<Eigen::RowVector2d> low(num_charts), size(num_charts);
   double box_area = 0;
   for (int c = 0; c < num_charts; ++c) {
@@ -176,15 +224,18 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
     double side = rows(row_width, gap, &corner);
     *kept = gap;
     interlocked = false;
-    if (rotate_to_boxes) {  // charts that interlock, when they fit a smaller square so
-      double raster_gap = 0;
-      const double raster_side = raster_pack(F, chart_faces, *UV, least_gap, &placement, &raster_gap);
-      if (raster_side < side) {
-        interlocked = true;
-        side = raster_side;
-        *kept = raster_gap;
+    if (rotate_to_boxes)  // charts that interlock, when they fit a smaller square so
+      for (const auto& chart_turns : turns) {
+        double raster_gap = 0;
+        std::vector<ChartPlacement> trial;
+        const double raster_side = raster_pack(F, chart_faces, given, chart_turns, least_gap, &trial, &raster_gap);
+        if (raster_side < side) {
+          interlocked = true;
+          placement = std::move(trial);
+          side = raster_side;
+          *kept = raster_gap;
+        }
       }
-    }
     return side;
   };
   // The gutter is a share of the square's side, which the gap itself
@@ -195,6 +246,7 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
   double side = layout(gutter * std::sqrt(box_area), &kept);
   for (int round = 0; round < 16 && kept < gutter * side; ++round) side = layout(1.01 * gutter * side, &kept);
   if (interlocked) {
+    *UV = given;
     apply_placement(F, chart_faces, placement, UV);
     return;
   }

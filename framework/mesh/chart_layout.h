@@ -25,10 +25,12 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
 // never a mirror) to its smallest bounding rectangle, lying flat (wider than
 // tall), and the row width is the one, of 33 from the widest chart to all in
 // one row, whose layout fits the smallest square; then, if charts that
-// interlock (raster_packing.h, turned by quarters) fit a smaller square,
+// interlock (raster_packing.h; every chart flat or every chart turned to its
+// smallest bounding square, each by a quarter or not) fit a smaller square,
 // they are placed so instead. Charts end at least `gutter` times the side of
 // the square around them apart (the texture's gutter: texels over its size).
-// The charts keep their scale. No-op for one chart.
+// The charts keep their scale. One chart is only turned, to its smallest
+// bounding square (with `rotate_to_boxes`).
 void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV,
                  bool rotate_to_boxes = false, double gutter = 0);
 

@@ -10,17 +10,9 @@ namespace akvf {
 
 namespace {
 
-Eigen::RowVector2d turned(const Eigen::RowVector2d& p, int quarter_turns) {
-  switch (quarter_turns & 3) {
-    case 1:
-      return {-p.y(), p.x()};
-    case 2:
-      return {-p.x(), -p.y()};
-    case 3:
-      return {p.y(), -p.x()};
-    default:
-      return p;
-  }
+Eigen::RowVector2d turned(const Eigen::RowVector2d& p, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * p.x() - s * p.y(), s * p.x() + c * p.y()};
 }
 
 // One chart in one orientation on the grid: its cells (one row of runs
@@ -52,12 +44,12 @@ bool touches(const std::array<Eigen::RowVector2d, 3>& t, double x0, double y0, d
   return true;
 }
 
-Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Eigen::MatrixXd& UV, int quarter_turns,
+Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Eigen::MatrixXd& UV, double angle,
                double h, int ring) {
   Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (int f : faces)
     for (int k = 0; k < 3; ++k) {
-      const Eigen::RowVector2d p = turned(UV.row(F(f, k)), quarter_turns);
+      const Eigen::RowVector2d p = turned(UV.row(F(f, k)), angle);
       lo = lo.cwiseMin(p);
       hi = hi.cwiseMax(p);
     }
@@ -68,7 +60,7 @@ Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Ei
   std::vector<char> cell(static_cast<std::size_t>(mask.width) * mask.height, 0);
   for (int f : faces) {
     std::array<Eigen::RowVector2d, 3> t;
-    for (int k = 0; k < 3; ++k) t[k] = (turned(UV.row(F(f, k)), quarter_turns) - mask.origin) / h;
+    for (int k = 0; k < 3; ++k) t[k] = (turned(UV.row(F(f, k)), angle) - mask.origin) / h;
     const Eigen::RowVector2d tlo = t[0].cwiseMin(t[1]).cwiseMin(t[2]), thi = t[0].cwiseMax(t[1]).cwiseMax(t[2]);
     for (int y = std::max(0, static_cast<int>(tlo.y())); y <= std::min(mask.height - 1, static_cast<int>(thi.y())); ++y)
       for (int x = std::max(0, static_cast<int>(tlo.x())); x <= std::min(mask.width - 1, static_cast<int>(thi.x()));
@@ -166,7 +158,8 @@ class Atlas {
 }  // namespace
 
 double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,
-                   const Eigen::MatrixXd& UV, double least_gap, std::vector<ChartPlacement>* placement, double* gap) {
+                   const Eigen::MatrixXd& UV, const std::vector<std::vector<double>>& angles, double least_gap,
+                   std::vector<ChartPlacement>* placement, double* gap) {
   const int n = static_cast<int>(chart_faces.size());
   std::vector<double> area(n, 0.0);
   for (int c = 0; c < n; ++c)
@@ -183,13 +176,17 @@ double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>
   // Two grown masks never share a cell, so charts lie at least 2 ring h apart.
   const int ring = std::max(1, static_cast<int>(std::ceil(least_gap / (2 * h))));
   if (gap) *gap = 2 * ring * h;
-  std::vector<std::array<Mask, 2>> masks(n);
+  std::vector<std::vector<Mask>> masks(n);
   long cells = 0;
   int widest = 0;
   for (int c = 0; c < n; ++c) {
-    for (int q = 0; q < 2; ++q) masks[c][q] = rasterize(F, chart_faces[c], UV, q, h, ring);
+    int narrowest = std::numeric_limits<int>::max();
+    for (double angle : angles[c]) {
+      masks[c].push_back(rasterize(F, chart_faces[c], UV, angle, h, ring));
+      narrowest = std::min(narrowest, masks[c].back().width);
+    }
     cells += masks[c][0].cells;
-    widest = std::max(widest, std::min(masks[c][0].width, masks[c][1].width));
+    widest = std::max(widest, narrowest);
   }
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
@@ -202,19 +199,26 @@ double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>
     std::vector<ChartPlacement> trial(n);
     int used_width = 0, used_height = 0;
     for (int c : order) {
+      // The turn that keeps the square around the charts placed so far
+      // smallest, then the one that ends lowest.
       int best_q = -1;
       std::array<int, 2> best_at{};
-      for (int q = 0; q < 2; ++q) {
-        if (masks[c][q].width > width) continue;
-        const std::array<int, 2> at = atlas.first_fit(masks[c][q]);
-        if (best_q < 0 || at[1] + masks[c][q].height < best_at[1] + masks[c][best_q].height) {
+      std::array<int, 2> best_score{};
+      for (int q = 0; q < static_cast<int>(masks[c].size()); ++q) {
+        const Mask& m = masks[c][q];
+        if (m.width > width) continue;
+        const std::array<int, 2> at = atlas.first_fit(m);
+        const std::array<int, 2> score = {
+            std::max(std::max(used_width, at[0] + m.width), std::max(used_height, at[1] + m.height)), at[1] + m.height};
+        if (best_q < 0 || score < best_score) {
           best_q = q;
           best_at = at;
+          best_score = score;
         }
       }
       const Mask& m = masks[c][best_q];
       atlas.place(m, best_at[0], best_at[1]);
-      trial[c].quarter_turns = best_q;
+      trial[c].angle = angles[c][best_q];
       trial[c].offset = Eigen::RowVector2d(best_at[0], best_at[1]) * h - m.origin;
       used_width = std::max(used_width, best_at[0] + m.width);
       used_height = std::max(used_height, best_at[1] + m.height);
@@ -236,7 +240,7 @@ void apply_placement(const Eigen::MatrixXi& F, const std::vector<std::vector<int
       for (int k = 0; k < 3; ++k)
         if (const int v = F(f, k); !moved[v]) {
           moved[v] = 1;
-          UV->row(v) = turned(UV->row(v), placement[c].quarter_turns) + placement[c].offset;
+          UV->row(v) = turned(UV->row(v), placement[c].angle) + placement[c].offset;
         }
 }
 

@@ -4,27 +4,26 @@
 // chart's triangles mark every cell they touch, grown by a ring of cells (the
 // gap between charts); largest chart first, each goes to the first free
 // place in row-major order (lowest row, then leftmost) of an atlas of a
-// fixed width, as given or turned a quarter, whichever ends lower. Several
-// atlas widths are tried; the one that fits the smallest square wins.
+// fixed width, turned by whichever of its candidate angles ends lowest.
+// Several atlas widths are tried; the one that fits the smallest square wins.
 #include <Eigen/Core>
 #include <vector>
 
 namespace akvf {
 
-// How one chart moves: uv -> R(quarter_turns * 90 degrees) uv + offset.
+// How one chart moves: uv -> R(angle) uv + offset.
 struct ChartPlacement {
-  int quarter_turns = 0;
+  double angle = 0;
   Eigen::RowVector2d offset = Eigen::RowVector2d::Zero();
 };
 
 // chart_faces[c]: the rows of F in chart c; UV: the charts as they are (their
-// scale is kept). The gap grows to more cells where one cell would leave
-// charts closer than least_gap (UV's units). Returns the side of the square
-// the placed charts fit in, each chart's placement and, if asked, the least
-// distance between charts the grid guarantees.
+// scale is kept); angles[c]: the turns chart c may take (at least one). The gap grows to more cells where one cell
+// would leave charts closer than least_gap (UV's units). Returns the side of the square the placed charts fit in, each
+// chart's placement and, if asked, the least distance between charts the grid guarantees.
 double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,
-                   const Eigen::MatrixXd& UV, double least_gap, std::vector<ChartPlacement>* placement,
-                   double* gap = nullptr);
+                   const Eigen::MatrixXd& UV, const std::vector<std::vector<double>>& angles, double least_gap,
+                   std::vector<ChartPlacement>* placement, double* gap = nullptr);
 
 // UV after `placement` (the vertices of chart c are those of its faces).
 void apply_placement(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,
