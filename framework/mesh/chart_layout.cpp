@@ -79,6 +79,7 @@ double flat_box_angle(const std::vector<Eigen::Vector2d>& hull) {
 // cross, so 1024 angles of a quarter turn, then the best one refined by
 // golden sections, find it to rounding.
 double square_angle(const std::vector<Eigen::Vector2d>& hull) {
+  if (hull.empty()) return 0;  // the chart's points coincide
   const auto side = [&](double angle) { return turned_size(hull, angle).maxCoeff(); };
   const int samples = 1024;
   const double step = M_PI / 2 / samples;
@@ -143,11 +144,10 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
   const std::vector<std::vector<int>> vertices =
       chart_vertices(F, face_chart, num_charts, static_cast<int>(UV->rows()));
   // With rotate_to_boxes, each chart is turned to its smallest bounding
-  // rectangle, lying flat, for the rows; the raster also tries it turned to
-  // its smallest bounding square, both by quarters (one chart: the square).
+  // rectangle, lying flat, for the rows (one chart: to its smallest bounding
+  // square). The raster gets two sets of turns of the charts as given:
+  // every chart flat, or every chart in its square, each by a quarter or not.
   const Eigen::MatrixXd given = *UV;
-  // Two sets of turns for the raster: every chart flat, or every chart in
-  // its square, each as it is or a quarter turned.
   std::array<std::vector<std::vector<double>>, 2> turns;
   turns[0].resize(num_charts);
   turns[1].resize(num_charts);
