@@ -54,6 +54,7 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.cut = o.cut != Cut::kNone;
   c.seams = o.cut == Cut::kSeams;
   c.max_distortion = o.max_distortion;
+  c.min_coverage = o.min_coverage;
   // A wider gutter would leave the charts little of the texture.
   if (o.gutter * 16 > o.texture_size)
     throw OptionsError("gutter " + number_text(o.gutter) + " is more than 1/16 of texture_size " +

@@ -7,6 +7,7 @@
 
 #include "akvf/catalog.h"
 #include "akvf/error.h"
+#include "akvf/internal/packing_splits.h"
 #include "akvf/internal/preconditioner_settings.h"
 #include "akvf/internal/seam_cutting.h"
 #include "akvf/threads.h"
@@ -177,9 +178,14 @@ void prepend_warm_start(const OptimizerResult& warm, OptimizerResult* result) {
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks) {
   const ThreadLimit threads(config.threads);
-  if (config.seams) return run_with_seams(setup, config, callbacks);
-  ParamRun run = optimize_from_start(setup, config, callbacks);
-  measure_final_map(setup, &run);
+  ParamRun run;
+  if (config.seams) {
+    run = run_with_seams(setup, config, callbacks);
+  } else {
+    run = optimize_from_start(setup, config, callbacks);
+    measure_final_map(setup, &run);
+  }
+  split_for_packing(setup, config, &run);
   return run;
 }
 

@@ -46,6 +46,7 @@ struct Parameterizer::State {
     result.distortion_energy = run.distortion_energy;
     result.seams_added = run.seams.seams;
     result.seam_length = run.seams.seam_length;
+    result.packing_splits = run.packing_splits;
     result.chart_distortion = run.seams.chart_distortion;
     result.distortion_bounded = run.seams.bound_met;
     result.seam_stop_reason = run.seams.stop_reason;

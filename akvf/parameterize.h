@@ -44,6 +44,7 @@ struct ParameterizeOptions {
                                                    // multi-component meshes into disk charts (uv_faces);
                                                    // kSeams: then add seams (max_distortion)
   double max_distortion = 4.2;                     // kSeams: bound on each chart's symmetric Dirichlet energy
+  double min_coverage = 0.6;                       // a cut: charts split until the packing covers this share
   int texture_size = 1024;                         // several charts: the texture's side in texels, and
   double gutter = 2;                               // the least gap between packed charts, in its texels
   Repair repair = Repair::kAuto;                   // kAuto: open edges of 3+ faces, split non-manifold vertices
@@ -106,6 +107,9 @@ struct ParameterizeResult {
   // at most max_distortion (if not, seam_stop_reason says why seams stopped).
   int seams_added = 0;
   double seam_length = 0;
+  // With a cut: the straight cuts that split charts for the packing
+  // (min_coverage).
+  int packing_splits = 0;
   std::vector<double> chart_distortion;
   bool distortion_bounded = false;
   std::string seam_stop_reason;

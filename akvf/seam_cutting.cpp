@@ -25,28 +25,6 @@ constexpr double kRoundGradientTolerance = 1e-2;
 // that one's seam relieves.
 constexpr double kPeakShare = 0.5;
 
-// The symmetric Dirichlet energy of each face at x.
-Eigen::VectorXd face_energy(const ParamSetup& setup, const Eigen::VectorXd& x) {
-  const DistortionObjective2D& objective = *setup.objective;
-  if (objective.density().name() == kBoundedEnergy) return objective.face_distortion(x);
-  const DistortionObjective2D sd(objective.elements(), objective.rest(), energies_2d().create(kBoundedEnergy, {}),
-                                 objective.num_vertices());
-  return sd.face_distortion(x);
-}
-
-// Per chart, the area-weighted mean of the faces' energies.
-std::vector<double> chart_energy(const ParamSetup& setup, const Eigen::VectorXd& energy) {
-  const int charts = setup.disk.num_charts();
-  std::vector<double> sum(charts, 0), area(charts, 0);
-  const Eigen::VectorXd& weight = setup.objective->weights();
-  for (int f = 0; f < energy.size(); ++f) {
-    sum[setup.disk.face_chart[f]] += weight[f] * energy[f];
-    area[setup.disk.face_chart[f]] += weight[f];
-  }
-  for (int c = 0; c < charts; ++c) sum[c] /= area[c];
-  return sum;
-}
-
 // Where the round's seams start: the interior vertices of the charts above
 // the bound whose energy (the area-weighted mean of their faces') is above
 // it too, at least their interior neighbours' (the peaks of the distortion)
@@ -163,6 +141,25 @@ ParamConfig warm(ParamConfig config) {
 
 }  // namespace
 
+Eigen::VectorXd face_symmetric_dirichlet(const ParamSetup& setup, const Eigen::VectorXd& x) {
+  const DistortionObjective2D& objective = *setup.objective;
+  if (objective.density().name() == kBoundedEnergy) return objective.face_distortion(x);
+  const DistortionObjective2D sd(objective.elements(), objective.rest(), energies_2d().create(kBoundedEnergy, {}),
+                                 objective.num_vertices());
+  return sd.face_distortion(x);
+}
+
+std::vector<double> chart_means(const Eigen::VectorXd& weight, const std::vector<int>& face_chart, int num_charts,
+                                const Eigen::VectorXd& energy) {
+  std::vector<double> sum(num_charts, 0), area(num_charts, 0);
+  for (int f = 0; f < energy.size(); ++f) {
+    sum[face_chart[f]] += weight[f] * energy[f];
+    area[face_chart[f]] += weight[f];
+  }
+  for (int c = 0; c < num_charts; ++c) sum[c] /= area[c];
+  return sum;
+}
+
 ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
                         const std::vector<IterationCallback>& callbacks) {
   auto setup = std::make_shared<ParamSetup>(start);
@@ -195,8 +192,9 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
     int since_best = 0;
     for (;;) {
       if (!is_normal_termination(all.status) || all.status == TerminationStatus::kUserStopped) return;
-      const Eigen::VectorXd energy = face_energy(*setup, all.x);
-      report.chart_distortion = chart_energy(*setup, energy);
+      const Eigen::VectorXd energy = face_symmetric_dirichlet(*setup, all.x);
+      report.chart_distortion =
+          chart_means(setup->objective->weights(), setup->disk.face_chart, setup->disk.num_charts(), energy);
       const auto worst = std::max_element(report.chart_distortion.begin(), report.chart_distortion.end());
       report.bound_met = *worst <= config.max_distortion;
       if (report.bound_met) return;

@@ -65,7 +65,7 @@ Json param_summary(const std::string& mesh_file, const ParameterizeOptions& opti
   record["linear_algebra"] = linear_algebra_record(run.preconditioner_statistics, run.preconditioner_report);
   record["overlap"] = Json{{"boundary_crossings", run.boundary_crossings}, {"area_fraction", run.overlap.fraction()}};
   record["distortion_energy"] = run.distortion_energy;
-  if (setup.disk.cut) record["cut"] = cut_record(setup.disk);
+  if (setup.disk.cut) record["cut"] = cut_record(setup.disk, run.packing_splits);
   if (options.cut == Cut::kSeams) record["seams"] = seam_record(run.seams, options.max_distortion);
   if (setup.disk.repair.any() || !setup.disk.removed_faces.empty()) record["repair"] = repair_record(setup.disk);
   if (texture_uv_scale > 0) record["texture_uv_scale"] = texture_uv_scale;
@@ -117,8 +117,9 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   const Eigen::MatrixXi UV_faces = output_uv_faces(final);
   const double coverage = square_coverage(UV_faces, UV);
   if (final.disk.num_charts() > 1)
-    out << count_of(final.disk.num_charts(), "chart") << " packed, covering " << 100 * coverage
-        << " % of the UV square\n";
+    out << count_of(final.disk.num_charts(), "chart") << " packed"
+        << (run.packing_splits > 0 ? " (" + count_of(run.packing_splits, "straight cut") + " for the packing)" : "")
+        << ", covering " << 100 * coverage << " % of the UV square\n";
   double texture_uv_scale = 0;
   if (!outputs.obj.empty()) {
     MeshWriteOptions write_options;

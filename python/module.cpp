@@ -193,6 +193,7 @@ py::dict solve(akvf::Parameterizer& solver, const py::object& uv0, const py::obj
   d["boundary_crossings"] = result.boundary_crossings;
   d["overlap_fraction"] = result.overlap_fraction;
   d["distortion_energy"] = result.distortion_energy;
+  if (solver.options().cut != akvf::Cut::kNone) d["packing_splits"] = result.packing_splits;
   if (solver.options().cut == akvf::Cut::kSeams) {
     d["seams_added"] = result.seams_added;
     d["seam_length"] = result.seam_length;

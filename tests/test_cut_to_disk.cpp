@@ -239,6 +239,56 @@ TEST_CASE("a gutter keeps packed charts that share of the square apart, in rows 
   CHECK(akvf::square_coverage(ells.F, interlocked) > 1.3 * akvf::square_coverage(ells.F, rows));
 }
 
+// A flat comb of unit squares: a base 1 high and `teeth` teeth 5 long.
+TriMesh comb(int teeth) {
+  const int width = 2 * teeth - 1, height = 6;
+  TriMesh m;
+  m.V.resize((width + 1) * (height + 1), 3);
+  for (int y = 0; y <= height; ++y)
+    for (int x = 0; x <= width; ++x) m.V.row(y * (width + 1) + x) << x, y, 0;
+  std::vector<Eigen::Vector3i> faces;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      if (y > 0 && x % 2 == 1) continue;  // between the teeth
+      const int a = y * (width + 1) + x, b = a + 1, c = a + width + 1, d = c + 1;
+      faces.push_back({a, b, d});
+      faces.push_back({a, d, c});
+    }
+  m.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (std::size_t f = 0; f < faces.size(); ++f) m.F.row(f) = faces[f].transpose();
+  return m;
+}
+
+TEST_CASE("charts split for the packing: the map kept, the square better covered") {
+  // Two combs: their teeth leave most of their squares empty.
+  const TriMesh combs = akvf::test::side_by_side(comb(5), comb(4), 12);
+  akvf::ParameterizeOptions options;
+  options.cut = akvf::Cut::kAuto;
+  options.min_coverage = 0;
+  const akvf::ParameterizeResult whole = akvf::parameterize(combs.V, combs.F, options);
+  options.min_coverage = 0.6;
+  const akvf::ParameterizeResult split = akvf::parameterize(combs.V, combs.F, options);
+  CHECK(whole.packing_splits == 0);
+  CHECK(split.packing_splits > 0);
+  const double before = akvf::square_coverage(whole.uv_faces, whole.uv);
+  const double after = akvf::square_coverage(split.uv_faces, split.uv);
+  CAPTURE(before);
+  CAPTURE(after);
+  CHECK(after > 1.01 * before);
+  REQUIRE(split.uv_faces.rows() == combs.num_faces());
+  CHECK(akvf::count_inverted_triangles(split.uv_faces, split.uv) == 0);
+  CHECK_FALSE(any_overlap(split.uv, split.uv_faces));
+  // Every triangle as it was: the same side lengths, up to the packing's
+  // common scale.
+  const auto side = [](const akvf::ParameterizeResult& r, int f, int k) {
+    return (r.uv.row(r.uv_faces(f, (k + 1) % 3)) - r.uv.row(r.uv_faces(f, k))).norm();
+  };
+  const double scale = side(split, 0, 0) / side(whole, 0, 0);
+  for (int f = 0; f < combs.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) CHECK(side(split, f, k) == doctest::Approx(scale * side(whole, f, k)).epsilon(1e-9));
+  CHECK(split.energy() == whole.energy());
+}
+
 TEST_CASE("without the cut the default is unchanged: uv per vertex, uv_faces = F") {
   const TriMesh grid = akvf::test::bumpy_disk(8, 8);
   akvf::ParameterizeOptions options;

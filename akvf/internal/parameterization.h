@@ -35,6 +35,9 @@ struct ParamConfig {
   // most `max_distortion` (akvf/internal/seam_cutting.h).
   bool seams = false;
   double max_distortion = 4.2;
+  // With a cut, charts are split until their packing covers this share of
+  // the UV square (akvf/internal/packing_splits.h); 0: never.
+  double min_coverage = 0.6;
   // Several charts are packed at least this share of the square's side
   // apart (the gutter over the texture's size).
   double gutter = 2.0 / 1024;
@@ -108,10 +111,11 @@ struct ParamRun {
   // seams), and what the seams did. Null / empty otherwise.
   std::shared_ptr<const ParamSetup> seamed;
   SeamReport seams;
+  int packing_splits = 0;  // cuts split_for_packing made (the final problem is then run.seamed)
 };
 
-// The problem run.result.x is a map of: run.seamed if seams were added,
-// else `setup` itself.
+// The problem run.result.x is a map of: run.seamed if seams were added or
+// charts split for the packing, else `setup` itself.
 inline const ParamSetup& final_setup(const ParamSetup& setup, const ParamRun& run) {
   return run.seamed ? *run.seamed : setup;
 }

@@ -16,6 +16,14 @@ namespace akvf {
 ParamRun run_with_seams(const ParamSetup& setup, const ParamConfig& config,
                         const std::vector<IterationCallback>& callbacks);
 
+// The symmetric Dirichlet energy of each face of setup's mesh at x.
+Eigen::VectorXd face_symmetric_dirichlet(const ParamSetup& setup, const Eigen::VectorXd& x);
+
+// Per chart of face_chart (num_charts of them), the mean of the faces'
+// `energy` weighted by `weight` (their areas).
+std::vector<double> chart_means(const Eigen::VectorXd& weight, const std::vector<int>& face_chart, int num_charts,
+                                const Eigen::VectorXd& energy);
+
 // What the seams did, in words: "102 seams added, 4.45 sqrt(area) of seams in
 // all; symmetric Dirichlet at most 4.2 in every chart (largest 4.189)".
 std::string seam_description(const SeamReport& report, double max_distortion);

@@ -84,9 +84,10 @@ Json linear_algebra_record(const PreconditionerStatistics& statistics, const std
               {"report", report}};
 }
 
-Json cut_record(const DiskMesh& disk) {
+Json cut_record(const DiskMesh& disk, int packing_splits) {
   return {{"charts", disk.num_charts()},
           {"cut_edges", disk.cut_edges},
+          {"packing_splits", packing_splits},
           {"genus", disk.chart_genus},
           {"boundary_loops", disk.chart_input_loops}};
 }

@@ -40,8 +40,9 @@ Json run_record(const OptimizerResult& result, double lower_bound, int vertices,
 Json linear_algebra_record(const PreconditionerStatistics& statistics, const std::string& report);
 
 // What the automatic cut did (--cut auto): charts, cut_edges, and per chart
-// the genus and boundary loops of its component before the cut.
-Json cut_record(const DiskMesh& disk);
+// the genus and boundary loops of its component before the cut; and the
+// straight cuts that split charts for the packing (min_coverage).
+Json cut_record(const DiskMesh& disk, int packing_splits);
 // What --cut seams did.
 Json seam_record(const SeamReport& seams, double max_distortion);
 // What --repair auto did: counts, and the first few edges, vertices and

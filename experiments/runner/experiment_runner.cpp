@@ -98,7 +98,7 @@ CaseResult run_param_case(const ExperimentCase& c, const ManifestMesh& mesh, con
   out.lower_bound = final.objective->lower_bound();
   out.vertices = final.disk.mesh.num_vertices();
   out.elements = final.disk.mesh.num_faces();
-  if (final.disk.cut) out.cut = cut_record(final.disk);
+  if (final.disk.cut) out.cut = cut_record(final.disk, run.packing_splits);
   if (config.seams) out.seams = seam_record(run.seams, config.max_distortion);
   if (views) out.view = view_of(final, out.result.x, c.mesh_label + " - " + c.method_label);
   return out;

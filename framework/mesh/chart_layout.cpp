@@ -1,5 +1,6 @@
 #include "framework/mesh/chart_layout.h"
 
+#include "framework/mesh/convex_hull.h"
 #include "framework/mesh/raster_packing.h"
 
 #include <Eigen/Geometry>
@@ -23,27 +24,6 @@ std::vector<std::vector<int>> chart_vertices(const Eigen::MatrixXi& F, const std
   for (int v = 0; v < num_vertices; ++v)
     if (chart_of[v] >= 0) vertices[chart_of[v]].push_back(v);
   return vertices;
-}
-
-// The convex hull of `points`, counterclockwise (Andrew's monotone chain).
-std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points) {
-  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  const auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
-  };
-  std::vector<Eigen::Vector2d> hull;
-  for (int pass = 0; pass < 2; ++pass) {
-    const std::size_t base = hull.size();
-    for (const Eigen::Vector2d& p : points) {
-      while (hull.size() >= base + 2 && cross(hull[hull.size() - 2], hull.back(), p) <= 0) hull.pop_back();
-      hull.push_back(p);
-    }
-    hull.pop_back();
-    std::reverse(points.begin(), points.end());
-  }
-  return hull;
 }
 
 // The extent of `hull` turned by `angle`.

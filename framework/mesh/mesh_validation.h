@@ -23,7 +23,7 @@ struct DiskMesh {
   bool cut = false;                                 // the automatic cut was asked for
   int cut_edges = 0;                                // input edges opened by it
   double cut_length = 0;                            // their total length
-  std::vector<int> chart_genus, chart_input_loops;  // per chart, before the cut
+  std::vector<int> chart_genus, chart_input_loops;  // per chart, of its component before the cut
   ManifoldRepair repair;                            // what was repaired (repair asked for)
   // Faces set aside with repair (unusable_faces.h): mesh face i is input face
   // input_face[i] (empty: the same), and removed_faces are the others, their

@@ -78,16 +78,16 @@ std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<
   return paths;
 }
 
-std::vector<int> open_seams(DiskMesh* disk, const std::vector<std::vector<int>>& paths) {
+namespace {
+
+// Opens `disk` along the edges whose keys (undirected_edge_key) are in
+// `seam`, of total 3D length `length`, its faces then in the charts
+// `face_chart` (num_charts of them, each a disk). Returns, for every new
+// vertex, the vertex of the old mesh it copies.
+std::vector<int> open_edges(DiskMesh* disk, const std::unordered_set<std::int64_t>& seam, double length,
+                            std::vector<int> face_chart, int num_charts) {
   TriMesh& mesh = disk->mesh;
   const int nv = mesh.num_vertices(), nf = mesh.num_faces();
-  std::unordered_set<std::int64_t> seam;
-  double length = 0;
-  for (const std::vector<int>& path : paths)
-    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-      seam.insert(undirected_edge_key(path[i], path[i + 1], nv));
-      length += (mesh.V.row(path[i]) - mesh.V.row(path[i + 1])).norm();
-    }
   // Every interior edge joins its two faces, except the seam's.
   std::unordered_map<std::int64_t, int> first_face;
   first_face.reserve(3 * static_cast<std::size_t>(nf));
@@ -115,11 +115,11 @@ std::vector<int> open_seams(DiskMesh* disk, const std::vector<std::vector<int>>&
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) opened.F(f, k) = copies.copy_of_corner[3 * f + k];
 
-  // One loop per chart, in chart order (each chart is still a disk).
+  // One loop per chart, in chart order (each chart is a disk).
   std::vector<int> chart_of_vertex(opened.num_vertices(), 0);
   for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) chart_of_vertex[opened.F(f, k)] = disk->face_chart[f];
-  std::vector<std::vector<int>> loops(disk->num_charts());
+    for (int k = 0; k < 3; ++k) chart_of_vertex[opened.F(f, k)] = face_chart[f];
+  std::vector<std::vector<int>> loops(num_charts);
   for (auto& loop : boundary_loops(edge_topology(opened.F), opened.num_vertices()))
     loops[chart_of_vertex[loop.front()]] = std::move(loop);
 
@@ -131,10 +131,53 @@ std::vector<int> open_seams(DiskMesh* disk, const std::vector<std::vector<int>>&
   mesh = std::move(opened);
   disk->input_vertex = std::move(input_vertex);
   disk->boundary_loops = std::move(loops);
+  disk->face_chart = std::move(face_chart);
   disk->cut_edges += static_cast<int>(seam.size());
   disk->cut_length += length;
   disk->cut = true;
   return copies.source_vertex;
+}
+
+}  // namespace
+
+std::vector<int> open_seams(DiskMesh* disk, const std::vector<std::vector<int>>& paths) {
+  const TriMesh& mesh = disk->mesh;
+  const int nv = mesh.num_vertices();
+  std::unordered_set<std::int64_t> seam;
+  double length = 0;
+  for (const std::vector<int>& path : paths)
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      seam.insert(undirected_edge_key(path[i], path[i + 1], nv));
+      length += (mesh.V.row(path[i]) - mesh.V.row(path[i + 1])).norm();
+    }
+  return open_edges(disk, seam, length, disk->face_chart, disk->num_charts());
+}
+
+std::vector<int> split_charts(DiskMesh* disk, const std::vector<int>& face_chart, int num_charts) {
+  const TriMesh& mesh = disk->mesh;
+  const int nv = mesh.num_vertices();
+  std::unordered_map<std::int64_t, int> first_face;
+  std::unordered_set<std::int64_t> seam;
+  double length = 0;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
+      const std::int64_t key = undirected_edge_key(a, b, nv);
+      const auto [it, inserted] = first_face.emplace(key, f);
+      if (!inserted && face_chart[it->second] != face_chart[f] && seam.insert(key).second)
+        length += (mesh.V.row(a) - mesh.V.row(b)).norm();
+    }
+  // Each piece keeps what its chart was before the cut.
+  std::vector<int> genus(num_charts, 0), input_loops(num_charts, 0);
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const int old_chart = disk->face_chart[f];
+    if (old_chart < static_cast<int>(disk->chart_genus.size())) genus[face_chart[f]] = disk->chart_genus[old_chart];
+    if (old_chart < static_cast<int>(disk->chart_input_loops.size()))
+      input_loops[face_chart[f]] = disk->chart_input_loops[old_chart];
+  }
+  if (!disk->chart_genus.empty()) disk->chart_genus = std::move(genus);
+  if (!disk->chart_input_loops.empty()) disk->chart_input_loops = std::move(input_loops);
+  return open_edges(disk, seam, length, face_chart, num_charts);
 }
 
 }  // namespace akvf

@@ -33,4 +33,10 @@ std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<
 // new vertex, the vertex of the old mesh it copies (ascending).
 std::vector<int> open_seams(DiskMesh* disk, const std::vector<std::vector<int>>& paths);
 
+// Opens `disk` along every edge between faces of different charts of
+// `face_chart` (num_charts charts, each a disk: a partition that refines
+// disk->face_chart), which becomes its face_chart; updated and returned as
+// open_seams does.
+std::vector<int> split_charts(DiskMesh* disk, const std::vector<int>& face_chart, int num_charts);
+
 }  // namespace akvf

@@ -61,9 +61,11 @@ class Result:
     ``overlap_fraction`` (the final map's self-overlap per chart, 0 with
     injectivity="global") and ``distortion_energy`` (the energy of ``uv``:
     ``energy`` less the boundary barrier that holds it off an overlap);
-    with cut="seams" also ``seams_added``, ``seam_length`` (over the square
-    root of the area), ``chart_distortion`` (each chart's symmetric
-    Dirichlet energy), ``distortion_bounded`` and ``seam_stop_reason``.
+    with a cut ``packing_splits`` (straight cuts that split charts for the
+    packing, ``min_coverage``); with cut="seams" also ``seams_added``,
+    ``seam_length`` (over the square root of the area), ``chart_distortion``
+    (each chart's symmetric Dirichlet energy), ``distortion_bounded`` and
+    ``seam_stop_reason``.
     """
 
     def __init__(self, fields):

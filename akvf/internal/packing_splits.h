@@ -1,0 +1,19 @@
+#pragma once
+// Charts split until their packing covers ParamConfig::min_coverage of the
+// UV square (framework/mesh/chart_splitting.h): each round, of the charts
+// in order of the area their convex hull leaves empty, the first whose best
+// straight cut raises the packed coverage is cut; with --cut seams only
+// cuts whose pieces keep the distortion bound count. The map is unchanged;
+// docs/design.md, "Packing".
+#include "akvf/internal/parameterization.h"
+
+namespace akvf {
+
+// After a run with a cut (config.cut): if its packing covers less than
+// config.min_coverage, run->seamed becomes the split problem (the final
+// one's, its mesh opened along the cuts), run->result.x the map of it, and
+// run->packing_splits the number of cuts; the final map's measures and,
+// with seams, the per-chart distortion and seam length follow.
+void split_for_packing(const ParamSetup& setup, const ParamConfig& config, ParamRun* run);
+
+}  // namespace akvf

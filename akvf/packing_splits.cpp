@@ -1,0 +1,101 @@
+#include "akvf/internal/packing_splits.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "akvf/internal/seam_cutting.h"
+#include "framework/mesh/chart_layout.h"
+#include "framework/mesh/chart_splitting.h"
+#include "framework/mesh/seam_opening.h"
+
+namespace akvf {
+
+namespace {
+
+// Each round packs the charts once per chart it tries: the rounds are
+// bounded so that thousands of charts stay within seconds.
+constexpr int kMaxSplits = 32;
+// A cut adds seams: it is made only if the packing then covers at least
+// 1 % more of the square.
+constexpr double kLeastGain = 1.01;
+// The cuts of a chart, least waste first, each round packs to compare.
+constexpr int kCutsPerChart = 4;
+// The charts each round tries, most wasteful first (until one cut of one
+// raises the coverage).
+constexpr int kChartsPerRound = 12;
+
+double packed_coverage(const DiskMesh& disk, Eigen::MatrixXd UV, double gutter) {
+  pack_charts(disk.mesh.F, disk.face_chart, disk.num_charts(), &UV, true, gutter);
+  return square_coverage(disk.mesh.F, UV);
+}
+
+}  // namespace
+
+void split_for_packing(const ParamSetup& setup, const ParamConfig& config, ParamRun* run) {
+  if (!config.cut || !(config.min_coverage > 0) || run->result.x.size() == 0) return;
+  const ParamSetup& start = final_setup(setup, *run);
+  DiskMesh disk = start.disk;
+  Eigen::MatrixXd UV = unstack_uv(run->result.x);
+  double coverage = packed_coverage(disk, UV, start.gutter);
+  // Faces keep their rows through the cuts: their energies and areas too.
+  const Eigen::VectorXd energy = config.seams ? face_symmetric_dirichlet(start, run->result.x) : Eigen::VectorXd();
+  const Eigen::VectorXd& weight = start.objective->weights();
+  int splits = 0;
+  while (splits < kMaxSplits && coverage < config.min_coverage) {
+    const int charts = disk.num_charts();
+    const std::vector<double> waste = chart_waste(disk.mesh.F, UV, disk.face_chart, charts);
+    std::vector<int> order(charts);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return waste[a] > waste[b]; });
+    bool split = false;
+    double best_coverage = 0;
+    DiskMesh best_disk;
+    Eigen::MatrixXd best_uv;
+    for (int i = 0; i < std::min(charts, kChartsPerRound) && !split; ++i) {
+      const int chart = order[i];
+      const auto keeps_bound = [&](const ChartSplit& s) {
+        if (!config.seams) return true;
+        const std::vector<double> mean = chart_means(weight, s.face_chart, s.num_charts, energy);
+        for (int c = 0; c < s.num_charts; ++c)
+          if ((c == chart || c >= charts) && mean[c] > config.max_distortion) return false;
+        return true;
+      };
+      for (const ChartSplit& cut :
+           straight_splits(disk.mesh.F, UV, disk.face_chart, charts, chart, kCutsPerChart, keeps_bound)) {
+        DiskMesh trial = disk;
+        const std::vector<int> source = split_charts(&trial, cut.face_chart, cut.num_charts);
+        Eigen::MatrixXd trial_uv(static_cast<Eigen::Index>(source.size()), 2);
+        for (std::size_t v = 0; v < source.size(); ++v) trial_uv.row(v) = UV.row(source[v]);
+        const double trial_coverage = packed_coverage(trial, trial_uv, start.gutter);
+        if (trial_coverage < kLeastGain * std::max(coverage, best_coverage)) continue;
+        best_coverage = trial_coverage;
+        best_disk = std::move(trial);
+        best_uv = std::move(trial_uv);
+        split = true;
+      }
+    }
+    if (split) {
+      disk = std::move(best_disk);
+      UV = std::move(best_uv);
+      coverage = best_coverage;
+      ++splits;
+    }
+    if (!split) break;
+  }
+  if (splits == 0) return;
+  auto split_setup = std::make_shared<ParamSetup>(start);
+  split_setup->disk = std::move(disk);
+  rebuild_problem(config, split_setup.get());
+  split_setup->x0 = stack_uv(UV);
+  run->result.x = split_setup->x0;
+  measure_final_map(*split_setup, run);
+  if (config.seams) {
+    run->seams.chart_distortion =
+        chart_means(weight, split_setup->disk.face_chart, split_setup->disk.num_charts(), energy);
+    run->seams.seam_length = split_setup->disk.cut_length * split_setup->normalization.scale;
+  }
+  run->packing_splits = splits;
+  run->seamed = std::move(split_setup);
+}
+
+}  // namespace akvf

@@ -1,0 +1,36 @@
+#pragma once
+// Charts split for packing: a chart that branches (legs, fingers) leaves
+// most of its bounding square empty, which no rigid packing fills. A
+// straight cut across it, along the map's own edges, gives pieces that pack
+// closer; the map itself, and so every triangle's distortion, is unchanged.
+#include <Eigen/Core>
+#include <functional>
+#include <vector>
+
+namespace akvf {
+
+// Per chart, the area of its convex hull in UV less its own: what it leaves
+// empty however it is packed.
+std::vector<double> chart_waste(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, const std::vector<int>& face_chart,
+                                int num_charts);
+
+// A refinement of face_chart: chart `chart` in pieces, the others kept
+// (numbered as before; new pieces after them).
+struct ChartSplit {
+  std::vector<int> face_chart;
+  int num_charts = 0;
+  double waste = 0;  // the pieces' chart_waste, summed
+};
+
+// Of the straight lines across chart `chart` (16 directions, 15 offsets
+// each between the extremes of its faces' centroids), the `count` whose
+// pieces waste least, least first: the faces on each side (by centroid),
+// each connected set of them across shared edges a piece. Only splits whose
+// pieces are all disks (Euler characteristic 1) and that `accept` takes
+// count. F is the cut mesh's (charts share no vertex), UV one row per
+// vertex.
+std::vector<ChartSplit> straight_splits(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV,
+                                        const std::vector<int>& face_chart, int num_charts, int chart, int count,
+                                        const std::function<bool(const ChartSplit&)>& accept);
+
+}  // namespace akvf
