@@ -1,6 +1,7 @@
 #include "akvf/internal/packing_splits.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "akvf/internal/seam_cutting.h"
@@ -22,7 +23,7 @@ constexpr double kLeastGain = 1.01;
 constexpr int kCutsPerChart = 4;
 // The charts each round tries, most wasteful first (until one cut of one
 // raises the coverage).
-constexpr int kChartsPerRound = 12;
+constexpr int kChartsPerRound = 4;
 
 double packed_coverage(const DiskMesh& disk, Eigen::MatrixXd UV, double gutter) {
   pack_charts(disk.mesh.F, disk.face_chart, disk.num_charts(), &UV, true, gutter);
@@ -37,6 +38,12 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config, Param
   DiskMesh disk = start.disk;
   Eigen::MatrixXd UV = unstack_uv(run->result.x);
   double coverage = packed_coverage(disk, UV, start.gutter);
+  double area = 0;  // of the map
+  for (int f = 0; f < disk.mesh.num_faces(); ++f) {
+    const Eigen::RowVector2d a = UV.row(disk.mesh.F(f, 1)) - UV.row(disk.mesh.F(f, 0));
+    const Eigen::RowVector2d b = UV.row(disk.mesh.F(f, 2)) - UV.row(disk.mesh.F(f, 0));
+    area += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+  }
   // Faces keep their rows through the cuts: their energies and areas too.
   const Eigen::VectorXd energy = config.seams ? face_symmetric_dirichlet(start, run->result.x) : Eigen::VectorXd();
   const Eigen::VectorXd& weight = start.objective->weights();
@@ -51,7 +58,10 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config, Param
     double best_coverage = 0;
     DiskMesh best_disk;
     Eigen::MatrixXd best_uv;
-    for (int i = 0; i < std::min(charts, kChartsPerRound) && !split; ++i) {
+    // A cut frees at most the area its chart's hull leaves empty: a chart
+    // that leaves less than the gain asked of the square cannot give it.
+    const double least_waste = (kLeastGain - 1) * area / coverage;
+    for (int i = 0; i < std::min(charts, kChartsPerRound) && !split && waste[order[i]] >= least_waste; ++i) {
       const int chart = order[i];
       const auto keeps_bound = [&](const ChartSplit& s) {
         if (!config.seams) return true;

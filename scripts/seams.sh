@@ -11,7 +11,7 @@ source scripts/shared_meshes.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-echo "| mesh | faces | --cut auto: energy | --cut seams: seams added, seam length / sqrt(area), largest chart energy, inverted, overlap, optimizer s, wall s |"
+echo "| mesh | faces | --cut auto: energy | --cut seams: seams added, charts (straight cuts for the packing), seam length / sqrt(area), largest chart energy, coverage, inverted, overlap, optimizer s, wall s |"
 echo "|---|---|---|---|"
 meshes=("$DATA/tri/cow_closed.off" "$DATA/tri/bunny_closed.off" "$DATA/tri/camelhead.off")
 if [ "${1:-}" = "--large" ]; then
@@ -51,8 +51,10 @@ import json, sys
 mesh, auto, seams, wall = sys.argv[1], json.load(open(sys.argv[2])), json.load(open(sys.argv[3])), float(sys.argv[4])
 s, o = seams["seams"], seams["overlap"]
 overlap = "none" if o["boundary_crossings"] == 0 and o["area_fraction"] == 0 else "%d crossings" % o["boundary_crossings"]
-print("| %s | %d | %.4f | %d, %.2f, %.4f, %d, %s, %.2f, %.2f |" % (
-    mesh, seams["elements"], auto["distortion_energy"], s["added"], s["seam_length"], max(s["chart_distortion"]),
-    seams["max_flips"], overlap, seams["seconds"], wall))
+c = seams["cut"]
+print("| %s | %d | %.4f | %d, %d (%d), %.2f, %.4f, %.1f %%, %d, %s, %.2f, %.2f |" % (
+    mesh, seams["elements"], auto["distortion_energy"], s["added"], c["charts"], c["packing_splits"],
+    s["seam_length"], max(s["chart_distortion"]), 100 * seams["uv_coverage"], seams["max_flips"], overlap,
+    seams["seconds"], wall))
 PY
 done
