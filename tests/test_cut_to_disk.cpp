@@ -5,14 +5,17 @@
 
 #include <Eigen/Geometry>
 #include <fstream>
+#include <numeric>
 #include <sstream>
 
 #include "akvf/parameterize.h"
 #include "framework/mesh/chart_layout.h"
+#include "framework/mesh/chart_splitting.h"
 #include "framework/mesh/cut_to_disk.h"
 #include "framework/mesh/initialization.h"
 #include "framework/mesh/mesh_topology.h"
 #include "framework/mesh/mesh_validation.h"
+#include "framework/mesh/seam_opening.h"
 #include "framework/mesh/uv_overlap.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
@@ -257,6 +260,43 @@ TriMesh comb(int teeth) {
   m.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
   for (std::size_t f = 0; f < faces.size(); ++f) m.F.row(f) = faces[f].transpose();
   return m;
+}
+
+TEST_CASE("straight cuts of a comb: least waste first, every piece a disk, opened along the edges between them") {
+  const TriMesh m = comb(5);
+  const Eigen::MatrixXd UV = m.V.leftCols(2);
+  const std::vector<int> one(m.num_faces(), 0);
+  const double whole = akvf::chart_waste(m.F, UV, one, 1)[0];
+  const auto splits = akvf::straight_splits(m.F, UV, one, 1, 0, 4, [](const akvf::ChartSplit&) { return true; });
+  REQUIRE(splits.size() == 4);
+  for (std::size_t i = 0; i < splits.size(); ++i) {
+    CAPTURE(i);
+    const akvf::ChartSplit& s = splits[i];
+    CHECK(s.num_charts >= 2);
+    if (i > 0) CHECK(s.waste >= splits[i - 1].waste);
+    const std::vector<double> waste = akvf::chart_waste(m.F, UV, s.face_chart, s.num_charts);
+    CHECK(std::accumulate(waste.begin(), waste.end(), 0.0) == doctest::Approx(s.waste));
+  }
+  CHECK(splits[0].waste < 0.5 * whole);  // the teeth cut off: the pieces nearly convex
+  CHECK(akvf::straight_splits(m.F, UV, one, 1, 0, 4, [](const akvf::ChartSplit&) { return false; }).empty());
+
+  akvf::DiskMesh disk = akvf::prepare_disk_mesh(m, "comb", true);
+  const int edges = disk.cut_edges;
+  const std::vector<int> source = akvf::split_charts(&disk, splits[0].face_chart, splits[0].num_charts);
+  CHECK(disk.num_charts() == splits[0].num_charts);
+  CHECK(disk.face_chart == splits[0].face_chart);
+  CHECK(disk.cut_edges > edges);
+  REQUIRE(static_cast<int>(source.size()) == disk.mesh.num_vertices());
+  for (const auto& loop : disk.boundary_loops) CHECK(loop.size() >= 3);
+  // Charts share no vertex, and each vertex copies one of the same place.
+  std::vector<int> chart_of(disk.mesh.num_vertices(), -1);
+  for (int f = 0; f < disk.mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      int& c = chart_of[disk.mesh.F(f, k)];
+      CHECK((c < 0 || c == disk.face_chart[f]));
+      c = disk.face_chart[f];
+    }
+  for (int v = 0; v < disk.mesh.num_vertices(); ++v) CHECK(disk.mesh.V.row(v) == m.V.row(source[v]));
 }
 
 TEST_CASE("charts split for the packing: the map kept, the square better covered") {
