@@ -92,7 +92,10 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config, Param
     }
     if (!split) break;
   }
-  if (splits == 0) return;
+  // One chart (a disk, or seams that bound the distortion in one) is kept
+  // whole unless its pieces reach the coverage: a partial gain is not worth
+  // turning it into an atlas.
+  if (splits == 0 || (start.disk.num_charts() == 1 && coverage < config.min_coverage)) return;
   auto split_setup = std::make_shared<ParamSetup>(start);
   split_setup->disk = std::move(disk);
   rebuild_problem(config, split_setup.get());

@@ -2,9 +2,10 @@
 // Charts split until their packing covers ParamConfig::min_coverage of the
 // UV square (framework/mesh/chart_splitting.h): each round, of the charts
 // in order of the area their convex hull leaves empty, the first whose best
-// straight cut raises the packed coverage is cut; with --cut seams only
-// cuts whose pieces keep the distortion bound count. The map is unchanged;
-// docs/design.md, "Packing".
+// straight cut raises the packed coverage by 1 % is cut; with --cut seams
+// only cuts whose pieces keep the distortion bound count. A single chart is
+// split only if its pieces reach min_coverage. The map is unchanged;
+// docs/design.md, "Cutting closed and higher-genus meshes".
 #include "akvf/internal/parameterization.h"
 
 namespace akvf {
