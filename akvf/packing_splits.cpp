@@ -1,7 +1,6 @@
 #include "akvf/internal/packing_splits.h"
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 
 #include "akvf/internal/seam_cutting.h"
@@ -13,11 +12,12 @@ namespace akvf {
 
 namespace {
 
-// Each round packs the charts once per chart it tries: the rounds are
-// bounded so that thousands of charts stay within seconds.
+// Each round packs the charts once per cut it tries (at most
+// kChartsPerRound x kCutsPerChart): the rounds are bounded so that a large
+// atlas stays within seconds.
 constexpr int kMaxSplits = 32;
-// A cut adds seams: it is made only if the packing then covers at least
-// 1 % more of the square.
+// A cut adds seams: it is made only if the packing then covers 1 % more
+// (relative) than before.
 constexpr double kLeastGain = 1.01;
 // The cuts of a chart, least waste first, each round packs to compare.
 constexpr int kCutsPerChart = 4;
@@ -38,12 +38,7 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config, Param
   DiskMesh disk = start.disk;
   Eigen::MatrixXd UV = unstack_uv(run->result.x);
   double coverage = packed_coverage(disk, UV, start.gutter);
-  double area = 0;  // of the map
-  for (int f = 0; f < disk.mesh.num_faces(); ++f) {
-    const Eigen::RowVector2d a = UV.row(disk.mesh.F(f, 1)) - UV.row(disk.mesh.F(f, 0));
-    const Eigen::RowVector2d b = UV.row(disk.mesh.F(f, 2)) - UV.row(disk.mesh.F(f, 0));
-    area += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
-  }
+  const double area = map_area(disk.mesh.F, UV);
   // Faces keep their rows through the cuts: their energies and areas too.
   const Eigen::VectorXd energy = config.seams ? face_symmetric_dirichlet(start, run->result.x) : Eigen::VectorXd();
   const Eigen::VectorXd& weight = start.objective->weights();
@@ -84,13 +79,11 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config, Param
         split = true;
       }
     }
-    if (split) {
-      disk = std::move(best_disk);
-      UV = std::move(best_uv);
-      coverage = best_coverage;
-      ++splits;
-    }
     if (!split) break;
+    disk = std::move(best_disk);
+    UV = std::move(best_uv);
+    coverage = best_coverage;
+    ++splits;
   }
   // One chart (a disk, or seams that bound the distortion in one) is kept
   // whole unless its pieces reach the coverage: a partial gain is not worth

@@ -59,6 +59,12 @@ bool is_disk(const Eigen::MatrixXi& F, const std::vector<int>& faces, int num_ve
 
 }  // namespace
 
+double map_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV) {
+  double area = 0;
+  for (int f = 0; f < F.rows(); ++f) area += uv_area(F, UV, f);
+  return area;
+}
+
 std::vector<double> chart_waste(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, const std::vector<int>& face_chart,
                                 int num_charts) {
   std::vector<std::vector<int>> faces(num_charts);
