@@ -7,7 +7,6 @@
 #include <limits>
 #include <numeric>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "framework/mesh/convex_hull.h"
 #include "framework/mesh/mesh_topology.h"
@@ -44,19 +43,6 @@ int find(std::vector<int>& parent, int a) {
   return a;
 }
 
-// Whether the faces form a disk: V - E + F = 1 (they are connected, and
-// part of a disk, so of genus 0 with one boundary loop).
-bool is_disk(const Eigen::MatrixXi& F, const std::vector<int>& faces, int num_vertices) {
-  std::unordered_set<int> vertices;
-  std::unordered_set<std::int64_t> edges;
-  for (int f : faces)
-    for (int k = 0; k < 3; ++k) {
-      vertices.insert(F(f, k));
-      edges.insert(undirected_edge_key(F(f, k), F(f, (k + 1) % 3), num_vertices));
-    }
-  return static_cast<long>(vertices.size()) - static_cast<long>(edges.size()) + static_cast<long>(faces.size()) == 1;
-}
-
 }  // namespace
 
 double map_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV) {
@@ -82,23 +68,35 @@ std::vector<ChartSplit> straight_splits(const Eigen::MatrixXi& F, const Eigen::M
   if (faces.size() < 2) return best;
   const int n = static_cast<int>(faces.size());
   const int num_vertices = static_cast<int>(UV.rows());
-  // The chart's interior edges, as pairs of its faces (local numbers).
-  std::vector<std::array<int, 2>> joins;
+  // The chart's edges: interior ones join two of its faces (local numbers),
+  // boundary ones belong to one. A piece's hull is its boundary's, which
+  // runs along the chart's boundary and the cut.
+  struct Edge {
+    int face, other, a, b;  // other = -1 on the boundary
+  };
+  std::vector<Edge> edges;
   {
     std::unordered_map<std::int64_t, int> first;
     first.reserve(3 * faces.size());
     for (int i = 0; i < n; ++i)
       for (int k = 0; k < 3; ++k) {
-        const int f = faces[i];
-        const auto [it, inserted] = first.emplace(undirected_edge_key(F(f, k), F(f, (k + 1) % 3), num_vertices), i);
-        if (!inserted) joins.push_back({it->second, i});
+        const int f = faces[i], a = F(f, k), b = F(f, (k + 1) % 3);
+        const auto [it, inserted] = first.emplace(undirected_edge_key(a, b, num_vertices), edges.size());
+        if (inserted)
+          edges.push_back({i, -1, a, b});
+        else
+          edges[it->second].other = i;
       }
   }
   std::vector<Eigen::Vector2d> centroid(n);
-  for (int i = 0; i < n; ++i)
+  std::vector<double> face_area(n);
+  for (int i = 0; i < n; ++i) {
     centroid[i] = (UV.row(F(faces[i], 0)) + UV.row(F(faces[i], 1)) + UV.row(F(faces[i], 2))).transpose() / 3;
+    face_area[i] = uv_area(F, UV, faces[i]);
+  }
 
-  std::vector<int> parent(n), side(n);
+  std::vector<int> parent(n), side(n), piece_of(n), stamp(num_vertices, -1);
+  int stamps = 0;
   for (int direction = 0; direction < kDirections; ++direction) {
     const double angle = direction * M_PI / kDirections;
     const Eigen::Vector2d normal(std::cos(angle), std::sin(angle));
@@ -111,30 +109,60 @@ std::vector<ChartSplit> straight_splits(const Eigen::MatrixXi& F, const Eigen::M
       const double offset = lo + (hi - lo) * step / kOffsets;
       for (int i = 0; i < n; ++i) side[i] = normal.dot(centroid[i]) > offset;
       std::iota(parent.begin(), parent.end(), 0);
-      for (const auto& [a, b] : joins)
-        if (side[a] == side[b]) parent[find(parent, a)] = find(parent, b);
+      for (const Edge& e : edges)
+        if (e.other >= 0 && side[e.face] == side[e.other]) parent[find(parent, e.face)] = find(parent, e.other);
       std::vector<int> piece_of_root(n, -1);
-      std::vector<std::vector<int>> pieces;
+      std::vector<std::vector<int>> pieces;  // local face numbers
       for (int i = 0; i < n; ++i) {
         int& piece = piece_of_root[find(parent, i)];
         if (piece < 0) {
           piece = static_cast<int>(pieces.size());
           pieces.emplace_back();
         }
-        pieces[piece].push_back(faces[i]);
+        piece_of[i] = piece;
+        pieces[piece].push_back(i);
       }
       if (pieces.size() < 2) continue;
-      const std::vector<double> waste = waste_of(F, UV, pieces);
-      const double total = std::accumulate(waste.begin(), waste.end(), 0.0);
+      // Each piece's boundary: its points (for the hull) and edge count.
+      std::vector<std::vector<Eigen::Vector2d>> outline(pieces.size());
+      std::vector<long> boundary_edges(pieces.size(), 0);
+      for (const Edge& e : edges) {
+        if (e.other >= 0 && piece_of[e.face] == piece_of[e.other]) continue;
+        for (int i : {e.face, e.other}) {
+          if (i < 0) continue;
+          outline[piece_of[i]].push_back(UV.row(e.a).transpose());
+          outline[piece_of[i]].push_back(UV.row(e.b).transpose());
+          ++boundary_edges[piece_of[i]];
+        }
+      }
+      double total = 0;
+      for (std::size_t p = 0; p < pieces.size(); ++p) {
+        double area = 0;
+        for (int i : pieces[p]) area += face_area[i];
+        total += std::max(0.0, polygon_area(convex_hull(std::move(outline[p]))) - area);
+      }
       if (static_cast<int>(best.size()) == count && total >= best.back().waste) continue;
-      if (!std::all_of(pieces.begin(), pieces.end(),
-                       [&](const std::vector<int>& p) { return is_disk(F, p, num_vertices); }))
-        continue;
+      // A disk: V - E + F = 1 (connected and part of a disk, so genus 0;
+      // then one boundary loop), with E = (3 F + boundary edges) / 2.
+      bool disks = true;
+      for (std::size_t p = 0; p < pieces.size() && disks; ++p) {
+        long vertices = 0;
+        for (int i : pieces[p])
+          for (int k = 0; k < 3; ++k)
+            if (int& mark = stamp[F(faces[i], k)]; mark != stamps) {
+              mark = stamps;
+              ++vertices;
+            }
+        ++stamps;
+        const long face_count = static_cast<long>(pieces[p].size());
+        disks = vertices - (3 * face_count + boundary_edges[p]) / 2 + face_count == 1;
+      }
+      if (!disks) continue;
       ChartSplit split;
       split.face_chart = face_chart;
       split.num_charts = num_charts;
       for (std::size_t p = 1; p < pieces.size(); ++p) {
-        for (int f : pieces[p]) split.face_chart[f] = split.num_charts;
+        for (int i : pieces[p]) split.face_chart[faces[i]] = split.num_charts;
         ++split.num_charts;
       }
       split.waste = total;
