@@ -6,6 +6,7 @@
 #include "akvf/internal/seam_cutting.h"
 #include "framework/mesh/chart_layout.h"
 #include "framework/mesh/chart_splitting.h"
+#include "framework/mesh/plane_geometry.h"
 #include "framework/mesh/seam_opening.h"
 
 namespace akvf {

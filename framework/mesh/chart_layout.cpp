@@ -1,6 +1,6 @@
 #include "framework/mesh/chart_layout.h"
 
-#include "framework/mesh/convex_hull.h"
+#include "framework/mesh/plane_geometry.h"
 #include "framework/mesh/raster_packing.h"
 
 #include <Eigen/Geometry>
@@ -243,8 +243,7 @@ double square_coverage(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV) {
       lo = lo.cwiseMin(UV.row(F(f, k)));
       hi = hi.cwiseMax(UV.row(F(f, k)));
     }
-    const Eigen::RowVector2d a = UV.row(F(f, 1)) - UV.row(F(f, 0)), b = UV.row(F(f, 2)) - UV.row(F(f, 0));
-    area += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+    area += triangle_area(F, UV, f);
   }
   const double side = (hi - lo).maxCoeff();
   return side > 0 ? area / (side * side) : 0;

@@ -8,19 +8,14 @@
 #include <numeric>
 #include <unordered_map>
 
-#include "framework/mesh/convex_hull.h"
 #include "framework/mesh/mesh_topology.h"
+#include "framework/mesh/plane_geometry.h"
 
 namespace akvf {
 
 namespace {
 
 constexpr int kDirections = 16, kOffsets = 16;
-
-double uv_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, int f) {
-  const Eigen::RowVector2d a = UV.row(F(f, 1)) - UV.row(F(f, 0)), b = UV.row(F(f, 2)) - UV.row(F(f, 0));
-  return 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
-}
 
 // The hull area less the area of each set of faces.
 std::vector<double> waste_of(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV,
@@ -30,7 +25,7 @@ std::vector<double> waste_of(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV
     std::vector<Eigen::Vector2d> points;
     double area = 0;
     for (int f : sets[s]) {
-      area += uv_area(F, UV, f);
+      area += triangle_area(F, UV, f);
       for (int k = 0; k < 3; ++k) points.push_back(UV.row(F(f, k)).transpose());
     }
     waste[s] = std::max(0.0, polygon_area(convex_hull(std::move(points))) - area);
@@ -44,12 +39,6 @@ int find(std::vector<int>& parent, int a) {
 }
 
 }  // namespace
-
-double map_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV) {
-  double area = 0;
-  for (int f = 0; f < F.rows(); ++f) area += uv_area(F, UV, f);
-  return area;
-}
 
 std::vector<double> chart_waste(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, const std::vector<int>& face_chart,
                                 int num_charts) {
@@ -92,7 +81,7 @@ std::vector<ChartSplit> straight_splits(const Eigen::MatrixXi& F, const Eigen::M
   std::vector<double> face_area(n);
   for (int i = 0; i < n; ++i) {
     centroid[i] = (UV.row(F(faces[i], 0)) + UV.row(F(faces[i], 1)) + UV.row(F(faces[i], 2))).transpose() / 3;
-    face_area[i] = uv_area(F, UV, faces[i]);
+    face_area[i] = triangle_area(F, UV, faces[i]);
   }
 
   std::vector<int> parent(n), side(n), piece_of(n), stamp(num_vertices, -1);

@@ -9,9 +9,6 @@
 
 namespace akvf {
 
-// The area of the triangles F in UV.
-double map_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV);
-
 // Per chart, the area of its convex hull in UV less its own: what it leaves
 // empty however it is packed.
 std::vector<double> chart_waste(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, const std::vector<int>& face_chart,

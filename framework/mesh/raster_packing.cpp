@@ -1,5 +1,7 @@
 #include "framework/mesh/raster_packing.h"
 
+#include "framework/mesh/plane_geometry.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,10 +12,15 @@ namespace akvf {
 
 namespace {
 
-Eigen::RowVector2d turned(const Eigen::RowVector2d& p, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * p.x() - s * p.y(), s * p.x() + c * p.y()};
-}
+// A turn by an angle, its cosine and sine computed once (the masks and the
+// placement turn alike, to the bit).
+struct Turn {
+  explicit Turn(double angle) : c(std::cos(angle)), s(std::sin(angle)) {}
+  Eigen::RowVector2d operator()(const Eigen::RowVector2d& p) const {
+    return {c * p.x() - s * p.y(), s * p.x() + c * p.y()};
+  }
+  double c, s;
+};
 
 // One chart in one orientation on the grid: its cells (one row of runs
 // [begin, end) per grid row), and where its points' lowest corner lies.
@@ -46,10 +53,11 @@ bool touches(const std::array<Eigen::RowVector2d, 3>& t, double x0, double y0, d
 
 Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Eigen::MatrixXd& UV, double angle,
                double h, int ring) {
+  const Turn turned(angle);
   Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (int f : faces)
     for (int k = 0; k < 3; ++k) {
-      const Eigen::RowVector2d p = turned(UV.row(F(f, k)), angle);
+      const Eigen::RowVector2d p = turned(UV.row(F(f, k)));
       lo = lo.cwiseMin(p);
       hi = hi.cwiseMax(p);
     }
@@ -60,7 +68,7 @@ Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Ei
   std::vector<char> cell(static_cast<std::size_t>(mask.width) * mask.height, 0);
   for (int f : faces) {
     std::array<Eigen::RowVector2d, 3> t;
-    for (int k = 0; k < 3; ++k) t[k] = (turned(UV.row(F(f, k)), angle) - mask.origin) / h;
+    for (int k = 0; k < 3; ++k) t[k] = (turned(UV.row(F(f, k))) - mask.origin) / h;
     const Eigen::RowVector2d tlo = t[0].cwiseMin(t[1]).cwiseMin(t[2]), thi = t[0].cwiseMax(t[1]).cwiseMax(t[2]);
     for (int y = std::max(0, static_cast<int>(tlo.y())); y <= std::min(mask.height - 1, static_cast<int>(thi.y())); ++y)
       for (int x = std::max(0, static_cast<int>(tlo.x())); x <= std::min(mask.width - 1, static_cast<int>(thi.x()));
@@ -163,10 +171,7 @@ double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>
   const int n = static_cast<int>(chart_faces.size());
   std::vector<double> area(n, 0.0);
   for (int c = 0; c < n; ++c)
-    for (int f : chart_faces[c]) {
-      const Eigen::RowVector2d a = UV.row(F(f, 1)) - UV.row(F(f, 0)), b = UV.row(F(f, 2)) - UV.row(F(f, 0));
-      area[c] += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
-    }
+    for (int f : chart_faces[c]) area[c] += triangle_area(F, UV, f);
   const double total = std::accumulate(area.begin(), area.end(), 0.0);
   // About 64 cells per chart, at least 2^14 and at most 2^18 in all: fine
   // enough for the charts' shapes, coarse enough for the brute-force search.
@@ -235,13 +240,15 @@ double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>
 void apply_placement(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,
                      const std::vector<ChartPlacement>& placement, Eigen::MatrixXd* UV) {
   std::vector<char> moved(UV->rows(), 0);
-  for (std::size_t c = 0; c < chart_faces.size(); ++c)
+  for (std::size_t c = 0; c < chart_faces.size(); ++c) {
+    const Turn turned(placement[c].angle);
     for (int f : chart_faces[c])
       for (int k = 0; k < 3; ++k)
         if (const int v = F(f, k); !moved[v]) {
           moved[v] = 1;
-          UV->row(v) = turned(UV->row(v), placement[c].angle) + placement[c].offset;
+          UV->row(v) = turned(UV->row(v)) + placement[c].offset;
         }
+  }
 }
 
 }  // namespace akvf

@@ -1,5 +1,5 @@
 #pragma once
-// The convex hull of points of the plane.
+// Geometry of the plane: convex hulls and areas.
 #include <Eigen/Core>
 #include <vector>
 
@@ -11,5 +11,11 @@ std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points);
 
 // The area of a counterclockwise polygon (the shoelace formula).
 double polygon_area(const std::vector<Eigen::Vector2d>& polygon);
+
+// The unsigned area of triangle f of F in UV (one row per vertex).
+double triangle_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, int f);
+
+// The area of the triangles F in UV.
+double map_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV);
 
 }  // namespace akvf

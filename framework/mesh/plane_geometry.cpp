@@ -1,6 +1,7 @@
-#include "framework/mesh/convex_hull.h"
+#include "framework/mesh/plane_geometry.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace akvf {
 
@@ -32,6 +33,17 @@ double polygon_area(const std::vector<Eigen::Vector2d>& polygon) {
     twice += a.x() * b.y() - a.y() * b.x();
   }
   return 0.5 * twice;
+}
+
+double triangle_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, int f) {
+  const Eigen::RowVector2d a = UV.row(F(f, 1)) - UV.row(F(f, 0)), b = UV.row(F(f, 2)) - UV.row(F(f, 0));
+  return 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+}
+
+double map_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV) {
+  double area = 0;
+  for (int f = 0; f < F.rows(); ++f) area += triangle_area(F, UV, f);
+  return area;
 }
 
 }  // namespace akvf
