@@ -38,15 +38,21 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config, Param
   const ParamSetup& start = final_setup(setup, *run);
   DiskMesh disk = start.disk;
   Eigen::MatrixXd UV = unstack_uv(run->result.x);
-  double coverage = packed_coverage(disk, UV, start.gutter);
+  // A cut frees at most the area its chart's hull leaves empty, so a chart
+  // that leaves less than the gain asked of the square (least_waste below)
+  // cannot give it. The square is at least the map's area: if no chart
+  // leaves that share of it, no packing is even tried.
   const double area = map_area(disk.mesh.F, UV);
+  std::vector<double> waste = chart_waste(disk.mesh.F, UV, disk.face_chart, disk.num_charts());
+  if (*std::max_element(waste.begin(), waste.end()) < (kLeastGain - 1) * area) return;
+  double coverage = packed_coverage(disk, UV, start.gutter);
   // Faces keep their rows through the cuts: their energies and areas too.
   const Eigen::VectorXd energy = config.seams ? face_symmetric_dirichlet(start, run->result.x) : Eigen::VectorXd();
   const Eigen::VectorXd& weight = start.objective->weights();
   int splits = 0;
   while (splits < kMaxSplits && coverage < config.min_coverage) {
     const int charts = disk.num_charts();
-    const std::vector<double> waste = chart_waste(disk.mesh.F, UV, disk.face_chart, charts);
+    if (splits > 0) waste = chart_waste(disk.mesh.F, UV, disk.face_chart, charts);
     std::vector<int> order(charts);
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return waste[a] > waste[b]; });
@@ -54,8 +60,6 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config, Param
     double best_coverage = 0;
     DiskMesh best_disk;
     Eigen::MatrixXd best_uv;
-    // A cut frees at most the area its chart's hull leaves empty: a chart
-    // that leaves less than the gain asked of the square cannot give it.
     const double least_waste = (kLeastGain - 1) * area / coverage;
     for (int i = 0; i < std::min(charts, kChartsPerRound) && !split && waste[order[i]] >= least_waste; ++i) {
       const int chart = order[i];
