@@ -32,7 +32,7 @@ struct DeformOptions {
   bool hard = false;               // hard constraints instead of the penalty
   double cg_tol = 0;               // > 0: Jacobi-CG to this relative residual instead of factoring
   bool akvf_as_written = false;    // AKVF as §6.2 states it (K + c I only), for comparison
-  std::optional<double> grad_tol;  // none ("auto"): 1e-3, or 1e-4 for arap
+  std::optional<double> grad_tol;  // none ("auto"): 1e-3, or 1e-4 for an energy 0 at an isometry
   int max_iters = 100;             // Figure 8 runs 100 iterations
   double time_limit = std::numeric_limits<double>::infinity();
   LinearSolver linear_solver = LinearSolver::kAuto;  // kAuto: kAmg only if the factor would not fit

@@ -184,8 +184,8 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
                                     "AQP momentum: auto (on for the laplacian preconditioner only), on, off",
                                     &O::acceleration));
   fields->push_back(auto_number_field<O>("grad_tol", "grad-tol", "X",
-                                         "stop when the gradient norm drops below X; auto: 1e-3, or 1e-4 for "
-                                         "arap (its minimum is near 0, not an isometry's positive value)",
+                                         "stop when the gradient norm drops below X; auto: 1e-3, or 1e-4 for an "
+                                         "energy that is 0 at an isometry (arap)",
                                          &O::grad_tol, ">= 0", [](double x) { return x >= 0; }));
   fields->push_back(integer_field<O>("max_iters", "max-iters", "N", "stop after N iterations", &O::max_iters, ">= 0",
                                      [](int n) { return n >= 0; }));

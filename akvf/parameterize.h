@@ -53,7 +53,7 @@ struct ParameterizeOptions {
   Injectivity injectivity = Injectivity::kGlobal;  // kGlobal: no UV overlap (boundary contact-free);
                                                    // kLocal: flip-free only, the paper's Algorithm 1
   std::optional<double> grad_tol;                  // converged when ||grad E|| < grad_tol (area-1 units); none
-                                                   // ("auto"): 1e-3, or 1e-4 for arap
+                                                   // ("auto"): 1e-3, or 1e-4 for an energy 0 at an isometry (arap)
   int max_iters = 1000;                            // >= 0
   double time_limit = std::numeric_limits<double>::infinity();  // optimizer seconds, > 0
   int warm_start_iters = 1000;  // limit of the symmetric Dirichlet warm start of overflowing energies
