@@ -5,15 +5,33 @@
 #include <tbb/task_arena.h>
 
 #include <cholmod.h>  // SuiteSparse_long
-#include <Eigen/Core>
 #include <algorithm>
+#include <cstddef>
 #include <numeric>
 
 namespace akvf {
 
 namespace {
 
-using Block = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+// y[i] -= a x[i], i < n.
+inline void subtract_scaled(double a, const double* __restrict x, double* __restrict y, int n) {
+  for (int i = 0; i < n; ++i) y[i] -= a * x[i];
+}
+
+// sum_i x[i] y[i], i < n, in four interleaved partial sums (vector registers;
+// the order is fixed, so is the result).
+inline double dot(const double* __restrict x, const double* __restrict y, int n) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int i = 0;
+  for (; i + 4 <= n; i += 4) {
+    s0 += x[i] * y[i];
+    s1 += x[i + 1] * y[i + 1];
+    s2 += x[i + 2] * y[i + 2];
+    s3 += x[i + 3] * y[i + 3];
+  }
+  for (; i < n; ++i) s0 += x[i] * y[i];
+  return (s0 + s2) + (s1 + s3);
+}
 
 }  // namespace
 
@@ -63,47 +81,61 @@ double SupernodalSolve<Index>::top_share(int groups) {
   return top_share_;
 }
 
+// A supernode's block is column-major with its diagonal triangle on top, so
+// column j below the diagonal, L(j+1.., j), is one contiguous run through
+// the triangle's rows and the rows below: forward, one scaled subtraction
+// per column over w = [y; minus the updates of the rows below].
 template <class Index>
 void SupernodalSolve<Index>::forward(const double* values, int group, double* z) {
-  std::vector<double>& scratch = scratch_[group == kTop ? groups_.size() : group];
+  double* w = scratch_[group == kTop ? groups_.size() : group].data();
   double* top_updates = group == kTop || group == 0 ? nullptr : top_updates_[group - 1].data();
   for (int node : members(group)) {
     const BlockShape b = block_shape(s_, node);
-    const Block L(values + s_.value_start[node], b.rows, b.columns, Eigen::OuterStride<>(b.rows));
-    Eigen::Map<Eigen::VectorXd> y(z + b.first_column, b.columns);
-    L.topRows(b.columns).triangularView<Eigen::Lower>().solveInPlace(y);
-    const int below_count = b.rows - b.columns;
+    const double* L = values + s_.value_start[node];
+    double* y = z + b.first_column;
+    std::copy(y, y + b.columns, w);
+    std::fill(w + b.columns, w + b.rows, 0.0);
+    for (int j = 0; j < b.columns; ++j) {
+      const double* column = L + static_cast<std::size_t>(j) * b.rows;
+      w[j] /= column[j];
+      subtract_scaled(w[j], column + j + 1, w + j + 1, b.rows - j - 1);
+    }
+    std::copy(w, w + b.columns, y);
     const Index* below = s_.pattern + s_.pattern_start[node] + b.columns;
-    Eigen::Map<Eigen::VectorXd> update(scratch.data(), below_count);
-    update.noalias() = L.bottomRows(below_count) * y;
-    for (int i = 0; i < below_count; ++i) {
+    const double* update = w + b.columns;  // minus L(below, :) y
+    for (int i = 0; i < b.rows - b.columns; ++i) {
       const Index row = below[i];
       // A row below a group's supernode is the group's own or the top's
       // (group 0 writes those, the others keep theirs apart).
       const int top_index = top_updates ? column_top_[static_cast<std::size_t>(row)] : -1;
       if (top_index >= 0)
-        top_updates[top_index] += update[i];
+        top_updates[top_index] -= update[i];
       else
-        z[row] -= update[i];
+        z[row] += update[i];
     }
   }
 }
 
+// Backward, with w = [x; the known x of the rows below]:
+// x_j = (w_j - L(j+1.., j) . w(j+1..)) / L(j, j) from the last column down,
+// one dot product per contiguous column run.
 template <class Index>
 void SupernodalSolve<Index>::backward(const double* values, int group, double* z) {
-  std::vector<double>& scratch = scratch_[group == kTop ? groups_.size() : group];
+  double* w = scratch_[group == kTop ? groups_.size() : group].data();
   const std::vector<int>& order = members(group);
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     const int node = *it;
     const BlockShape b = block_shape(s_, node);
-    const Block L(values + s_.value_start[node], b.rows, b.columns, Eigen::OuterStride<>(b.rows));
-    Eigen::Map<Eigen::VectorXd> x(z + b.first_column, b.columns);
-    const int below_count = b.rows - b.columns;
+    const double* L = values + s_.value_start[node];
+    double* x = z + b.first_column;
     const Index* below = s_.pattern + s_.pattern_start[node] + b.columns;
-    Eigen::Map<Eigen::VectorXd> known(scratch.data(), below_count);
-    for (int i = 0; i < below_count; ++i) known[i] = z[below[i]];
-    x.noalias() -= L.bottomRows(below_count).transpose() * known;
-    L.topRows(b.columns).triangularView<Eigen::Lower>().transpose().solveInPlace(x);
+    std::copy(x, x + b.columns, w);
+    for (int i = 0; i < b.rows - b.columns; ++i) w[b.columns + i] = z[below[i]];
+    for (int j = b.columns - 1; j >= 0; --j) {
+      const double* column = L + static_cast<std::size_t>(j) * b.rows;
+      w[j] = (w[j] - dot(column + j + 1, w + j + 1, b.rows - j - 1)) / column[j];
+    }
+    std::copy(w, w + b.columns, x);
   }
 }
 

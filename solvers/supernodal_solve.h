@@ -4,8 +4,9 @@
 //
 // CHOLMOD's own solve calls BLAS dtrsv/dgemv per supernode, and OpenBLAS
 // takes a lock and a buffer at each call: with thousands of small supernodes
-// that overhead is most of the solve. Here the same arithmetic runs through
-// Eigen maps. The supernodal elimination tree is split into as many groups
+// that overhead is most of the solve. Here each supernode is swept column
+// by column (one contiguous run per column through the diagonal triangle
+// and the rows below, supernodal_solve.cpp). The supernodal elimination tree is split into as many groups
 // of disjoint subtrees of similar work as the calling arena has slots (at
 // least two; a global thread limit runs them on fewer threads), and the
 // rest above them (the top, solved on one thread). The groups are solved
@@ -57,7 +58,7 @@ class SupernodalSolve {
   std::vector<int> column_top_;                          // index of a top column among the top's columns, or -1
   std::vector<int> top_columns_;                         // the top's columns, in increasing order
   std::vector<std::vector<double>> top_updates_;         // per group but the first, its updates of the top's columns
-  std::vector<std::vector<double>> scratch_;             // rows below a diagonal block, per group (last: the top)
+  std::vector<std::vector<double>> scratch_;             // a supernode's rows, per group (last: the top)
   std::unique_ptr<tbb::affinity_partitioner> affinity_;  // per split
   double top_share_ = 0;
 };
