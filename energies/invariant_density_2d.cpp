@@ -47,16 +47,23 @@ InvariantDensity2D::Hessian InvariantDensity2D::hessian(const Matrix& J) const {
 
 InvariantDensity2D::Hessian InvariantDensity2D::filtered_hessian(const Matrix& J, bool absolute) const {
   // Signed SVD in closed form: J = R(phi) diag(s1, s2) R(theta), R(t) the
-  // rotation by t, so U = R(phi) and V = R(-theta); s2 < 0 iff det J < 0.
+  // rotation by t, phi = (a2 + a1) / 2, theta = (a2 - a1) / 2 with
+  // (cos, sin)(a1) = (F, G) / R and (cos, sin)(a2) = (E, H) / Q; s2 < 0 iff
+  // det J < 0. The eigenmodes U M V^T below need only a1 and a2: with
+  // T = [0 -1; 1 0], X = [0 1; 1 0], D = diag(1, -1), R(phi) T R(theta) =
+  // T R(a2), R(phi) X R(theta) = X R(-a1), R(phi) R(theta) = R(a2) and
+  // R(phi) D R(theta) = D R(-a1).
   const double E = (J(0, 0) + J(1, 1)) / 2, F = (J(0, 0) - J(1, 1)) / 2;
   const double G = (J(1, 0) + J(0, 1)) / 2, H = (J(1, 0) - J(0, 1)) / 2;
   const double Q = std::hypot(E, H), R = std::hypot(F, G);
   const double s1 = Q + R, s2 = Q - R;
-  const double a1 = std::atan2(G, F), a2 = std::atan2(H, E);
-  const double theta = (a2 - a1) / 2, phi = (a2 + a1) / 2;
-  Eigen::Matrix2d U, Vt;
-  U << std::cos(phi), -std::sin(phi), std::sin(phi), std::cos(phi);
-  Vt << std::cos(theta), -std::sin(theta), std::sin(theta), std::cos(theta);
+  const double c_2 = Q > 0 ? E / Q : 1, s_2 = Q > 0 ? H / Q : 0;  // a2
+  const double c_1 = R > 0 ? F / R : 1, s_1 = R > 0 ? G / R : 0;  // a1
+  Eigen::Matrix2d rotation, reflection, twist, flip;              // R(a2), D R(-a1), T R(a2), X R(-a1)
+  rotation << c_2, -s_2, s_2, c_2;
+  reflection << c_1, s_1, s_1, -c_1;
+  twist << -s_2, -c_2, c_2, -s_2;
+  flip << -s_1, c_1, c_1, s_1;
 
   const InvariantDerivatives2D d = derivatives(J.squaredNorm(), J.determinant());
   Eigen::Matrix2d B, S, A;
@@ -64,27 +71,32 @@ InvariantDensity2D::Hessian InvariantDensity2D::filtered_hessian(const Matrix& J
   S << d.f_ss, d.f_sg, d.f_sg, d.f_gg;
   A << 2 * d.f_s, d.f_g, d.f_g, 2 * d.f_s;
   A += B.transpose() * S * B;
-  // Eigenpairs of the symmetric 2x2 A.
-  const double mean = (A(0, 0) + A(1, 1)) / 2, half_gap = std::hypot((A(0, 0) - A(1, 1)) / 2, A(0, 1));
-  const double angle = 0.5 * std::atan2(2 * A(0, 1), A(0, 0) - A(1, 1));
-  const Eigen::Vector2d e1(std::cos(angle), std::sin(angle)), e2(-std::sin(angle), std::cos(angle));
+  // Eigenpairs of the symmetric 2x2 A: (cos, sin) of half the angle of
+  // (x, y), x = (A00 - A11) / 2, y = A01, by the half-angle formulas.
+  const double x = (A(0, 0) - A(1, 1)) / 2, y = A(0, 1);
+  const double mean = (A(0, 0) + A(1, 1)) / 2, half_gap = std::hypot(x, y);
+  double ca = 1, sa = 0;
+  if (half_gap > 0 && x >= 0) {
+    ca = std::sqrt((1 + x / half_gap) / 2);
+    sa = y / (2 * half_gap * ca);
+  } else if (half_gap > 0) {
+    sa = std::copysign(std::sqrt((1 - x / half_gap) / 2), y);
+    ca = y / (2 * half_gap * sa);
+  }
 
   Hessian P = Hessian::Zero();
-  const auto add = [&](double lambda, const Eigen::Matrix2d& M) {
+  const auto add = [&](double lambda, const Eigen::Matrix2d& mode) {
     if (absolute) lambda = std::abs(lambda);
     if (!(lambda > 0)) return;
-    const Eigen::Matrix2d mode = U * M * Vt;
     const Eigen::Vector4d v = vec_2d(mode);
     P += lambda * v * v.transpose();
   };
   const double r = 1 / std::sqrt(2.0);
-  Eigen::Matrix2d twist, flip;
-  twist << 0, -r, r, 0;
-  flip << 0, r, r, 0;
-  add(2 * d.f_s + d.f_g, twist);
-  add(2 * d.f_s - d.f_g, flip);
-  add(mean + half_gap, e1.asDiagonal().toDenseMatrix());
-  add(mean - half_gap, e2.asDiagonal().toDenseMatrix());
+  add(2 * d.f_s + d.f_g, r * twist);
+  add(2 * d.f_s - d.f_g, r * flip);
+  // diag(u, v) = (u + v) / 2 I + (u - v) / 2 D, for e1 = (ca, sa) and e2 = (-sa, ca).
+  add(mean + half_gap, (ca + sa) / 2 * rotation + (ca - sa) / 2 * reflection);
+  add(mean - half_gap, (ca - sa) / 2 * rotation - (sa + ca) / 2 * reflection);
   return P;
 }
 
