@@ -55,7 +55,8 @@ for arg in "${plot_args[@]}"; do
   label=${arg#*=}
   awk -F, -v label="$label" '
     function at(k) { return (k in e) ? sprintf("%.1f", e[k]) : "-" }
-    NR > 1 { e[$1] = $3; t = $2; if ($7 > flips) flips = $7; last = $1; status = $11 }
+    NR == 1 { for (i = 1; i <= NF; ++i) column[$i] = i; next }
+    { e[$1] = $3; t = $2; if ($(column["flips"]) > flips) flips = $(column["flips"]); last = $1; status = $(column["status"]); sub(/ .*/, "", status) }
     END { printf "| %s | %s | %s | %s | %s | %.2f | %d | %.1f | %s | %d |\n", label, at(0), at(10), at(25), at(50), e[last], last, t, status, flips }
   ' "$file"
 done

@@ -7,7 +7,7 @@
 # per energy and in 3D, the thread benchmarks, CGAL's ARAP, the seams and
 # xatlas tables, global injectivity's cost, Figure 8's and cube_4k's tables.
 # Each step's output and seconds go to OUT/<step>.md and OUT/steps.tsv.
-# About 90 minutes on the 2-core development VM (Figure 6 alone 45); run it
+# About 65 minutes on the 2-core development VM (Figure 6 alone 38); run it
 # with nothing else on the machine, since every table has timings.
 # Usage: bash scripts/regenerate.sh [OUT]   (after scripts/build.sh; needs
 # node and npm for xatlas, ../shared/meshes or $AKVF_DATA_DIR)
@@ -23,31 +23,39 @@ mkdir -p "$OUT"
   echo "date $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "machine $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 } > "$OUT/run.txt"
-printf 'step\tseconds\n' > "$OUT/steps.tsv"
+printf 'step\tseconds\texit\n' > "$OUT/steps.tsv"
 
 # step NAME COMMAND...: runs COMMAND, its stdout to OUT/NAME.md, its stderr
-# to OUT/NAME.log, and its wall seconds to OUT/steps.tsv.
+# to OUT/NAME.log, and its wall seconds and exit code to OUT/steps.tsv; a
+# failed step is reported and the run goes on with the next.
+failed=0
 step() {
   local name=$1
   shift
   echo "[$(date -u +%H:%M:%S)] $name: $*" >&2
   local start=$SECONDS
-  "$@" > "$OUT/$name.md" 2> "$OUT/$name.log"
-  printf '%s\t%d\n' "$name" $((SECONDS - start)) >> "$OUT/steps.tsv"
+  rc=0
+  "$@" > "$OUT/$name.md" 2> "$OUT/$name.log" || rc=$?
+  printf '%s\t%d\t%d\n' "$name" $((SECONDS - start)) "$rc" >> "$OUT/steps.tsv"
+  if [ "$rc" -ne 0 ]; then
+    echo "  $name failed (exit $rc): $OUT/$name.log" >&2
+    failed=$((failed + 1))
+  fi
 }
 
 for manifest in table1 figure1 figure3 figure7 figure8 subdivided_meshes figure6; do
+  rm -rf "docs/results/$manifest"  # the runner keeps a folder only for its own manifest's results
   step "$manifest" ./build/akvf experiment "experiments/manifests/$manifest.json" --out-dir "docs/results/$manifest"
 done
 step figure8_plots bash scripts/figure8.sh
 step pairs bash scripts/pairs.sh
-cp "$OUT/pairs.md" docs/pairs.md
+[ "$rc" -ne 0 ] || cp "$OUT/pairs.md" docs/pairs.md  # rc: the last step's exit code
 step speed ./build/akvf_speed
 for energy in arap mips amips exp-symmetric-dirichlet; do
   step "speed_$energy" ./build/akvf_speed --only 2d --energy "$energy"
 done
 step threads ./build/akvf_benchmarks \
-  --benchmark_filter='(NumericFactorization|Solve)/horse_b.obj/x(16|64)(/threads:1)?$' \
+  --benchmark_filter='^(NumericFactorization|Solve)/horse_b.obj/x(16|64)(/threads:1)?$' \
   --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
 step injectivity bash scripts/injectivity.sh
 step seams bash scripts/seams.sh --large
@@ -61,4 +69,5 @@ cube4k() {
     --energy exp-symmetric-dirichlet --precond akvf --akvf-as-written --max-iters 100 --quiet | grep status)"
 }
 step cube_4k cube4k
-echo "done: $OUT (steps.tsv has each step's seconds)" >&2
+echo "done: $OUT (steps.tsv has each step's seconds and exit code); $failed step(s) failed" >&2
+[ "$failed" -eq 0 ]
