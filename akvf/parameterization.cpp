@@ -153,7 +153,8 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
           "init 'file' starts from the texture coordinates of the mesh file (akvf param --init file with an OBJ "
           "that has vt or a PLY with u,v); through the API pass the start map instead (Parameterizer::solve(uv0), "
           "Python uv0=)");
-    setup.x0 = start_from_map(setup, config.start_uv, name + ": the texture coordinates", true, &setup.warnings);
+    setup.x0 =
+        start_from_map(setup, config, config.start_uv, name + ": the texture coordinates", true, &setup.warnings);
   } else {
     setup.vertex_ordering = mesh_vertex_ordering(normalized);
     start_at_tutte_map(config, normalized, &setup);
@@ -220,15 +221,19 @@ void rebuild_problem(const ParamConfig& config, ParamSetup* setup, bool tutte_st
 
 namespace {
 
+// The boundary barrier's objective wrapping setup's distortion when the run
+// keeps the map globally injective, else null: the run minimizes it.
+std::unique_ptr<InjectiveObjective> injective_objective(const ParamSetup& setup, const ParamConfig& config) {
+  if (!config.global_injectivity) return nullptr;
+  return std::make_unique<InjectiveObjective>(*setup.objective, setup.boundary_contact,
+                                              injective_step_horizon(config.line_search_settings.max_initial_step,
+                                                                     config.line_search_settings.max_step_fraction));
+}
+
 ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
                         const std::vector<IterationCallback>& callbacks) {
   ParamRun run;
-  std::unique_ptr<InjectiveObjective> injective;
-  if (config.global_injectivity)
-    injective =
-        std::make_unique<InjectiveObjective>(*setup.objective, setup.boundary_contact,
-                                             injective_step_horizon(config.line_search_settings.max_initial_step,
-                                                                    config.line_search_settings.max_step_fraction));
+  const std::unique_ptr<InjectiveObjective> injective = injective_objective(setup, config);
   const Objective& objective = injective ? static_cast<const Objective&>(*injective) : *setup.objective;
   OptimizerOptions optimizer = config.optimizer;
   optimizer.acceleration_eta =
@@ -327,8 +332,8 @@ Eigen::MatrixXi output_uv_faces(const ParamSetup& setup) {
   return out;
 }
 
-Eigen::VectorXd start_from_map(const ParamSetup& setup, const Eigen::MatrixXd& uv, const std::string& what,
-                               bool allow_mirror, Warnings* warnings) {
+Eigen::VectorXd start_from_map(const ParamSetup& setup, const ParamConfig& config, const Eigen::MatrixXd& uv,
+                               const std::string& what, bool allow_mirror, Warnings* warnings) {
   if (setup.disk.cut)
     throw OptionsError("a start map cannot be given with cut 'auto' (the cut mesh's seams are not the input's)");
   if (uv.rows() != setup.disk.num_input_vertices || uv.cols() != 2)
@@ -351,9 +356,10 @@ Eigen::VectorXd start_from_map(const ParamSetup& setup, const Eigen::MatrixXd& u
     throw ValidationError(what + (allow_mirror ? " invert a triangle: " : " inverts a triangle: ") +
                           setup.objective->first_bad_element(x0));
   }
-  // Scaled to the mesh's area (1 here), then to the energy's best uniform
-  // scale: a texture's unit square or any other scale starts alike, and a
-  // saved result restarts at the energy it ended with.
+  // Scaled to the mesh's area (1 here), then to the best uniform scale of
+  // the energy the run minimizes (with the boundary barrier under global
+  // injectivity): a texture's unit square or any other scale starts alike,
+  // and a saved result restarts at the energy it ended with.
   const Eigen::MatrixXi& F = setup.objective->elements();
   double area = 0;
   for (int f = 0; f < F.rows(); ++f) {
@@ -362,7 +368,8 @@ Eigen::VectorXd start_from_map(const ParamSetup& setup, const Eigen::MatrixXd& u
     area += 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
   }
   x0 /= std::sqrt(area);
-  return best_uniform_scale(*setup.objective, x0) * x0;
+  const std::unique_ptr<InjectiveObjective> injective = injective_objective(setup, config);
+  return best_uniform_scale(injective ? static_cast<const Objective&>(*injective) : *setup.objective, x0) * x0;
 }
 
 namespace {

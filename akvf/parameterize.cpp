@@ -97,7 +97,7 @@ ParameterizeResult Parameterizer::solve(const Eigen::MatrixXd& uv0, const std::v
   const Busy busy(&state_->busy, "solve");
   ParamSetup from = state_->setup;
   from.warm_start = {};
-  from.x0 = start_from_map(state_->setup, uv0, "the start map", false, nullptr);
+  from.x0 = start_from_map(state_->setup, state_->config, uv0, "the start map", false, nullptr);
   return state_->run(from, callbacks);
 }
 

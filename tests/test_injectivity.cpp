@@ -204,6 +204,18 @@ TEST_CASE("a helicoid strip of 1.5 turns: flip-free alone overlaps, global injec
   CHECK(quasi_newton.overlap_fraction == 0);
 }
 
+TEST_CASE("a globally injective map restarts at the energy it ended with, the boundary barrier included") {
+  // The barrier is held at the end (the strip's turns press on each other),
+  // so the restart's scale is the best of distortion plus barrier.
+  const TriMesh strip = helicoid_strip(1.5, 0.05);
+  akvf::Parameterizer solver(strip.V, strip.F);
+  const ParameterizeResult first = solver.solve();
+  REQUIRE(first.status == TerminationStatus::kConverged);
+  REQUIRE(first.energy() > first.distortion_energy * (1 + 1e-6));  // the barrier is active
+  const ParameterizeResult again = solver.solve(first.uv / 7.0);   // any scale
+  CHECK(std::abs(again.trace.front().energy - first.trace.back().energy) <= 1e-9 * first.trace.back().energy);
+}
+
 TEST_CASE("the barrier's curvature in a factored P: the sum of its terms, a pattern that only grows, P + C solved") {
   // The helicoid strip held off its own overlap: its final map presses the
   // boundary on itself.
