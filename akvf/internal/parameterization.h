@@ -157,10 +157,10 @@ Eigen::MatrixXi output_uv_faces(const ParamSetup& setup);
 
 // A start map of the input's vertices (#V by 2, any scale and placement) as
 // the optimizer's x (compacted, in area-1 units, at the best uniform scale
-// of the energy config's run minimizes: uniform_scale.h). OptionsError for another
-// shape; ValidationError for a coordinate that is not finite or an inverted
-// triangle, named with `what` ("the start map inverts a triangle: triangle
-// 12 ..."). With `allow_mirror`, a map that inverts every triangle (a
+// of the energy a run with `config` minimizes: uniform_scale.h). OptionsError
+// for another shape; ValidationError for a coordinate that is not finite or
+// an inverted triangle, named with `what` ("the start map inverts a
+// triangle: triangle 12 ..."). With `allow_mirror`, a map that inverts every triangle (a
 // mirror image, as tools with the other orientation convention write) is
 // mirrored back, with a warning.
 Eigen::VectorXd start_from_map(const ParamSetup& setup, const ParamConfig& config, const Eigen::MatrixXd& uv,
