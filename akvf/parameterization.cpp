@@ -12,6 +12,7 @@
 #include "akvf/internal/seam_cutting.h"
 #include "akvf/threads.h"
 #include "framework/mesh/chart_layout.h"
+#include "framework/mesh/plane_geometry.h"
 #include "framework/mesh/vertex_graph.h"
 #include "framework/optimization/injective_objective.h"
 #include "framework/optimization/uniform_scale.h"
@@ -360,14 +361,7 @@ Eigen::VectorXd start_from_map(const ParamSetup& setup, const ParamConfig& confi
   // the energy the run minimizes (with the boundary barrier under global
   // injectivity): a texture's unit square or any other scale starts alike,
   // and a saved result restarts at the energy it ended with.
-  const Eigen::MatrixXi& F = setup.objective->elements();
-  double area = 0;
-  for (int f = 0; f < F.rows(); ++f) {
-    const Eigen::RowVector2d e1 = compact.row(F(f, 1)) - compact.row(F(f, 0));
-    const Eigen::RowVector2d e2 = compact.row(F(f, 2)) - compact.row(F(f, 0));
-    area += 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
-  }
-  x0 /= std::sqrt(area);
+  x0 /= std::sqrt(map_area(setup.objective->elements(), compact));
   const std::unique_ptr<InjectiveObjective> injective = injective_objective(setup, config);
   return best_uniform_scale(injective ? static_cast<const Objective&>(*injective) : *setup.objective, x0) * x0;
 }
