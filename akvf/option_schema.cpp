@@ -255,8 +255,9 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
     f.push_back(recomputes_start(
         choice_field<O>("cut", "cut", "cut",
                         "auto cuts a closed, multi-boundary, higher-genus or multi-component mesh into disks "
-                        "(one chart per component, side by side); seams cuts so, then adds seams until every "
-                        "chart's symmetric Dirichlet energy is at most --max-distortion; none refuses such meshes",
+                        "(one chart per component, side by side); seams cuts so, then adds seams (and charts where "
+                        "seams do not do) until every chart's symmetric Dirichlet energy is at most "
+                        "--max-distortion; none refuses such meshes",
                         &O::cut)));
     f.push_back(number_field<O>("max_distortion", "max-distortion", "E",
                                 "with --cut seams: the bound on each chart's symmetric Dirichlet energy (4 is an "

@@ -46,6 +46,8 @@ struct Parameterizer::State {
     result.distortion_energy = run.distortion_energy;
     result.seams_added = run.seams.seams;
     result.seam_length = run.seams.seam_length;
+    result.overlap_pieces = run.seams.overlap_pieces;
+    result.parted_charts = run.seams.parted_charts;
     result.packing_splits = run.packing_splits;
     result.chart_distortion = run.seams.chart_distortion;
     result.distortion_bounded = run.seams.bound_met;

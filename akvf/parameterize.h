@@ -104,8 +104,13 @@ struct ParameterizeResult {
   // With cut kSeams: the seams added after the first cut, the length of
   // every seam (that cut's too) over the square root of the mesh's area,
   // each chart's symmetric Dirichlet energy at the end, and whether all are
-  // at most max_distortion (if not, seam_stop_reason says why seams stopped).
+  // at most max_distortion (if not, seam_stop_reason says why seams stopped);
+  // the charts added where the flip-free map that met the bound lay over
+  // itself (overlap_pieces) and the charts parted in two because seams
+  // alone did not meet it (parted_charts).
   int seams_added = 0;
+  int overlap_pieces = 0;
+  int parted_charts = 0;
   double seam_length = 0;
   // With a cut: the straight cuts that split charts for the packing
   // (min_coverage).

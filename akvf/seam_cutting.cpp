@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <numeric>
 
 #include "akvf/catalog.h"
+#include "framework/mesh/overlap_free_pieces.h"
 #include "framework/mesh/seam_opening.h"
 
 namespace akvf {
@@ -24,6 +24,23 @@ constexpr double kRoundGradientTolerance = 1e-2;
 // left to a later round: it may be the shoulder of the larger one, which
 // that one's seam relieves.
 constexpr double kPeakShare = 0.5;
+// A seam's sides are parted by this share of their triangles' smallest
+// height before a globally injective run: apart, yet far from flipping.
+constexpr double kPartingShare = 0.1;
+
+// A vertex's energy: the area-weighted mean of its faces'.
+std::vector<double> vertex_means(const ParamSetup& setup, const Eigen::VectorXd& energy) {
+  const TriMesh& mesh = setup.disk.mesh;
+  const Eigen::VectorXd& weight = setup.objective->weights();
+  std::vector<double> sum(mesh.num_vertices(), 0), area(mesh.num_vertices(), 0);
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      sum[mesh.F(f, k)] += weight[f] * energy[f];
+      area[mesh.F(f, k)] += weight[f];
+    }
+  for (int v = 0; v < mesh.num_vertices(); ++v) sum[v] /= area[v];
+  return sum;
+}
 
 // Where the round's seams start: the interior vertices of the charts above
 // the bound whose energy (the area-weighted mean of their faces') is above
@@ -34,15 +51,7 @@ std::vector<int> seam_starts(const ParamSetup& setup, const Eigen::VectorXd& ene
                              const std::vector<double>& chart_energy, double bound) {
   const TriMesh& mesh = setup.disk.mesh;
   const int nv = mesh.num_vertices();
-  const Eigen::VectorXd& weight = setup.objective->weights();
-  std::vector<double> sum(nv, 0), area(nv, 0);
-  for (int f = 0; f < mesh.num_faces(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      sum[mesh.F(f, k)] += weight[f] * energy[f];
-      area[mesh.F(f, k)] += weight[f];
-    }
-  std::vector<double> mean(nv);
-  for (int v = 0; v < nv; ++v) mean[v] = sum[v] / area[v];
+  const std::vector<double> mean = vertex_means(setup, energy);
   std::vector<char> interior(nv, 1);
   for (const auto& loop : setup.disk.boundary_loops)
     for (int v : loop) interior[v] = 0;
@@ -66,47 +75,6 @@ std::vector<int> seam_starts(const ParamSetup& setup, const Eigen::VectorXd& ene
   const double floor = 4 + kPeakShare * (mean[starts.front()] - 4);
   starts.erase(std::find_if(starts.begin(), starts.end(), [&](int v) { return mean[v] < floor; }), starts.end());
   return starts;
-}
-
-// Each copy of an input vertex that lies within `fraction` of its smallest
-// triangle height of another copy (the two sides of a seam that has not
-// opened, or barely) moved into its own
-// triangles, so that the seam's sides no longer touch (the boundary barrier
-// of global injectivity is infinite where they do): by `fraction` of the
-// smallest height of its triangles, along the mean direction to their
-// centroids, which flips none of them (a vertex moved by less than a
-// triangle's height keeps to its side of the opposite edge).
-void part_seam_sides(const TriMesh& mesh, const std::vector<int>& input_vertex, double fraction, Eigen::VectorXd* x) {
-  const int nv = static_cast<int>(input_vertex.size());
-  std::vector<Eigen::Vector2d> direction(nv, Eigen::Vector2d::Zero());
-  std::vector<double> height(nv, std::numeric_limits<double>::infinity());
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    Eigen::Vector2d p[3];
-    for (int k = 0; k < 3; ++k) p[k] = x->segment<2>(2 * mesh.F(f, k));
-    const double twice_area = (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
-    const Eigen::Vector2d centroid = (p[0] + p[1] + p[2]) / 3;
-    for (int k = 0; k < 3; ++k) {
-      const int v = mesh.F(f, k);
-      direction[v] += centroid - p[k];
-      height[v] = std::min(height[v], twice_area / (p[(k + 1) % 3] - p[(k + 2) % 3]).norm());
-    }
-  }
-  // The copies of one input vertex, consecutive in `order`.
-  std::vector<int> order(nv);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return input_vertex[a] < input_vertex[b]; });
-  std::vector<Eigen::Vector2d> move(nv, Eigen::Vector2d::Zero());
-  for (int i = 0, j = 0; i < nv; i = j) {
-    for (j = i + 1; j < nv && input_vertex[order[j]] == input_vertex[order[i]];) ++j;
-    for (int a = i; a < j; ++a)
-      for (int b = i; b < j; ++b) {
-        const int v = order[a], w = order[b];
-        const double step = fraction * height[v];
-        if (v != w && (x->segment<2>(2 * v) - x->segment<2>(2 * w)).norm() < step && direction[v].norm() > 0)
-          move[v] = step * direction[v].normalized();
-      }
-  }
-  for (int v = 0; v < nv; ++v) x->segment<2>(2 * v) += move[v];
 }
 
 // A round's row as the whole run's: later rounds continue the numbering and
@@ -137,6 +105,23 @@ ParamConfig warm(ParamConfig config) {
   config.preconditioner_settings.newton = config.preconditioner_settings.newton_phase;
   config.preconditioner_settings.newton_filter = config.preconditioner_settings.newton_phase_filter;
   return config;
+}
+
+// The next run starts at x, the last map on the opened mesh: as it is when
+// the run is only flip-free (returns true); else with the seams' sides
+// parted, if the boundary then does not cross itself (true: a flip-free map
+// whose boundary does not cross itself is injective, boundary_contact.h),
+// or from the Tutte map of the opened charts (false).
+bool start_at(const ParamConfig& round, Eigen::VectorXd x, ParamSetup* setup) {
+  if (round.global_injectivity) {
+    part_seam_sides(setup->disk, kPartingShare, &x);
+    if (setup->boundary_contact->count_crossings(x) > 0) {
+      rebuild_problem(round, setup, true);
+      return false;
+    }
+  }
+  setup->x0 = std::move(x);
+  return true;
 }
 
 }  // namespace
@@ -185,25 +170,43 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
     all.message = run.result.message;
   };
   SeamReport report;
+  // Each chart's energy into the report; returns every face's.
+  auto measure_charts = [&] {
+    Eigen::VectorXd energy = face_symmetric_dirichlet(*setup, all.x);
+    report.chart_distortion =
+        chart_means(setup->objective->weights(), setup->disk.face_chart, setup->disk.num_charts(), energy);
+    report.bound_met =
+        *std::max_element(report.chart_distortion.begin(), report.chart_distortion.end()) <= config.max_distortion;
+    return energy;
+  };
+  auto running = [&] { return is_normal_termination(all.status) && all.status != TerminationStatus::kUserStopped; };
+  // The run goes on from the map `from` on the mesh just opened, whose
+  // vertex v copies source[v] of the mesh before.
+  auto go_on = [&](const ParamConfig& round, const std::vector<int>& source, const Eigen::VectorXd& from) {
+    Eigen::VectorXd x(2 * source.size());
+    for (std::size_t v = 0; v < source.size(); ++v) x.segment<2>(2 * v) = from.segment<2>(2 * source[v]);
+    rebuild_problem(round, setup.get());
+    optimize(start_at(round, x, setup.get()) ? warm(round) : round);
+  };
   // Seams until the bound holds, optimizing after each: flip-free only, or
   // globally injective with the new seam's sides parted first.
-  auto add_seams = [&](const ParamConfig& round) {
+  auto add_seams = [&](const ParamConfig& round, int iteration_limit) {
     double best = std::numeric_limits<double>::infinity();
     int since_best = 0;
-    for (;;) {
-      if (!is_normal_termination(all.status) || all.status == TerminationStatus::kUserStopped) return;
-      const Eigen::VectorXd energy = face_symmetric_dirichlet(*setup, all.x);
-      report.chart_distortion =
-          chart_means(setup->objective->weights(), setup->disk.face_chart, setup->disk.num_charts(), energy);
-      const auto worst = std::max_element(report.chart_distortion.begin(), report.chart_distortion.end());
-      report.bound_met = *worst <= config.max_distortion;
+    while (running()) {
+      const Eigen::VectorXd energy = measure_charts();
       if (report.bound_met) return;
-      if (*worst < best) {
-        best = *worst;
+      const double worst = *std::max_element(report.chart_distortion.begin(), report.chart_distortion.end());
+      if (worst < best) {
+        best = worst;
         since_best = 0;
       } else if (++since_best == kFutileRounds) {
         report.stop_reason =
             std::to_string(kFutileRounds) + " rounds of seams in a row did not lower the largest chart energy";
+        return;
+      }
+      if (iterations >= iteration_limit) {
+        report.stop_reason = "the globally injective rounds took as many iterations as the flip-free ones";
         return;
       }
       const std::vector<std::vector<int>> paths =
@@ -213,13 +216,48 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
         return;
       }
       report.seams += static_cast<int>(paths.size());
-      const std::vector<int> source = open_seams(&setup->disk, paths);
-      Eigen::VectorXd x(2 * source.size());
-      for (std::size_t v = 0; v < source.size(); ++v) x.segment<2>(2 * v) = all.x.segment<2>(2 * source[v]);
-      rebuild_problem(round, setup.get());
-      if (round.global_injectivity) part_seam_sides(setup->disk.mesh, setup->disk.input_vertex, 0.1, &x);
-      setup->x0 = x;
-      optimize(warm(round));
+      go_on(round, open_seams(&setup->disk, paths), all.x);
+    }
+  };
+  // The charts still above the bound parted in two through their most
+  // distorted vertex, until every chart meets it: a single triangle, where
+  // parting ends, maps isometrically.
+  auto part_charts = [&](const ParamConfig& round) {
+    double best = std::numeric_limits<double>::infinity();
+    int since_best = 0;
+    while (running()) {
+      const Eigen::VectorXd energy = measure_charts();
+      if (report.bound_met) {
+        report.stop_reason.clear();  // the seams' reason, the bound now met
+        return;
+      }
+      const double worst = *std::max_element(report.chart_distortion.begin(), report.chart_distortion.end());
+      if (worst < best) {
+        best = worst;
+        since_best = 0;
+      } else if (++since_best == kFutileRounds) {
+        report.stop_reason +=
+            "; " + std::to_string(kFutileRounds) + " rounds of parting in a row did not lower the largest chart energy";
+        return;
+      }
+      const std::vector<double> mean = vertex_means(*setup, energy);
+      std::vector<int> through(setup->disk.num_charts(), -1);
+      for (int f = 0; f < setup->disk.mesh.num_faces(); ++f) {
+        const int c = setup->disk.face_chart[f];
+        for (int k = 0; k < 3 && report.chart_distortion[c] > config.max_distortion; ++k) {
+          const int v = setup->disk.mesh.F(f, k);
+          if (through[c] < 0 || mean[v] > mean[through[c]]) through[c] = v;
+        }
+      }
+      const Eigen::VectorXd from = all.x;
+      int parted = 0;
+      const std::vector<int> source = split_through(&setup->disk, through, &parted);
+      if (parted == 0) {
+        report.stop_reason += (report.stop_reason.empty() ? "" : "; ") + std::string("no chart above it can be parted");
+        return;
+      }
+      report.parted_charts += parted;
+      go_on(round, source, from);
     }
   };
   ParamConfig rough = config;
@@ -228,23 +266,36 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
   rough.optimizer.gradient_tolerance = std::max(config.optimizer.gradient_tolerance, kRoundGradientTolerance);
   optimize(rough);
   setup->warm_start = {};  // its rows open the trace once
-  add_seams(rough);
-  if (is_normal_termination(all.status) && all.status != TerminationStatus::kUserStopped) {
-    // To the requested gradient, as injective as asked. A flip-free map
-    // whose boundary does not cross itself is injective (boundary_contact.h)
-    // and the run goes on from it; one that crosses starts again from the
-    // Tutte map of the opened charts.
+  add_seams(rough, std::numeric_limits<int>::max());
+  const int iterations_flip_free = iterations;
+  const ParamSetup flip_free = *setup;
+  const Eigen::VectorXd flip_free_x = all.x;
+  const SeamReport flip_free_report = report;
+  if (running()) {
+    // To the requested gradient, as injective as asked.
     ParamConfig last = config;
     last.seams = false;
-    Eigen::VectorXd x0 = all.x;
-    if (last.global_injectivity) part_seam_sides(setup->disk.mesh, setup->disk.input_vertex, 0.1, &x0);
-    if (last.global_injectivity && setup->boundary_contact->count_crossings(x0) > 0) {
-      rebuild_problem(last, setup.get(), true);
-    } else {
-      setup->x0 = x0;
-    }
+    start_at(last, all.x, setup.get());
     optimize(last);
-    add_seams(last);
+    // Where the flip-free map met the bound, the globally injective rounds
+    // get as many iterations as the flip-free ones took: more means the
+    // boundary barrier, not the distortion, is what the seams fight, and
+    // the pieces below end sooner.
+    add_seams(last, flip_free_report.bound_met ? 2 * iterations_flip_free : std::numeric_limits<int>::max());
+    if (running() && !report.bound_met && last.global_injectivity && flip_free_report.bound_met) {
+      // The flip-free map met the bound, but no globally injective map of
+      // its charts was found that does: its charts are cut instead where
+      // the flip-free map lies over itself, and each piece goes on from it.
+      *setup = flip_free;
+      report = flip_free_report;
+      std::vector<int> pieces;
+      const int count = overlap_free_pieces(setup->disk.mesh.F, unstack_uv(flip_free_x), setup->disk.face_chart,
+                                            setup->disk.num_charts(), &pieces);
+      report.overlap_pieces = count - setup->disk.num_charts();
+      go_on(last, split_charts(&setup->disk, pieces, count), flip_free_x);
+      add_seams(last, std::numeric_limits<int>::max());
+    }
+    part_charts(last);
   }
   report.seam_length = setup->disk.cut_length * setup->normalization.scale;
   run.result = all;
@@ -268,7 +319,12 @@ std::string seam_description(const SeamReport& report, double max_distortion) {
                 : report.bound_met ? "in every chart"
                                    : "in a chart",
                 one ? "" : "largest ", largest);
-  return text + (report.stop_reason.empty() ? std::string() : ": " + report.stop_reason);
+  std::string pieces;
+  if (report.overlap_pieces > 0)
+    pieces += "; " + std::to_string(report.overlap_pieces) + " charts added where the flip-free map lay over itself";
+  if (report.parted_charts > 0)
+    pieces += "; " + std::to_string(report.parted_charts) + " charts parted in two to meet the bound";
+  return text + pieces + (report.stop_reason.empty() ? std::string() : ": " + report.stop_reason);
 }
 
 }  // namespace akvf

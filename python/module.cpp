@@ -197,6 +197,8 @@ py::dict solve(akvf::Parameterizer& solver, const py::object& uv0, const py::obj
   if (solver.options().cut == akvf::Cut::kSeams) {
     d["seams_added"] = result.seams_added;
     d["seam_length"] = result.seam_length;
+    d["overlap_pieces"] = result.overlap_pieces;
+    d["parted_charts"] = result.parted_charts;
     d["chart_distortion"] = result.chart_distortion;
     d["distortion_bounded"] = result.distortion_bounded;
     d["seam_stop_reason"] = result.seam_stop_reason;

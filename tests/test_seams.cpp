@@ -5,11 +5,13 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "akvf/parameterize.h"
 #include "framework/mesh/initialization.h"
 #include "framework/mesh/mesh_topology.h"
 #include "framework/mesh/mesh_validation.h"
+#include "framework/mesh/overlap_free_pieces.h"
 #include "framework/mesh/seam_opening.h"
 #include "framework/mesh/uv_overlap.h"
 #include "tests/cli_support.h"
@@ -145,4 +147,63 @@ TEST_CASE("uv_of refuses an x of another mesh's size, as a later round's of --cu
   const akvf::Parameterizer solver(sphere.V, sphere.F, options);
   const std::string message = akvf::test::error_message([&] { solver.uv_of(Eigen::VectorXd::Zero(3)); });
   CHECK(message.find("Parameterizer::uv_of: x has 3 values") == 0);
+}
+
+TEST_CASE("a chart whose map winds over itself is cut into disks that do not overlap, the map kept") {
+  // A strip of 40 by 2 cells wound one and a half times around a circle,
+  // flip-free, and beside it a square that does not overlap itself.
+  const int nx = 41, ny = 3;
+  const TriMesh strip = akvf::test::grid_disk(nx, ny);
+  const TriMesh square = akvf::test::grid_disk(3, 3);
+  Eigen::MatrixXi F(strip.num_faces() + square.num_faces(), 3);
+  F << square.F, strip.F.array() + square.num_vertices();
+  Eigen::MatrixXd UV(square.num_vertices() + strip.num_vertices(), 2);
+  UV.topRows(square.num_vertices()) = square.V.leftCols(2).array() + 5;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const double angle = 3 * M_PI * i / (nx - 1), radius = 1.3 - 0.3 * j / (ny - 1);
+      UV.row(square.num_vertices() + j * nx + i) << radius * std::cos(angle), radius * std::sin(angle);
+    }
+  std::vector<int> face_chart(F.rows(), 1);
+  std::fill(face_chart.begin(), face_chart.begin() + square.num_faces(), 0);
+  REQUIRE(akvf::measure_uv_overlap(UV, F, face_chart).overlapped_samples > 0);
+
+  std::vector<int> pieces;
+  const int count = akvf::overlap_free_pieces(F, UV, face_chart, 2, &pieces);
+  CHECK(count == 3);  // the square whole, the strip in two
+  for (int f = 0; f < square.num_faces(); ++f) CHECK(pieces[f] == 0);
+  CHECK(akvf::measure_uv_overlap(UV, F, pieces).overlapped_samples == 0);
+  for (int p = 1; p < count; ++p) {
+    std::vector<int> rows;
+    for (int f = 0; f < F.rows(); ++f)
+      if (pieces[f] == p) rows.push_back(f);
+    Eigen::MatrixXi piece(rows.size(), 3);
+    for (std::size_t r = 0; r < rows.size(); ++r) piece.row(r) = F.row(rows[r]);
+    std::set<int> vertices(piece.data(), piece.data() + piece.size());
+    CHECK(akvf::count_components(piece, UV.rows()) == 1);
+    CHECK(static_cast<int>(vertices.size()) - akvf::edge_topology(piece).num_edges + piece.rows() == 1);
+  }
+}
+
+TEST_CASE("--cut seams on a sphere with spikes: the bound in every chart, no overlap, by seams or by pieces") {
+  // Every 53rd vertex of a subdivided octahedron, or every 7th of a coarser
+  // one, pushed out to three times the radius: thin cones whose flip-free
+  // maps wind over each other.
+  for (const auto& [rounds, every] : {std::pair{4, 53}, std::pair{3, 7}}) {
+    CAPTURE(every);
+    TriMesh spiky = akvf::test::sphere(rounds);
+    for (int v = every / 3; v < spiky.num_vertices(); v += every) spiky.V.row(v) *= 3;
+    akvf::ParameterizeOptions options;
+    options.cut = akvf::Cut::kSeams;
+    const akvf::ParameterizeResult r = akvf::parameterize(spiky.V, spiky.F, options);
+    CAPTURE(r.message);
+    CHECK(akvf::is_normal_termination(r.status));
+    CHECK(r.distortion_bounded);
+    CHECK(r.boundary_crossings == 0);
+    CHECK(r.overlap_fraction == 0);
+    CHECK(akvf::count_inverted_triangles(r.uv_faces, r.uv) == 0);
+    for (double e : r.chart_distortion) CHECK(e <= options.max_distortion);
+    CHECK(r.seam_stop_reason.empty());
+    if (every == 7) CHECK(r.parted_charts > 0);  // seams and pieces alone leave a chart above the bound
+  }
 }

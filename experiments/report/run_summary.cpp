@@ -98,7 +98,9 @@ Json seam_record(const SeamReport& seams, double max_distortion) {
           {"max_distortion", max_distortion},
           {"chart_distortion", seams.chart_distortion},
           {"bound_met", seams.bound_met},
-          {"stop_reason", seams.stop_reason}};
+          {"stop_reason", seams.stop_reason},
+          {"overlap_pieces", seams.overlap_pieces},
+          {"parted_charts", seams.parted_charts}};
 }
 
 Json repair_record(const DiskMesh& disk) {

@@ -1,8 +1,10 @@
 #include "framework/mesh/seam_opening.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <queue>
 #include <unordered_map>
 #include <unordered_set>
@@ -178,6 +180,180 @@ std::vector<int> split_charts(DiskMesh* disk, const std::vector<int>& face_chart
   if (!disk->chart_genus.empty()) disk->chart_genus = std::move(genus);
   if (!disk->chart_input_loops.empty()) disk->chart_input_loops = std::move(input_loops);
   return open_edges(disk, seam, length, face_chart, num_charts);
+}
+
+namespace {
+
+// The 3D-shortest path from `from` along edges that are not boundary edges
+// to a boundary vertex other than `from`, through interior vertices not
+// `blocked`: from, ..., that vertex; empty if there is none.
+std::vector<int> path_to_boundary(const TriMesh& mesh, const std::vector<std::vector<int>>& neighbours,
+                                  const std::vector<char>& on_boundary,
+                                  const std::unordered_set<std::int64_t>& boundary_edges, int from,
+                                  const std::vector<char>& blocked) {
+  const int nv = mesh.num_vertices();
+  std::unordered_map<int, double> distance{{from, 0.0}};
+  std::unordered_map<int, int> parent;
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  queue.push({0.0, from});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[v]) continue;
+    if (v != from && on_boundary[v]) {
+      std::vector<int> path;
+      for (int w = v; w != from; w = parent[w]) path.push_back(w);
+      path.push_back(from);
+      std::reverse(path.begin(), path.end());
+      return path;
+    }
+    for (int w : neighbours[v]) {
+      if (blocked[w] || w == from || boundary_edges.count(undirected_edge_key(v, w, nv))) continue;
+      const double dw = d + (mesh.V.row(v) - mesh.V.row(w)).norm();
+      const auto it = distance.find(w);
+      if (it == distance.end() || dw < it->second) {
+        distance[w] = dw;
+        parent[w] = v;
+        queue.push({dw, w});
+      }
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+std::vector<int> split_through(DiskMesh* disk, const std::vector<int>& through, int* parted) {
+  const TriMesh& mesh = disk->mesh;
+  const int nv = mesh.num_vertices(), nf = mesh.num_faces();
+  std::vector<std::vector<int>> neighbours(nv);
+  std::unordered_map<std::int64_t, int> face_count;
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
+      neighbours[a].push_back(b);
+      ++face_count[undirected_edge_key(a, b, nv)];
+    }
+  std::unordered_set<std::int64_t> boundary_edges;
+  for (const auto& [key, count] : face_count)
+    if (count == 1) boundary_edges.insert(key);
+  const std::vector<char> on_boundary = boundary_vertices(mesh.F, nv);
+  std::unordered_set<std::int64_t> cut;
+  for (std::size_t c = 0; c < through.size(); ++c) {
+    if (through[c] < 0) continue;
+    // From the vertex, or else (a corner of a single triangle on the
+    // boundary has no path) from a neighbour.
+    std::vector<int> candidates{through[c]};
+    candidates.insert(candidates.end(), neighbours[through[c]].begin(), neighbours[through[c]].end());
+    for (int v : candidates) {
+      std::vector<char> blocked(nv, 0);
+      std::vector<int> chord = path_to_boundary(mesh, neighbours, on_boundary, boundary_edges, v, blocked);
+      if (!chord.empty() && !on_boundary[v]) {
+        for (int w : chord) blocked[w] = w != v;
+        const std::vector<int> other = path_to_boundary(mesh, neighbours, on_boundary, boundary_edges, v, blocked);
+        std::reverse(chord.begin(), chord.end());
+        chord.insert(chord.end(), other.begin() + (other.empty() ? 0 : 1), other.end());
+        if (other.empty()) chord.clear();
+      }
+      if (chord.empty()) continue;
+      for (std::size_t i = 0; i + 1 < chord.size(); ++i) cut.insert(undirected_edge_key(chord[i], chord[i + 1], nv));
+      break;
+    }
+  }
+  // The faces of each parted chart reached from its first face without
+  // crossing the cut keep its number; the others get a new one.
+  std::vector<std::vector<int>> faces_of(nv);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) faces_of[mesh.F(f, k)].push_back(f);
+  std::vector<int> face_chart = disk->face_chart;
+  std::vector<char> reached(nf, 0), parted_chart(disk->num_charts(), 0);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3 && !cut.empty(); ++k)
+      if (cut.count(undirected_edge_key(mesh.F(f, k), mesh.F(f, (k + 1) % 3), nv))) parted_chart[face_chart[f]] = 1;
+  std::vector<char> started(disk->num_charts(), 0);
+  for (int seed = 0; seed < nf; ++seed) {
+    const int chart = disk->face_chart[seed];
+    if (!parted_chart[chart] || started[chart]) continue;
+    started[chart] = 1;
+    std::vector<int> stack{seed};
+    reached[seed] = 1;
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
+        if (cut.count(undirected_edge_key(a, b, nv))) continue;
+        for (int g : faces_of[a])
+          if (!reached[g] && disk->face_chart[g] == chart &&
+              (mesh.F(g, 0) == b || mesh.F(g, 1) == b || mesh.F(g, 2) == b)) {
+            reached[g] = 1;
+            stack.push_back(g);
+          }
+      }
+    }
+  }
+  int count = disk->num_charts();
+  std::vector<int> second(disk->num_charts(), -1);
+  for (int f = 0; f < nf; ++f) {
+    const int chart = disk->face_chart[f];
+    if (!parted_chart[chart] || reached[f]) continue;
+    if (second[chart] < 0) second[chart] = count++;
+    face_chart[f] = second[chart];
+  }
+  if (parted) *parted = count - disk->num_charts();
+  return split_charts(disk, face_chart, count);
+}
+
+void part_seam_sides(const DiskMesh& disk, double fraction, Eigen::VectorXd* x) {
+  const TriMesh& mesh = disk.mesh;
+  const std::vector<int>& input_vertex = disk.input_vertex;
+  const int nv = static_cast<int>(input_vertex.size());
+  std::vector<Eigen::Vector2d> direction(nv, Eigen::Vector2d::Zero());
+  std::vector<double> height(nv, std::numeric_limits<double>::infinity());
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    Eigen::Vector2d p[3];
+    for (int k = 0; k < 3; ++k) p[k] = x->segment<2>(2 * mesh.F(f, k));
+    const double twice_area = (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.F(f, k);
+      height[v] = std::min(height[v], twice_area / (p[(k + 1) % 3] - p[(k + 2) % 3]).norm());
+    }
+  }
+  // The loops keep the chart to their left: the inner angle at a vertex
+  // turns counter-clockwise from the edge to the next vertex to the edge to
+  // the previous one.
+  for (const std::vector<int>& loop : disk.boundary_loops) {
+    const int n = static_cast<int>(loop.size());
+    for (int i = 0; i < n && n > 2; ++i) {
+      const Eigen::Vector2d c = x->segment<2>(2 * loop[i]);
+      const Eigen::Vector2d to_next = x->segment<2>(2 * loop[(i + 1) % n]) - c;
+      const Eigen::Vector2d to_previous = x->segment<2>(2 * loop[(i + n - 1) % n]) - c;
+      double angle =
+          std::atan2(to_next.x() * to_previous.y() - to_next.y() * to_previous.x(), to_next.dot(to_previous));
+      if (angle <= 0) angle += 2 * M_PI;
+      const double half = 0.5 * angle, length = to_next.norm();
+      if (length > 0)
+        direction[loop[i]] = Eigen::Vector2d(std::cos(half) * to_next.x() - std::sin(half) * to_next.y(),
+                                             std::sin(half) * to_next.x() + std::cos(half) * to_next.y()) /
+                             length;
+    }
+  }
+  // The copies of one input vertex, consecutive in `order`.
+  std::vector<int> order(nv);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return input_vertex[a] < input_vertex[b]; });
+  std::vector<Eigen::Vector2d> move(nv, Eigen::Vector2d::Zero());
+  for (int i = 0, j = 0; i < nv; i = j) {
+    for (j = i + 1; j < nv && input_vertex[order[j]] == input_vertex[order[i]];) ++j;
+    for (int a = i; a < j; ++a)
+      for (int b = i; b < j; ++b) {
+        const int v = order[a], w = order[b];
+        const double step = fraction * height[v];
+        if (v != w && (x->segment<2>(2 * v) - x->segment<2>(2 * w)).norm() < step) move[v] = step * direction[v];
+      }
+  }
+  for (int v = 0; v < nv; ++v) x->segment<2>(2 * v) += move[v];
 }
 
 }  // namespace akvf

@@ -3,6 +3,7 @@
 // interior edges from an interior vertex to the chart's boundary, and the
 // chart opened along it (a slit: the chart stays a disk, its boundary loop
 // now running down one side of the path and back up the other).
+#include <Eigen/Core>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,8 @@ struct SeamReport {
   std::vector<double> chart_distortion;  // per chart: symmetric Dirichlet energy of its final map
   bool bound_met = false;                // every chart at most max_distortion
   std::string stop_reason;               // why seams stopped before the bound held (empty if it held)
+  int overlap_pieces = 0;                // charts added where a flip-free map that met the bound lay over itself
+  int parted_charts = 0;                 // charts parted in two (split_through) to meet the bound
 };
 
 // Per start in turn, the shortest path (3D edge lengths) from it to its
@@ -38,5 +41,27 @@ std::vector<int> open_seams(DiskMesh* disk, const std::vector<std::vector<int>>&
 // disk->face_chart), which becomes its face_chart; updated and returned as
 // open_seams does.
 std::vector<int> split_charts(DiskMesh* disk, const std::vector<int>& face_chart, int num_charts);
+
+// Opens `disk` across each chart c with through[c] >= 0 along a path of
+// interior edges from boundary to boundary through vertex through[c] (the
+// 3D-shortest on either side of an interior vertex; from a boundary vertex,
+// to the nearest other boundary vertex), its inner vertices interior, so
+// that the chart parts into two disks: the first (with the chart's first
+// face) keeps its number, the second is numbered after the charts. A chart
+// with no such path (one triangle) stays whole. Updated and returned as
+// open_seams does; *parted (if given) = the charts parted.
+std::vector<int> split_through(DiskMesh* disk, const std::vector<int>& through, int* parted = nullptr);
+
+// Each copy of an input vertex that lies within `fraction` (below 1) of its
+// smallest triangle height of another copy in the map x (the two sides of
+// a seam that has not opened, or barely) moved into its own triangles, so
+// that the seam's sides no longer touch (global injectivity's boundary
+// barrier is infinite where they do): by `fraction` of that height along
+// the bisector of its inner angle on its boundary loop. Its own fan of
+// triangles holds that segment (each triangle's height at the vertex is its
+// distance to the opposite edge), so the copy flips none of its triangles,
+// and in a map whose fans do not overlap, the copies, each moved into its
+// own fan, do not cross each other.
+void part_seam_sides(const DiskMesh& disk, double fraction, Eigen::VectorXd* x);
 
 }  // namespace akvf

@@ -64,8 +64,10 @@ class Result:
     with a cut ``packing_splits`` (straight cuts that split charts for the
     packing, ``min_coverage``); with cut="seams" also ``seams_added``,
     ``seam_length`` (over the square root of the area), ``chart_distortion``
-    (each chart's symmetric Dirichlet energy), ``distortion_bounded`` and
-    ``seam_stop_reason``.
+    (each chart's symmetric Dirichlet energy), ``distortion_bounded``,
+    ``seam_stop_reason``, ``overlap_pieces`` and ``parted_charts`` (charts
+    added where the flip-free map lay over itself, or parted in two to meet
+    the bound).
     """
 
     def __init__(self, fields):
