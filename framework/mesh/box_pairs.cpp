@@ -39,15 +39,23 @@ void for_each_overlapping_pair(const std::vector<Box2>& a, const std::vector<Box
   auto row = [&](double y) {
     return static_cast<long long>(std::clamp(std::floor((y - all.min_y) / cell_y), 0.0, double(ny - 1)));
   };
-  // (cell, box of b) for every cell each box of b covers, sorted by cell.
-  std::vector<std::pair<long long, int>> entries;
-  entries.reserve(2 * b.size());
-  for (int j = 0; j < static_cast<int>(b.size()); ++j) {
-    if (!finite(b[j])) continue;
-    for (long long y = row(b[j].min_y); y <= row(b[j].max_y); ++y)
-      for (long long x = column(b[j].min_x); x <= column(b[j].max_x); ++x) entries.push_back({y * nx + x, j});
-  }
-  std::sort(entries.begin(), entries.end());
+  // The boxes of b in each cell, in increasing order, as compressed rows:
+  // cell c holds items[first[c] .. first[c + 1]). There are at most about
+  // 12 count cells (the cell is at least floor_size and max(width,
+  // height) / (4 count)).
+  const long long cells = nx * ny;
+  std::vector<int> first(static_cast<std::size_t>(cells) + 1, 0);
+  auto for_each_cell = [&](const Box2& box, auto&& visit_cell) {
+    for (long long y = row(box.min_y); y <= row(box.max_y); ++y)
+      for (long long x = column(box.min_x); x <= column(box.max_x); ++x) visit_cell(y * nx + x);
+  };
+  for (const Box2& box : b)
+    if (finite(box)) for_each_cell(box, [&](long long c) { ++first[c + 1]; });
+  for (long long c = 0; c < cells; ++c) first[c + 1] += first[c];
+  std::vector<int> items(static_cast<std::size_t>(first[cells]));
+  std::vector<int> next(first.begin(), first.end() - 1);
+  for (int j = 0; j < static_cast<int>(b.size()); ++j)
+    if (finite(b[j])) for_each_cell(b[j], [&](long long c) { items[next[c]++] = j; });
   std::vector<int> candidates, seen(b.size(), -1);
   for (int i = 0; i < static_cast<int>(a.size()); ++i) {
     const Box2& box = a[i];
@@ -55,16 +63,14 @@ void for_each_overlapping_pair(const std::vector<Box2>& a, const std::vector<Box
         box.min_y > all.max_y)
       continue;
     candidates.clear();
-    for (long long y = row(box.min_y); y <= row(box.max_y); ++y) {
-      const long long first = y * nx + column(box.min_x), last = y * nx + column(box.max_x);
-      auto it = std::lower_bound(entries.begin(), entries.end(), std::pair<long long, int>{first, -1});
-      for (; it != entries.end() && it->first <= last; ++it) {
-        const int j = it->second;
+    for_each_cell(box, [&](long long c) {
+      for (int k = first[c]; k < first[c + 1]; ++k) {
+        const int j = items[k];
         if (seen[j] == i) continue;
         seen[j] = i;
         if (box.overlaps(b[j])) candidates.push_back(j);
       }
-    }
+    });
     std::sort(candidates.begin(), candidates.end());
     for (int j : candidates) visit(i, j);
   }

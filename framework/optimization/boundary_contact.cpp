@@ -104,26 +104,36 @@ BoundaryContact::BoundaryContact(const std::vector<std::vector<int>>& loops, con
 
 double BoundaryContact::first_contact_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d, double horizon) const {
   if (!(horizon > 0) || !std::isfinite(horizon) || edges_.empty()) return kUnbounded;
-  // The sweep over [0, horizon] in slices along which no boundary vertex
-  // moves much farther than a boundary edge is long: a box swept over the
-  // whole horizon can cover most of the chart (a fifth of all vertex-edge
-  // pairs on hilbert_b), a slice's covers the vertex's neighbourhood. The
-  // slices are visited in order and the search ends at the first contact,
-  // so the result is the unsliced sweep's.
+  // The sweep over [0, horizon] in slices along which the boundary vertices
+  // move about a boundary edge's length (root mean square): a box swept
+  // over the whole horizon can cover most of the chart (a fifth of all
+  // vertex-edge pairs on hilbert_b), a slice's covers the vertex's
+  // neighbourhood. The slices are visited in order and the search ends at
+  // the first contact; each pair is solved once, over all of [0, horizon]
+  // left, in the first slice where its boxes meet, so the result is the
+  // unsliced sweep's.
   double motion = 0, length = 0;
   for (const Edge& e : edges_) {
-    motion = std::max(motion, point(d, e.a).norm());
+    motion += point(d, e.a).squaredNorm();
     length += (point(x, e.b) - point(x, e.a)).norm();
   }
+  motion = std::sqrt(motion / static_cast<double>(edges_.size()));
   length /= static_cast<double>(edges_.size());
   constexpr int kMostSlices = 64;
   const double wanted = length > 0 ? std::ceil(horizon * motion / length) : 1;
   const int slices = std::isfinite(wanted) ? static_cast<int>(std::clamp(wanted, 1.0, double(kMostSlices))) : 1;
   std::vector<Box2> swept_corners(corners_.size()), swept_edges(edges_.size());
+  std::vector<Box2> earlier_corners, earlier_edges;  // the slice before's
   double step = kUnbounded;
   for (int k = 0; k < slices; ++k) {
     const double t0 = horizon * k / slices, t1 = k + 1 == slices ? horizon : horizon * (k + 1) / slices;
     if (t0 > step) break;
+    if (k > 0) {
+      earlier_corners.swap(swept_corners);
+      earlier_edges.swap(swept_edges);
+      swept_corners.resize(corners_.size());
+      swept_edges.resize(edges_.size());
+    }
     for (size_t i = 0; i < corners_.size(); ++i) {
       const int v = corners_[i].vertex;
       swept_corners[i] = bounds({point(x, v) + t0 * point(d, v), point(x, v) + t1 * point(d, v)}, 0);
@@ -138,6 +148,9 @@ double BoundaryContact::first_contact_step(const Eigen::VectorXd& x, const Eigen
       const Corner& c = corners_[i];
       const Edge& e = edges_[j];
       if (c.loop != e.loop || c.vertex == e.a || c.vertex == e.b) return;
+      // A pair whose boxes met in the slice before was solved there, over
+      // the whole interval left.
+      if (k > 0 && earlier_corners[i].overlaps(earlier_edges[j])) return;
       const double t = vertex_edge_contact(point(x, c.vertex), point(d, c.vertex), point(x, e.a), point(d, e.a),
                                            point(x, e.b), point(d, e.b), std::min(horizon, step));
       step = std::min(step, t);
