@@ -2,8 +2,9 @@
 # --cut seams on the shared closed meshes and on the disk meshes whose
 # distortion is above the bound (docs/results.md, "Seams that bound the
 # distortion"): the energy with the first cut alone, then with the seams,
-# as a Markdown table. --large adds bunny_closed subdivided twice (midpoint
-# subdivision, 111 456 faces; about 5 minutes).
+# as a Markdown table; also a generated sphere with thin spikes. --large
+# adds bunny_closed subdivided twice (midpoint subdivision, 111 456 faces;
+# about 5 minutes).
 # Usage: bash scripts/seams.sh [--large]   (after scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,9 +12,37 @@ source scripts/shared_meshes.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-echo "| mesh | faces | --cut auto: energy | --cut seams: seams added, charts (straight cuts for the packing), seam length / sqrt(area), largest chart energy, coverage, inverted, overlap, optimizer s, wall s |"
+echo "| mesh | faces | --cut auto: energy | --cut seams: seams added, charts (straight cuts for the packing, pieces where the flip-free map overlapped, parted), seam length / sqrt(area), largest chart energy, coverage, inverted, overlap, optimizer s, wall s |"
 echo "|---|---|---|---|"
 meshes=("$DATA/tri/cow_closed.off" "$DATA/tri/bunny_closed.off" "$DATA/tri/camelhead.off")
+# A generated sphere with thin spikes, whose flip-free maps wind over each
+# other: an octahedron subdivided four times (midpoint, onto the unit
+# sphere), every 29th vertex pushed out to three times the radius.
+/usr/bin/python3 - "$work/spiky_sphere.off" <<'PY'
+import math, sys
+V = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]
+F = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)]
+for _ in range(4):
+    mid, out = {}, []
+    def m(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in mid:
+            mid[key] = len(V)
+            p = [(s + t) / 2 for s, t in zip(V[a], V[b])]
+            r = math.sqrt(sum(c * c for c in p))
+            V.append(tuple(c / r for c in p))
+        return mid[key]
+    for a, b, c in F:
+        ab, bc, ca = m(a, b), m(b, c), m(c, a)
+        out += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+    F = out
+V = [tuple(3 * c for c in v) if i % 29 == 9 else v for i, v in enumerate(V)]
+with open(sys.argv[1], "w") as f:
+    f.write("OFF\n%d %d 0\n" % (len(V), len(F)))
+    f.writelines("%.9g %.9g %.9g\n" % v for v in V)
+    f.writelines("3 %d %d %d\n" % t for t in F)
+PY
+meshes+=("$work/spiky_sphere.off")
 if [ "${1:-}" = "--large" ]; then
   /usr/bin/python3 - "$DATA/tri/bunny_closed.off" "$work/bunny_closed_x16.off" <<'PY'
 import sys
@@ -52,8 +81,9 @@ mesh, auto, seams, wall = sys.argv[1], json.load(open(sys.argv[2])), json.load(o
 s, o = seams["seams"], seams["overlap"]
 overlap = "none" if o["boundary_crossings"] == 0 and o["area_fraction"] == 0 else "%d crossings" % o["boundary_crossings"]
 c = seams["cut"]
-print("| %s | %d | %.4f | %d, %d (%d), %.2f, %.4f, %.1f %%, %d, %s, %.2f, %.2f |" % (
+print("| %s | %d | %.4f | %d, %d (%d, %d, %d), %.2f, %.4f, %.1f %%, %d, %s, %.2f, %.2f |" % (
     mesh, seams["elements"], auto["distortion_energy"], s["added"], c["charts"], c["packing_splits"],
+    s["overlap_pieces"], s["parted_charts"],
     s["seam_length"], max(s["chart_distortion"]), 100 * seams["uv_coverage"], seams["max_flips"], overlap,
     seams["seconds"], wall))
 PY

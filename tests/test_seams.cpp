@@ -189,7 +189,8 @@ TEST_CASE("--cut seams on a sphere with spikes: the bound in every chart, no ove
   // Every 53rd vertex of a subdivided octahedron, or every 7th of a coarser
   // one, pushed out to three times the radius: thin cones whose flip-free
   // maps wind over each other.
-  for (const auto& [rounds, every] : {std::pair{4, 53}, std::pair{3, 7}}) {
+  for (const std::pair<int, int>& spikes : {std::pair{4, 53}, std::pair{3, 7}}) {
+    const int rounds = spikes.first, every = spikes.second;
     CAPTURE(every);
     TriMesh spiky = akvf::test::sphere(rounds);
     for (int v = every / 3; v < spiky.num_vertices(); v += every) spiky.V.row(v) *= 3;
