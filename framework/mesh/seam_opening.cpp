@@ -240,6 +240,7 @@ std::vector<int> split_through(DiskMesh* disk, const std::vector<int>& through, 
     if (count == 1) boundary_edges.insert(key);
   const std::vector<char> on_boundary = boundary_vertices(mesh.F, nv);
   std::unordered_set<std::int64_t> cut;
+  std::vector<char> blocked(nv, 0);
   for (std::size_t c = 0; c < through.size(); ++c) {
     if (through[c] < 0) continue;
     // From the vertex, or else (a corner of a single triangle on the
@@ -247,11 +248,11 @@ std::vector<int> split_through(DiskMesh* disk, const std::vector<int>& through, 
     std::vector<int> candidates{through[c]};
     candidates.insert(candidates.end(), neighbours[through[c]].begin(), neighbours[through[c]].end());
     for (int v : candidates) {
-      std::vector<char> blocked(nv, 0);
       std::vector<int> chord = path_to_boundary(mesh, neighbours, on_boundary, boundary_edges, v, blocked);
       if (!chord.empty() && !on_boundary[v]) {
         for (int w : chord) blocked[w] = w != v;
         const std::vector<int> other = path_to_boundary(mesh, neighbours, on_boundary, boundary_edges, v, blocked);
+        for (int w : chord) blocked[w] = 0;
         std::reverse(chord.begin(), chord.end());
         chord.insert(chord.end(), other.begin() + (other.empty() ? 0 : 1), other.end());
         if (other.empty()) chord.clear();
