@@ -222,6 +222,9 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
   // The charts still above the bound parted in two through their most
   // distorted vertex, until every chart meets it: a single triangle, where
   // parting ends, maps isometrically.
+  auto add_reason = [&](const std::string& reason) {
+    report.stop_reason += (report.stop_reason.empty() ? "" : "; ") + reason;
+  };
   auto part_charts = [&](const ParamConfig& round) {
     double best = std::numeric_limits<double>::infinity();
     int since_best = 0;
@@ -236,8 +239,8 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
         best = worst;
         since_best = 0;
       } else if (++since_best == kFutileRounds) {
-        report.stop_reason +=
-            "; " + std::to_string(kFutileRounds) + " rounds of parting in a row did not lower the largest chart energy";
+        add_reason(std::to_string(kFutileRounds) +
+                   " rounds of parting in a row did not lower the largest chart energy");
         return;
       }
       const std::vector<double> mean = vertex_means(*setup, energy);
@@ -253,7 +256,7 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
       int parted = 0;
       const std::vector<int> source = split_through(&setup->disk, through, &parted);
       if (parted == 0) {
-        report.stop_reason += (report.stop_reason.empty() ? "" : "; ") + std::string("no chart above it can be parted");
+        add_reason("no chart above it can be parted");
         return;
       }
       report.parted_charts += parted;
