@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 #include "akvf/catalog.h"
 #include "framework/mesh/overlap_free_pieces.h"
@@ -270,10 +271,12 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
   optimize(rough);
   setup->warm_start = {};  // its rows open the trace once
   add_seams(rough, std::numeric_limits<int>::max());
+  // The flip-free end, kept where it met the bound for the pieces below.
   const int iterations_flip_free = iterations;
-  const ParamSetup flip_free = *setup;
-  const Eigen::VectorXd flip_free_x = all.x;
   const SeamReport flip_free_report = report;
+  std::optional<ParamSetup> flip_free;
+  if (config.global_injectivity && report.bound_met) flip_free = *setup;
+  const Eigen::VectorXd flip_free_x = all.x;
   if (running()) {
     // To the requested gradient, as injective as asked.
     ParamConfig last = config;
@@ -284,12 +287,12 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
     // get as many iterations as the flip-free ones took: more means the
     // boundary barrier, not the distortion, is what the seams fight, and
     // the pieces below end sooner.
-    add_seams(last, flip_free_report.bound_met ? 2 * iterations_flip_free : std::numeric_limits<int>::max());
-    if (running() && !report.bound_met && last.global_injectivity && flip_free_report.bound_met) {
+    add_seams(last, flip_free ? 2 * iterations_flip_free : std::numeric_limits<int>::max());
+    if (running() && !report.bound_met && flip_free) {
       // The flip-free map met the bound, but no globally injective map of
       // its charts was found that does: its charts are cut instead where
       // the flip-free map lies over itself, and each piece goes on from it.
-      *setup = flip_free;
+      *setup = *flip_free;
       report = flip_free_report;
       std::vector<int> pieces;
       const int count = overlap_free_pieces(setup->disk.mesh.F, unstack_uv(flip_free_x), setup->disk.face_chart,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <unordered_map>
 
 #include "akvf/error.h"
 
@@ -113,6 +114,23 @@ VertexFaces vertex_faces(const Eigen::MatrixXi& F, int num_vertices) {
   for (int f = 0; f < F.rows(); ++f)
     for (int k = 0; k < corners; ++k) result.face_corner[fill[F(f, k)]++] = corners * f + k;
   return result;
+}
+
+std::vector<std::array<int, 3>> faces_across_edges(const Eigen::MatrixXi& F, int num_vertices) {
+  const int nf = static_cast<int>(F.rows());
+  std::vector<std::array<int, 3>> across(nf, {-1, -1, -1});
+  std::unordered_map<std::int64_t, int> first_side;  // edge -> 3 f + k of its first face
+  first_side.reserve(3 * static_cast<std::size_t>(nf));
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto [it, inserted] =
+          first_side.emplace(undirected_edge_key(F(f, k), F(f, (k + 1) % 3), num_vertices), 3 * f + k);
+      if (!inserted) {
+        across[f][k] = it->second / 3;
+        across[it->second / 3][it->second % 3] = f;
+      }
+    }
+  return across;
 }
 
 }  // namespace akvf

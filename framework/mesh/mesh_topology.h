@@ -2,6 +2,7 @@
 // Combinatorial queries on triangle meshes: edges, components, boundary loops.
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -63,5 +64,10 @@ struct VertexFaces {
   std::vector<int> face_corner;
 };
 VertexFaces vertex_faces(const Eigen::MatrixXi& F, int num_vertices);
+
+// For each face f and each of its edges k (from corner k to corner k + 1),
+// the other face on that edge, -1 on the boundary (an edge of at most two
+// faces, as after validation).
+std::vector<std::array<int, 3>> faces_across_edges(const Eigen::MatrixXi& F, int num_vertices);
 
 }  // namespace akvf

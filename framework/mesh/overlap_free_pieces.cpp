@@ -3,7 +3,6 @@
 #include <array>
 #include <cmath>
 #include <deque>
-#include <unordered_map>
 
 #include "framework/mesh/box_pairs.h"
 #include "framework/mesh/mesh_topology.h"
@@ -65,17 +64,7 @@ int overlap_free_pieces(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, con
   });
   *pieces = face_chart;
   int count = num_charts;
-  // The face across each edge (f, k) -> (f, k + 1), -1 on the boundary.
-  std::vector<std::array<int, 3>> across(nf, {-1, -1, -1});
-  std::unordered_map<std::int64_t, int> first_side;
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) {
-      const auto [it, inserted] = first_side.emplace(undirected_edge_key(F(f, k), F(f, (k + 1) % 3), nv), 3 * f + k);
-      if (!inserted) {
-        across[f][k] = it->second / 3;
-        across[it->second / 3][it->second % 3] = f;
-      }
-    }
+  const std::vector<std::array<int, 3>> across = faces_across_edges(F, nv);
   std::vector<int> piece(nf, -1);             // the piece being grown of each placed face
   std::vector<int> vertex_piece(nv, -1);      // the last piece a vertex joined
   std::vector<char> numbered(num_charts, 0);  // the chart's first piece keeps its number

@@ -227,18 +227,19 @@ std::vector<int> path_to_boundary(const TriMesh& mesh, const std::vector<std::ve
 std::vector<int> split_through(DiskMesh* disk, const std::vector<int>& through, int* parted) {
   const TriMesh& mesh = disk->mesh;
   const int nv = mesh.num_vertices(), nf = mesh.num_faces();
+  const std::vector<std::array<int, 3>> across = faces_across_edges(mesh.F, nv);
   std::vector<std::vector<int>> neighbours(nv);
-  std::unordered_map<std::int64_t, int> face_count;
+  std::unordered_set<std::int64_t> boundary_edges;
+  std::vector<char> on_boundary(nv, 0);
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
       const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
       neighbours[a].push_back(b);
-      ++face_count[undirected_edge_key(a, b, nv)];
+      if (across[f][k] >= 0) continue;
+      neighbours[b].push_back(a);  // listed once from each side of an interior edge
+      boundary_edges.insert(undirected_edge_key(a, b, nv));
+      on_boundary[a] = on_boundary[b] = 1;
     }
-  std::unordered_set<std::int64_t> boundary_edges;
-  for (const auto& [key, count] : face_count)
-    if (count == 1) boundary_edges.insert(key);
-  const std::vector<char> on_boundary = boundary_vertices(mesh.F, nv);
   std::unordered_set<std::int64_t> cut;
   std::vector<char> blocked(nv, 0);
   for (std::size_t c = 0; c < through.size(); ++c) {
@@ -264,9 +265,6 @@ std::vector<int> split_through(DiskMesh* disk, const std::vector<int>& through, 
   }
   // The faces of each parted chart reached from its first face without
   // crossing the cut keep its number; the others get a new one.
-  std::vector<std::vector<int>> faces_of(nv);
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) faces_of[mesh.F(f, k)].push_back(f);
   std::vector<int> face_chart = disk->face_chart;
   std::vector<char> reached(nf, 0), parted_chart(disk->num_charts(), 0);
   for (int f = 0; f < nf; ++f)
@@ -283,14 +281,10 @@ std::vector<int> split_through(DiskMesh* disk, const std::vector<int>& through, 
       const int f = stack.back();
       stack.pop_back();
       for (int k = 0; k < 3; ++k) {
-        const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
-        if (cut.count(undirected_edge_key(a, b, nv))) continue;
-        for (int g : faces_of[a])
-          if (!reached[g] && disk->face_chart[g] == chart &&
-              (mesh.F(g, 0) == b || mesh.F(g, 1) == b || mesh.F(g, 2) == b)) {
-            reached[g] = 1;
-            stack.push_back(g);
-          }
+        const int g = across[f][k];
+        if (g < 0 || reached[g] || cut.count(undirected_edge_key(mesh.F(f, k), mesh.F(f, (k + 1) % 3), nv))) continue;
+        reached[g] = 1;
+        stack.push_back(g);
       }
     }
   }
