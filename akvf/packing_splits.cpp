@@ -17,14 +17,17 @@ namespace {
 // kChartsPerRound x kCutsPerChart): the rounds are bounded so that a large
 // atlas stays within seconds.
 constexpr int kMaxSplits = 32;
-// A cut adds seams: it is made only if the packing then covers 1 % more
-// (relative) than before.
+// A cut adds seams: it is kept only if the packing then covers 1 % more
+// (relative) than the best before.
 constexpr double kLeastGain = 1.01;
 // The cuts of a chart, least waste first, each round packs to compare.
 constexpr int kCutsPerChart = 4;
 // The charts each round tries, most wasteful first (until one cut of one
 // raises the coverage).
 constexpr int kChartsPerRound = 4;
+// Cuts made past the best packing when none gains: two, so that a chart
+// both wide and tall can be cut across each way before the square shrinks.
+constexpr int kLookAhead = 2;
 
 double packed_coverage(const DiskMesh& disk, Eigen::MatrixXd UV, double gutter) {
   pack_charts(disk.mesh.F, disk.face_chart, disk.num_charts(), &UV, true, gutter);
@@ -49,19 +52,26 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config, Param
   // Faces keep their rows through the cuts: their energies and areas too.
   const Eigen::VectorXd energy = config.seams ? face_symmetric_dirichlet(start, run->result.x) : Eigen::VectorXd();
   const Eigen::VectorXd& weight = start.objective->weights();
-  int splits = 0;
-  while (splits < kMaxSplits && coverage < config.min_coverage) {
+  // The best packing so far; up to kLookAhead cuts past it are made when no
+  // cut raises its coverage: a chart wide and tall may need a cut across
+  // each before the square shrinks.
+  DiskMesh best_disk = disk;
+  Eigen::MatrixXd best_uv = UV;
+  double best_coverage = coverage;
+  int splits = 0, best_splits = 0;
+  while (splits < kMaxSplits && splits - best_splits <= kLookAhead && best_coverage < config.min_coverage) {
     const int charts = disk.num_charts();
     if (splits > 0) waste = chart_waste(disk.mesh.F, UV, disk.face_chart, charts);
     std::vector<int> order(charts);
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return waste[a] > waste[b]; });
-    bool split = false;
-    double best_coverage = 0;
-    DiskMesh best_disk;
-    Eigen::MatrixXd best_uv;
-    const double least_waste = (kLeastGain - 1) * area / coverage;
-    for (int i = 0; i < std::min(charts, kChartsPerRound) && !split && waste[order[i]] >= least_waste; ++i) {
+    // The cut that raises the coverage most, if one raises it kLeastGain
+    // over the best; else the one that leaves the least hull area empty.
+    double gained = 0, freed = 0;
+    DiskMesh next_disk;
+    Eigen::MatrixXd next_uv;
+    const double least_waste = (kLeastGain - 1) * area / best_coverage;
+    for (int i = 0; i < std::min(charts, kChartsPerRound) && gained == 0 && waste[order[i]] >= least_waste; ++i) {
       const int chart = order[i];
       const auto keeps_bound = [&](const ChartSplit& s) {
         if (!config.seams) return true;
@@ -77,19 +87,35 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config, Param
         Eigen::MatrixXd trial_uv(static_cast<Eigen::Index>(source.size()), 2);
         for (std::size_t v = 0; v < source.size(); ++v) trial_uv.row(v) = UV.row(source[v]);
         const double trial_coverage = packed_coverage(trial, trial_uv, start.gutter);
-        if (trial_coverage < kLeastGain * std::max(coverage, best_coverage)) continue;
-        best_coverage = trial_coverage;
-        best_disk = std::move(trial);
-        best_uv = std::move(trial_uv);
-        split = true;
+        const bool gains = trial_coverage >= kLeastGain * std::max(best_coverage, gained);
+        const bool frees = gained == 0 && waste[chart] - cut.waste > freed;
+        if (!gains && !frees) continue;
+        if (gains) {
+          gained = trial_coverage;
+          coverage = trial_coverage;
+        } else {
+          freed = waste[chart] - cut.waste;
+          coverage = trial_coverage;
+        }
+        next_disk = std::move(trial);
+        next_uv = std::move(trial_uv);
       }
     }
-    if (!split) break;
-    disk = std::move(best_disk);
-    UV = std::move(best_uv);
-    coverage = best_coverage;
+    if (gained == 0 && freed == 0) break;
+    disk = std::move(next_disk);
+    UV = std::move(next_uv);
     ++splits;
+    if (gained > 0) {
+      best_disk = disk;
+      best_uv = UV;
+      best_coverage = coverage;
+      best_splits = splits;
+    }
   }
+  disk = std::move(best_disk);
+  UV = std::move(best_uv);
+  coverage = best_coverage;
+  splits = best_splits;
   // One chart (a disk, or seams that bound the distortion in one) is kept
   // whole unless its pieces reach the coverage: a partial gain is not worth
   // turning it into an atlas.

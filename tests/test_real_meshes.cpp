@@ -17,6 +17,7 @@
 #include "akvf/mesh_io.h"
 #include "akvf/parameterize.h"
 #include "akvf/tet_mesh_io.h"
+#include "framework/mesh/chart_layout.h"
 #include "framework/mesh/initialization.h"
 #include "io/constraints_io.h"
 #include "tests/test_support.h"
@@ -97,7 +98,9 @@ TEST_CASE("the closed meshes are cut to a disk and parameterized without an inve
   }
 }
 
-TEST_CASE("--cut seams bounds the closed meshes' symmetric Dirichlet energy at 4.2, flip-free, every face kept") {
+TEST_CASE(
+    "--cut seams bounds the closed meshes' symmetric Dirichlet energy at 4.2, flip-free, every face kept, packed to "
+    "the coverage asked") {
   const std::string dir = akvf::test::data_dir();
   if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
   for (const char* name : {"cow_closed.off", "bunny_closed.off"}) {
@@ -119,6 +122,8 @@ TEST_CASE("--cut seams bounds the closed meshes' symmetric Dirichlet energy at 4
     CHECK(r.boundary_crossings == 0);
     REQUIRE(r.uv_faces.rows() == mesh.num_faces());
     CHECK(akvf::count_inverted_triangles(r.uv_faces, r.uv) == 0);
+    // Charts split by straight cuts that keep the bound (min_coverage 0.6).
+    CHECK(akvf::square_coverage(r.uv_faces, r.uv) >= options.min_coverage);
   }
 }
 

@@ -2,8 +2,10 @@
 // Charts split until their packing covers ParamConfig::min_coverage of the
 // UV square (framework/mesh/chart_splitting.h): each round, of the charts
 // in order of the area their convex hull leaves empty, the first whose best
-// straight cut raises the packed coverage by 1 % is cut; with --cut seams
-// only cuts whose pieces keep the distortion bound count. A single chart is
+// straight cut raises the packed coverage by 1 % over the best so far is
+// cut; if none does, the cut that leaves the least hull area empty, up to
+// two such cuts past the best packing, which is kept. With --cut seams only
+// cuts whose pieces keep the distortion bound count. A single chart is
 // split only if its pieces reach min_coverage. The map is unchanged;
 // docs/design.md, "Cutting closed and higher-genus meshes".
 #include "akvf/internal/parameterization.h"

@@ -40,8 +40,8 @@ bool touches(const std::array<Eigen::RowVector2d, 3>& t, double x0, double y0, d
     const Eigen::RowVector2d n(-e.y(), e.x());
     const double third = n.dot(t[(k + 2) % 3] - t[k]);
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const Eigen::RowVector2d corner : {Eigen::RowVector2d(x0, y0), Eigen::RowVector2d(x0 + h, y0),
-                                            Eigen::RowVector2d(x0, y0 + h), Eigen::RowVector2d(x0 + h, y0 + h)}) {
+    for (const Eigen::RowVector2d& corner : {Eigen::RowVector2d(x0, y0), Eigen::RowVector2d(x0 + h, y0),
+                                             Eigen::RowVector2d(x0, y0 + h), Eigen::RowVector2d(x0 + h, y0 + h)}) {
       const double d = n.dot(corner - t[k]);
       lo = std::min(lo, d);
       hi = std::max(hi, d);
@@ -104,42 +104,32 @@ Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Ei
   return mask;
 }
 
-// The atlas: rows of cells, `width` wide, as high as it needs. Each row
-// keeps, per cell, how many free cells start there, so a run of a mask is
-// tested in one look.
+// The atlas: rows of cells, at most `width` wide, as high as it needs. Each
+// row keeps, per cell, how many free cells start there, so a run of a mask
+// is tested in one look; rows above the highest placed mask are free.
 class Atlas {
  public:
   explicit Atlas(int width) : width_(width) {}
 
-  // 0 if m fits with its corner at (x, y); otherwise how far right the next
-  // place that may fit is (every place before it fails on the same run).
-  int misses(const Mask& m, int x, int y) const {
-    for (int j = 0; j < m.height && y + j < static_cast<int>(free_.size()); ++j) {
-      const std::vector<int>& free = free_[y + j];
-      for (const auto& [begin, end] : m.runs[j])
-        if (free[x + begin] < end - begin) return free[x + begin] + 1;
-    }
-    return 0;
-  }
+  int width() const { return width_; }
+  int height() const { return static_cast<int>(free_.size()); }
 
-  // The first place (lowest row, then leftmost) where m fits.
-  std::array<int, 2> first_fit(const Mask& m) const {
-    for (int y = first_open_;; ++y) {
-      // A row whose longest free run is shorter than the mask's there: no x fits.
-      bool possible = true;
-      for (int j = 0; possible && j < m.height && y + j < static_cast<int>(free_.size()); ++j)
-        possible = longest_free_[y + j] >= m.longest[j];
-      if (!possible) continue;
-      for (int x = 0; x + m.width <= width_;) {
-        const int skip = misses(m, x, y);
-        if (skip == 0) return {x, y};
-        x += skip;
-      }
+  // The leftmost x at which m fits with its corner in row y and its right
+  // side at most `limit`, or -1.
+  int leftmost_fit(const Mask& m, int y, int limit) const {
+    // A row whose longest free run is shorter than the mask's there: no x fits.
+    for (int j = 0; j < m.height && y + j < height(); ++j)
+      if (longest_free_[y + j] < m.longest[j]) return -1;
+    for (int x = 0; x + m.width <= std::min(limit, width_);) {
+      const int skip = misses(m, x, y);
+      if (skip == 0) return x;
+      x += skip;
     }
+    return -1;
   }
 
   void place(const Mask& m, int x, int y) {
-    while (static_cast<int>(free_.size()) < y + m.height) {
+    while (height() < y + m.height) {
       std::vector<int> row(width_);
       for (int i = 0; i < width_; ++i) row[i] = width_ - i;
       free_.push_back(std::move(row));
@@ -153,15 +143,58 @@ class Atlas {
         if (free[i] > 0) free[i] = i + 1 < width_ ? free[i + 1] + 1 : 1;
       longest_free_[y + j] = *std::max_element(free.begin(), free.end());
     }
-    while (first_open_ < static_cast<int>(free_.size()) && longest_free_[first_open_] == 0) ++first_open_;
+    while (first_open_ < height() && longest_free_[first_open_] == 0) ++first_open_;
   }
 
+  int first_open() const { return first_open_; }
+
  private:
+  // 0 if m fits with its corner at (x, y); otherwise how far right the next
+  // place that may fit is (every place before it fails on the same run).
+  int misses(const Mask& m, int x, int y) const {
+    for (int j = 0; j < m.height && y + j < height(); ++j) {
+      const std::vector<int>& free = free_[y + j];
+      for (const auto& [begin, end] : m.runs[j])
+        if (free[x + begin] < end - begin) return free[x + begin] + 1;
+    }
+    return 0;
+  }
+
   int width_;
   std::vector<std::vector<int>> free_;
   std::vector<int> longest_free_;  // per row
   int first_open_ = 0;
 };
+
+// Where a mask goes, and the side of the square (in cells) around it and
+// the masks placed before.
+struct Place {
+  int x = 0, y = 0, side = 0;
+};
+
+// The lowest row, then leftmost, where m fits within `width` cells.
+Place first_fit(const Atlas& atlas, const Mask& m, int width, int side) {
+  for (int y = atlas.first_open();; ++y)
+    if (const int x = atlas.leftmost_fit(m, y, width); x >= 0)
+      return {x, y, std::max(side, std::max(x + m.width, y + m.height))};
+}
+
+// Inside the square around the masks placed so far if m fits there (the
+// lowest row, then leftmost); otherwise where it grows that square least.
+Place least_growth(const Atlas& atlas, const Mask& m, int side) {
+  for (int y = atlas.first_open(); y + m.height <= side; ++y)
+    if (const int x = atlas.leftmost_fit(m, y, side); x >= 0) return {x, y, side};
+  // Every row from the first open one to the first free one above all masks
+  // (where x = 0 fits): the leftmost place in each; a row cannot do better
+  // once its own top reaches the best side found.
+  Place best{0, atlas.height(), std::max(side, std::max(m.width, atlas.height() + m.height))};
+  for (int y = atlas.first_open(); y < atlas.height() && y + m.height < best.side; ++y)
+    if (const int x = atlas.leftmost_fit(m, y, atlas.width()); x >= 0) {
+      const int grown = std::max(side, std::max(x + m.width, y + m.height));
+      if (grown < best.side) best = {x, y, grown};
+    }
+  return best;
+}
 
 }  // namespace
 
@@ -197,44 +230,43 @@ double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return area[a] > area[b]; });
 
-  double best_side = std::numeric_limits<double>::infinity();
-  for (const double fill : {0.9, 0.8, 0.7, 0.6, 0.5}) {
-    const int width = std::max(widest, static_cast<int>(std::ceil(std::sqrt(cells / fill))));
-    Atlas atlas(width);
+  // The charts go in, largest first, into an atlas of a fixed width (the
+  // rows of a square filled to 90 % ... 50 %) or, last (fill 0), into the
+  // square that grows least, as wide as the smallest square yet (a chart
+  // reaching past it cannot give a smaller one); each turned as keeps the
+  // square smallest, then ends lowest. The smallest square wins.
+  int best_cells = std::numeric_limits<int>::max();
+  for (const double fill : {0.9, 0.8, 0.7, 0.6, 0.5, 0.0}) {
+    const int width = fill > 0 ? std::max(widest, static_cast<int>(std::ceil(std::sqrt(cells / fill)))) : 0;
+    Atlas atlas(width > 0 ? width : best_cells);
     std::vector<ChartPlacement> trial(n);
-    int used_width = 0, used_height = 0;
+    int side = 0;
     for (int c : order) {
-      // The turn that keeps the square around the charts placed so far
-      // smallest, then the one that ends lowest.
       int best_q = -1;
-      std::array<int, 2> best_at{};
-      std::array<int, 2> best_score{};
+      Place best;
       for (int q = 0; q < static_cast<int>(masks[c].size()); ++q) {
         const Mask& m = masks[c][q];
-        if (m.width > width) continue;
-        const std::array<int, 2> at = atlas.first_fit(m);
-        const std::array<int, 2> score = {
-            std::max(std::max(used_width, at[0] + m.width), std::max(used_height, at[1] + m.height)), at[1] + m.height};
-        if (best_q < 0 || score < best_score) {
+        if (m.width > atlas.width()) continue;
+        const Place at = width > 0 ? first_fit(atlas, m, width, side) : least_growth(atlas, m, side);
+        if (best_q < 0 ||
+            std::make_pair(at.side, at.y + m.height) < std::make_pair(best.side, best.y + masks[c][best_q].height)) {
           best_q = q;
-          best_at = at;
-          best_score = score;
+          best = at;
         }
       }
       const Mask& m = masks[c][best_q];
-      atlas.place(m, best_at[0], best_at[1]);
+      atlas.place(m, best.x, best.y);
       trial[c].angle = angles[c][best_q];
-      trial[c].offset = Eigen::RowVector2d(best_at[0], best_at[1]) * h - m.origin;
-      used_width = std::max(used_width, best_at[0] + m.width);
-      used_height = std::max(used_height, best_at[1] + m.height);
+      trial[c].offset = Eigen::RowVector2d(best.x, best.y) * h - m.origin;
+      side = best.side;
+      if (side >= best_cells) break;  // it cannot give a smaller square
     }
-    const double side = h * std::max(used_width, used_height);
-    if (side < best_side) {
-      best_side = side;
+    if (side < best_cells) {
+      best_cells = side;
       *placement = std::move(trial);
     }
   }
-  return best_side;
+  return h * best_cells;
 }
 
 void apply_placement(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& chart_faces,

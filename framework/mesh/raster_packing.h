@@ -4,8 +4,11 @@
 // chart's triangles mark every cell they touch, grown by a ring of cells (the
 // gap between charts); largest chart first, each goes to the first free
 // place in row-major order (lowest row, then leftmost) of an atlas of a
-// fixed width, turned by whichever of its candidate angles ends lowest.
-// Several atlas widths are tried; the one that fits the smallest square wins.
+// fixed width, or, in a last trial, inside the square around the charts
+// placed so far if it fits, else where it grows that square least; turned
+// by whichever of its candidate angles keeps the square smallest, then ends
+// lowest. Of five atlas widths and the growing square, the smallest square
+// wins.
 #include <Eigen/Core>
 #include <vector>
 
