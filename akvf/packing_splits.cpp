@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include <tbb/parallel_for.h>
+
 #include "akvf/internal/seam_cutting.h"
 #include "framework/mesh/chart_layout.h"
 #include "framework/mesh/chart_splitting.h"
@@ -34,32 +36,35 @@ double packed_coverage(const DiskMesh& disk, Eigen::MatrixXd UV, double gutter) 
   return square_coverage(disk.mesh.F, UV);
 }
 
-}  // namespace
+// An atlas cut for the packing: its charts, map and packed coverage.
+struct PackingCuts {
+  DiskMesh disk;
+  Eigen::MatrixXd uv;
+  double coverage = 0;
+  int splits = 0;
+};
 
-void split_for_packing(const ParamSetup& setup, const ParamConfig& config, ParamRun* run) {
-  if (!config.cut || !(config.min_coverage > 0) || run->result.x.size() == 0) return;
-  const ParamSetup& start = final_setup(setup, *run);
-  DiskMesh disk = start.disk;
-  Eigen::MatrixXd UV = unstack_uv(run->result.x);
+// The rounds of cuts from `from` (splits counted on from its own; coverage
+// 0 where no packing is tried): with `bound`, only cuts whose pieces keep
+// config.max_distortion (energy: every face's, weight: its area) count.
+PackingCuts cut_for_packing(PackingCuts from, double gutter, const ParamConfig& config, bool bound,
+                            const Eigen::VectorXd& energy, const Eigen::VectorXd& weight) {
+  DiskMesh& disk = from.disk;
+  Eigen::MatrixXd& UV = from.uv;
   // A cut frees at most the area its chart's hull leaves empty, so a chart
   // that leaves less than the gain asked of the square (least_waste below)
   // cannot give it. The square is at least the map's area: if no chart
   // leaves that share of it, no packing is even tried.
   const double area = map_area(disk.mesh.F, UV);
   std::vector<double> waste = chart_waste(disk.mesh.F, UV, disk.face_chart, disk.num_charts());
-  if (*std::max_element(waste.begin(), waste.end()) < (kLeastGain - 1) * area) return;
-  double coverage = packed_coverage(disk, UV, start.gutter);
-  // Faces keep their rows through the cuts: their energies and areas too.
-  const Eigen::VectorXd energy = config.seams ? face_symmetric_dirichlet(start, run->result.x) : Eigen::VectorXd();
-  const Eigen::VectorXd& weight = start.objective->weights();
+  if (*std::max_element(waste.begin(), waste.end()) < (kLeastGain - 1) * area) return from;
+  double coverage = packed_coverage(disk, UV, gutter);
   // The best packing so far; up to kLookAhead cuts past it are made when no
   // cut raises its coverage: a chart wide and tall may need a cut across
   // each before the square shrinks.
-  DiskMesh best_disk = disk;
-  Eigen::MatrixXd best_uv = UV;
-  double best_coverage = coverage;
-  int splits = 0, best_splits = 0;
-  while (splits < kMaxSplits && splits - best_splits <= kLookAhead && best_coverage < config.min_coverage) {
+  PackingCuts best{disk, UV, coverage, from.splits};
+  int splits = from.splits;
+  while (splits < kMaxSplits && splits - best.splits <= kLookAhead && best.coverage < config.min_coverage) {
     const int charts = disk.num_charts();
     if (splits > 0) waste = chart_waste(disk.mesh.F, UV, disk.face_chart, charts);
     std::vector<int> order(charts);
@@ -70,69 +75,130 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config, Param
     double gained = 0, freed = 0;
     DiskMesh next_disk;
     Eigen::MatrixXd next_uv;
-    const double least_waste = (kLeastGain - 1) * area / best_coverage;
+    const double least_waste = (kLeastGain - 1) * area / best.coverage;
     for (int i = 0; i < std::min(charts, kChartsPerRound) && gained == 0 && waste[order[i]] >= least_waste; ++i) {
       const int chart = order[i];
       const auto keeps_bound = [&](const ChartSplit& s) {
-        if (!config.seams) return true;
+        if (!bound) return true;
         const std::vector<double> mean = chart_means(weight, s.face_chart, s.num_charts, energy);
         for (int c = 0; c < s.num_charts; ++c)
           if ((c == chart || c >= charts) && mean[c] > config.max_distortion) return false;
         return true;
       };
-      for (const ChartSplit& cut :
-           straight_splits(disk.mesh.F, UV, disk.face_chart, charts, chart, kCutsPerChart, keeps_bound)) {
-        DiskMesh trial = disk;
-        const std::vector<int> source = split_charts(&trial, cut.face_chart, cut.num_charts);
-        Eigen::MatrixXd trial_uv(static_cast<Eigen::Index>(source.size()), 2);
-        for (std::size_t v = 0; v < source.size(); ++v) trial_uv.row(v) = UV.row(source[v]);
-        const double trial_coverage = packed_coverage(trial, trial_uv, start.gutter);
-        const bool gains = trial_coverage >= kLeastGain * std::max(best_coverage, gained);
+      // The cuts' packings on every core; compared in order, as one thread would.
+      const std::vector<ChartSplit> cuts =
+          straight_splits(disk.mesh.F, UV, disk.face_chart, charts, chart, kCutsPerChart, keeps_bound);
+      const int count = static_cast<int>(cuts.size());
+      std::vector<DiskMesh> trials(count, disk);
+      std::vector<Eigen::MatrixXd> trial_uvs(count);
+      std::vector<double> trial_coverages(count);
+      tbb::parallel_for(0, count, [&](int t) {
+        const std::vector<int> source = split_charts(&trials[t], cuts[t].face_chart, cuts[t].num_charts);
+        trial_uvs[t].resize(static_cast<Eigen::Index>(source.size()), 2);
+        for (std::size_t v = 0; v < source.size(); ++v) trial_uvs[t].row(v) = UV.row(source[v]);
+        trial_coverages[t] = packed_coverage(trials[t], trial_uvs[t], gutter);
+      });
+      for (int t = 0; t < count; ++t) {
+        const ChartSplit& cut = cuts[t];
+        const double trial_coverage = trial_coverages[t];
+        const bool gains = trial_coverage >= kLeastGain * std::max(best.coverage, gained);
         const bool frees = gained == 0 && waste[chart] - cut.waste > freed;
         if (!gains && !frees) continue;
-        if (gains) {
+        if (gains)
           gained = trial_coverage;
-          coverage = trial_coverage;
-        } else {
+        else
           freed = waste[chart] - cut.waste;
-          coverage = trial_coverage;
-        }
-        next_disk = std::move(trial);
-        next_uv = std::move(trial_uv);
+        coverage = trial_coverage;
+        next_disk = std::move(trials[t]);
+        next_uv = std::move(trial_uvs[t]);
       }
     }
     if (gained == 0 && freed == 0) break;
     disk = std::move(next_disk);
     UV = std::move(next_uv);
     ++splits;
-    if (gained > 0) {
-      best_disk = disk;
-      best_uv = UV;
-      best_coverage = coverage;
-      best_splits = splits;
-    }
+    if (gained > 0) best = {disk, UV, coverage, splits};
   }
-  disk = std::move(best_disk);
-  UV = std::move(best_uv);
-  coverage = best_coverage;
-  splits = best_splits;
-  // One chart (a disk, or seams that bound the distortion in one) is kept
-  // whole unless its pieces reach the coverage: a partial gain is not worth
-  // turning it into an atlas.
-  if (splits == 0 || (start.disk.num_charts() == 1 && coverage < config.min_coverage)) return;
-  auto split_setup = std::make_shared<ParamSetup>(start);
-  split_setup->disk = std::move(disk);
+  return best;
+}
+
+// The run ends split along `cuts`, which were made on `cut` (the problem
+// `cuts` are of, every face's symmetric Dirichlet energy `energy`).
+void take_cuts(const ParamSetup& cut, const ParamConfig& config, PackingCuts cuts, const Eigen::VectorXd& energy,
+               ParamRun* run) {
+  auto split_setup = std::make_shared<ParamSetup>(cut);
+  split_setup->disk = std::move(cuts.disk);
   rebuild_problem(config, split_setup.get());
-  split_setup->x0 = stack_uv(UV);
+  split_setup->x0 = stack_uv(cuts.uv);
   run->result.x = split_setup->x0;
   measure_final_map(*split_setup, run);
   if (config.seams) {
     run->seams.chart_distortion =
-        chart_means(weight, split_setup->disk.face_chart, split_setup->disk.num_charts(), energy);
+        chart_means(cut.objective->weights(), split_setup->disk.face_chart, split_setup->disk.num_charts(), energy);
     run->seams.seam_length = split_setup->disk.cut_length * split_setup->normalization.scale;
   }
-  run->packing_splits = splits;
+  run->packing_splits += cuts.splits;
   run->seamed = std::move(split_setup);
+}
+
+// The cuts of run's final map (`bound`: keeping the distortion bound); its
+// faces' symmetric Dirichlet energy in `energy` (with seams).
+PackingCuts cuts_of_run(const ParamSetup& setup, const ParamConfig& config, const ParamRun& run, bool bound,
+                        Eigen::VectorXd* energy) {
+  const ParamSetup& last = final_setup(setup, run);
+  *energy = config.seams ? face_symmetric_dirichlet(last, run.result.x) : Eigen::VectorXd();
+  return cut_for_packing({last.disk, unstack_uv(run.result.x), 0, 0}, last.gutter, config, bound, *energy,
+                         last.objective->weights());
+}
+
+// One chart (a disk, or seams that bound the distortion in one) is kept
+// whole unless its pieces reach the coverage: a partial gain is not worth
+// turning it into an atlas.
+bool worth_taking(const PackingCuts& cuts, int charts_before, double min_coverage) {
+  return cuts.splits > 0 && (charts_before > 1 || cuts.coverage >= min_coverage);
+}
+
+}  // namespace
+
+void split_for_packing(const ParamSetup& setup, const ParamConfig& config,
+                       const std::vector<IterationCallback>& callbacks, ParamRun* run) {
+  if (!config.cut || !(config.min_coverage > 0) || run->result.x.size() == 0) return;
+  const ParamSetup& start = final_setup(setup, *run);
+  const int charts = start.disk.num_charts();
+  Eigen::VectorXd energy;
+  const PackingCuts cuts = cuts_of_run(setup, config, *run, config.seams, &energy);
+  if (config.seams && cuts.coverage < config.min_coverage) {
+    // The bound may be what stops the cuts: a chart just under it with its
+    // distortion in its extremities, which a cut would leave in a piece of
+    // their own. The cuts go on without it, seams are added where a piece
+    // is above it (run_with_seams, going on from the cut map), the seamed
+    // atlas is cut again as above, and kept if it packs tighter.
+    PackingCuts free_cuts = cut_for_packing(cuts, start.gutter, config, false, energy, start.objective->weights());
+    if (free_cuts.splits > cuts.splits && free_cuts.coverage >= kLeastGain * cuts.coverage) {
+      ParamRun cut_run = *run;
+      take_cuts(start, config, std::move(free_cuts), energy, &cut_run);
+      ParamRun again = run_with_seams(*cut_run.seamed, config, callbacks, run);
+      if (again.result.status == TerminationStatus::kUserStopped) {
+        // Stopped there: the map before these seams, with the stop reported.
+        run->result.status = again.result.status;
+        run->result.message = again.result.message;
+      } else if (again.seams.bound_met && is_normal_termination(again.result.status)) {
+        again.packing_splits = cut_run.packing_splits;
+        Eigen::VectorXd again_energy;
+        PackingCuts recut = cuts_of_run(*again.seamed, config, again, true, &again_energy);
+        if (recut.splits == 0)
+          recut.coverage = packed_coverage(again.seamed->disk, unstack_uv(again.result.x), again.seamed->gutter);
+        const bool tighter = recut.coverage >= kLeastGain * cuts.coverage;
+        if (tighter && (charts > 1 || recut.coverage >= config.min_coverage)) {
+          const std::shared_ptr<const ParamSetup> seamed = again.seamed;
+          if (recut.splits > 0) take_cuts(*seamed, config, std::move(recut), again_energy, &again);
+          *run = std::move(again);
+          return;
+        }
+      }
+    }
+  }
+  if (worth_taking(cuts, charts, config.min_coverage)) take_cuts(start, config, cuts, energy, run);
 }
 
 }  // namespace akvf

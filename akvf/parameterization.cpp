@@ -187,7 +187,7 @@ ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config
     run = optimize_from_start(setup, config, callbacks);
     measure_final_map(setup, &run);
   }
-  split_for_packing(setup, config, &run);
+  split_for_packing(setup, config, callbacks, &run);
   return run;
 }
 

@@ -147,14 +147,22 @@ std::vector<double> chart_means(const Eigen::VectorXd& weight, const std::vector
 }
 
 ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
-                        const std::vector<IterationCallback>& callbacks) {
+                        const std::vector<IterationCallback>& callbacks, const ParamRun* earlier) {
   auto setup = std::make_shared<ParamSetup>(start);
-  int iterations = 0;
-  double seconds = 0;
+  OptimizerResult all;
+  SeamReport report;
+  if (earlier) {
+    all.trace = earlier->result.trace;
+    report.seams = earlier->seams.seams;
+    report.overlap_pieces = earlier->seams.overlap_pieces;
+    report.parted_charts = earlier->seams.parted_charts;
+  }
+  int iterations = all.trace.empty() ? 0 : all.trace.back().iteration;
+  double seconds = all.trace.empty() ? 0 : all.trace.back().seconds;
+  const int first_iteration = iterations;
   std::vector<IterationCallback> round_callbacks;
   for (const IterationCallback& callback : callbacks)
     round_callbacks.push_back(shifted(callback, &iterations, &seconds));
-  OptimizerResult all;
   ParamRun run;
   // Each round may take max_iterations; the time limit is for all of them.
   auto optimize = [&](ParamConfig round) {
@@ -170,7 +178,6 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
     all.status = run.result.status;
     all.message = run.result.message;
   };
-  SeamReport report;
   // Each chart's energy into the report; returns every face's.
   auto measure_charts = [&] {
     Eigen::VectorXd energy = face_symmetric_dirichlet(*setup, all.x);
@@ -272,7 +279,7 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
   setup->warm_start = {};  // its rows open the trace once
   add_seams(rough, std::numeric_limits<int>::max());
   // The flip-free end, kept where it met the bound for the pieces below.
-  const int iterations_flip_free = iterations;
+  const int iterations_flip_free = iterations - first_iteration;
   const SeamReport flip_free_report = report;
   std::optional<ParamSetup> flip_free;
   if (config.global_injectivity && report.bound_met) flip_free = *setup;
@@ -283,11 +290,11 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
     last.seams = false;
     start_at(last, all.x, setup.get());
     optimize(last);
-    // Where the flip-free map met the bound, the globally injective rounds
-    // get as many iterations as the flip-free ones took: more means the
-    // boundary barrier, not the distortion, is what the seams fight, and
-    // the pieces below end sooner.
-    add_seams(last, flip_free ? 2 * iterations_flip_free : std::numeric_limits<int>::max());
+    // Where the flip-free map met the bound, the globally injective seam
+    // rounds get as many iterations as the flip-free ones took: more means
+    // the boundary barrier, not the distortion, is what the seams fight,
+    // and the pieces below end sooner.
+    add_seams(last, flip_free ? iterations + iterations_flip_free : std::numeric_limits<int>::max());
     if (running() && !report.bound_met && flip_free) {
       // The flip-free map met the bound, but no globally injective map of
       // its charts was found that does: its charts are cut instead where

@@ -13,8 +13,10 @@
 
 namespace akvf {
 
+// With `earlier`, the run goes on from it: its trace continued (numbering
+// and clock), its seams counted, its time counted against the time limit.
 ParamRun run_with_seams(const ParamSetup& setup, const ParamConfig& config,
-                        const std::vector<IterationCallback>& callbacks);
+                        const std::vector<IterationCallback>& callbacks, const ParamRun* earlier = nullptr);
 
 // The symmetric Dirichlet energy of each face of setup's mesh at x.
 Eigen::VectorXd face_symmetric_dirichlet(const ParamSetup& setup, const Eigen::VectorXd& x);
