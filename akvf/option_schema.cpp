@@ -266,9 +266,9 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
     f.push_back(
         number_field<O>("min_coverage", "min-coverage", "C",
                         "with --cut: charts are split by straight cuts across the map (every triangle "
-                        "keeps its distortion; with seams, every piece its bound) until the packing "
-                        "covers this share of the UV square, or no cut raises it (one chart: only if its pieces reach "
-                        "it); 0: never",
+                        "keeps its distortion; with seams, every piece its bound, by more seams where a cut "
+                        "alone would not) until the packing covers this share of the UV square, or no cut "
+                        "raises it (one chart: only if its pieces reach it); 0: never",
                         &O::min_coverage, "in [0, 1)", [](double c) { return c >= 0 && c < 1; }));
     f.push_back(integer_field<O>("texture_size", "texture-size", "N",
                                  "several charts: the texture they are packed for, N texels per side (the unit "

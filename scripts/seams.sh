@@ -2,9 +2,9 @@
 # --cut seams on the shared closed meshes and on the disk meshes whose
 # distortion is above the bound (docs/results.md, "Seams that bound the
 # distortion"): the energy with the first cut alone, then with the seams,
-# as a Markdown table; also a generated sphere with thin spikes. --large
-# adds bunny_closed subdivided twice (midpoint subdivision, 111 456 faces;
-# about 5 minutes).
+# as a Markdown table; also a generated sphere with thin spikes and a scene
+# of several components. --large adds bunny_closed subdivided twice
+# (midpoint subdivision, 111 456 faces; about 5 minutes).
 # Usage: bash scripts/seams.sh [--large]   (after scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -43,6 +43,23 @@ with open(sys.argv[1], "w") as f:
     f.writelines("3 %d %d %d\n" % t for t in F)
 PY
 meshes+=("$work/spiky_sphere.off")
+# Several components, as a scene: cow_closed, bunny_closed beside it, and
+# cow_closed at 0.3 of its size.
+/usr/bin/python3 - "$DATA/tri/cow_closed.off" "$DATA/tri/bunny_closed.off" "$work/cow_bunny_calf.off" <<'PY'
+import sys
+V, F = [], []
+for path, scale, shift in ((sys.argv[1], 1, 0), (sys.argv[2], 1, 3), (sys.argv[1], 0.3, -3)):
+    lines = [l.split() for l in open(path) if l.strip() and not l.startswith("#")]
+    nv, nf = int(lines[1][0]), int(lines[1][1])
+    base = len(V)
+    V += [(scale * float(l[0]) + shift, scale * float(l[1]), scale * float(l[2])) for l in lines[2:2 + nv]]
+    F += [tuple(base + int(i) for i in l[1:4]) for l in lines[2 + nv:2 + nv + nf]]
+with open(sys.argv[3], "w") as f:
+    f.write("OFF\n%d %d 0\n" % (len(V), len(F)))
+    f.writelines("%.9g %.9g %.9g\n" % v for v in V)
+    f.writelines("3 %d %d %d\n" % t for t in F)
+PY
+meshes+=("$work/cow_bunny_calf.off")
 if [ "${1:-}" = "--large" ]; then
   /usr/bin/python3 - "$DATA/tri/bunny_closed.off" "$work/bunny_closed_x16.off" <<'PY'
 import sys
