@@ -182,49 +182,54 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
   };
   std::vector<std::vector<int>> chart_faces(num_charts);
   for (int f = 0; f < F.rows(); ++f) chart_faces[face_chart[f]].push_back(f);
-  // One layout with at least `least_gap` between charts: its square's side
-  // and the least distance it keeps between charts.
+  // The gutter is a share of the square's side, which the gap itself
+  // widens: a layout is redone with gaps from its last side, 1 % over,
+  // until they hold (they approach that fixed point geometrically; one
+  // round for the small gutters of real textures; the square is at least
+  // sqrt(box_area)). layout(least_gap, &kept) returns the side of its
+  // square and the least distance it keeps between charts.
+  const auto holding_gutter = [&](const auto& layout) {
+    double kept = 0;
+    double side = layout(gutter * std::sqrt(box_area), &kept);
+    for (int round = 0; round < 16 && kept < gutter * side; ++round) side = layout(1.01 * gutter * side, &kept);
+    return side;
+  };
+  // Boxes in rows, the gutter apart (a start map's: also 2 % of the
+  // square), the row width that fits the smallest square among 32 from one
+  // chart to all per row.
   std::vector<Eigen::RowVector2d> corner(num_charts);
-  std::vector<ChartPlacement> placement;
-  bool interlocked = false;
-  const auto layout = [&](double least_gap, double* kept) {
-    const double gap = std::max(0.02 * std::sqrt(box_area), least_gap);
+  double side = holding_gutter([&](double least_gap, double* kept) {
+    const double gap = rotate_to_boxes ? least_gap : std::max(0.02 * std::sqrt(box_area), least_gap);
     double row_width = std::max(std::sqrt(box_area), widest);
-    if (rotate_to_boxes) {  // the row width of the smallest square, among 32 from one chart to all per row
+    if (rotate_to_boxes) {
       const double last = total_width + num_charts * gap;
       double best = rows(row_width, gap, nullptr);
       for (int i = 0; i <= 32; ++i) {
         const double candidate = widest * std::pow(std::max(last / widest, 1.0), i / 32.0);
-        if (const double side = rows(candidate, gap, nullptr); side < best) {
-          best = side;
+        if (const double trial = rows(candidate, gap, nullptr); trial < best) {
+          best = trial;
           row_width = candidate;
         }
       }
     }
-    double side = rows(row_width, gap, &corner);
     *kept = gap;
-    interlocked = false;
-    if (rotate_to_boxes)  // charts that interlock, when they fit a smaller square so
-      for (const auto& chart_turns : turns) {
-        double raster_gap = 0;
-        std::vector<ChartPlacement> trial;
-        const double raster_side = raster_pack(F, chart_faces, given, chart_turns, least_gap, &trial, &raster_gap);
-        if (raster_side < side) {
-          interlocked = true;
-          placement = std::move(trial);
-          side = raster_side;
-          *kept = raster_gap;
-        }
+    return rows(row_width, gap, &corner);
+  });
+  // Charts that interlock, when they fit a smaller square so.
+  std::vector<ChartPlacement> placement;
+  bool interlocked = false;
+  if (rotate_to_boxes)
+    for (const auto& chart_turns : turns) {
+      std::vector<ChartPlacement> trial;
+      const double raster_side = holding_gutter([&](double least_gap, double* kept) {
+        return raster_pack(F, chart_faces, given, chart_turns, least_gap, &trial, kept);
+      });
+      if (raster_side < side) {
+        interlocked = true;
+        placement = std::move(trial);
+        side = raster_side;
       }
-    return side;
-  };
-  // The gutter is a share of the square's side, which the gap itself
-  // widens: gaps from the last side, 1 % over, until they hold (they
-  // approach that fixed point geometrically; one round for the small
-  // gutters of real textures; the square is at least sqrt(box_area)).
-  double kept = 0;
-  double side = layout(gutter * std::sqrt(box_area), &kept);
-  for (int round = 0; round < 16 && kept < gutter * side; ++round) side = layout(1.01 * gutter * side, &kept);
+    }
   if (interlocked) {
     *UV = given;
     apply_placement(F, chart_faces, placement, UV);

@@ -21,10 +21,11 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
 // overlap: rows of charts, tallest first, each row at most as wide as the
 // square root of the charts' total bounding-box area (a roughly square
 // layout), with a gap of 2 % of that width between boxes. With
-// `rotate_to_boxes` (the outputs), each chart is first turned (a rotation,
-// never a mirror) to its smallest bounding rectangle, lying flat (wider than
-// tall), and the row width is the one, of 33 from the widest chart to all in
-// one row, whose layout fits the smallest square; then, if charts that
+// `rotate_to_boxes` (the outputs), the gap is the gutter alone, each chart
+// is first turned (a rotation, never a mirror) to its smallest bounding
+// rectangle, lying flat (wider than tall), and the row width is the one, of
+// 33 from the widest chart to all in one row, whose layout fits the
+// smallest square; then, if charts that
 // interlock (raster_packing.h; every chart flat or every chart turned to its
 // smallest bounding square, each by a quarter or not) fit a smaller square,
 // they are placed so instead. Charts end at least `gutter` times the side of
