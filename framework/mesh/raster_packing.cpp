@@ -105,8 +105,10 @@ Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Ei
 }
 
 // The atlas: rows of cells, at most `width` wide, as high as it needs. Each
-// row keeps, per cell, how many free cells start there, so a run of a mask
-// is tested in one look; rows above the highest placed mask are free.
+// row keeps, per cell, how many free cells start there (or, negated, how
+// many taken ones), so a run of a mask is tested in one look and a search
+// steps over a taken run at once; rows above the highest placed mask are
+// free.
 class Atlas {
  public:
   explicit Atlas(int width) : width_(width) {}
@@ -139,9 +141,14 @@ class Atlas {
       std::vector<int>& free = free_[y + j];
       for (const auto& [begin, end] : m.runs[j])
         for (int i = begin; i < end; ++i) free[x + i] = 0;
-      for (int i = width_ - 1; i >= 0; --i)
-        if (free[i] > 0) free[i] = i + 1 < width_ ? free[i + 1] + 1 : 1;
-      longest_free_[y + j] = *std::max_element(free.begin(), free.end());
+      for (int i = width_ - 1; i >= 0; --i) {
+        const int next = i + 1 < width_ ? free[i + 1] : 0;
+        if (free[i] > 0)
+          free[i] = next > 0 ? next + 1 : 1;
+        else
+          free[i] = next < 0 ? next - 1 : -1;
+      }
+      longest_free_[y + j] = std::max(0, *std::max_element(free.begin(), free.end()));
     }
     while (first_open_ < height() && longest_free_[first_open_] == 0) ++first_open_;
   }
@@ -150,12 +157,18 @@ class Atlas {
 
  private:
   // 0 if m fits with its corner at (x, y); otherwise how far right the next
-  // place that may fit is (every place before it fails on the same run).
+  // place that may fit is: past the taken run that a run of m meets (every
+  // place before fails on that run).
   int misses(const Mask& m, int x, int y) const {
     for (int j = 0; j < m.height && y + j < height(); ++j) {
       const std::vector<int>& free = free_[y + j];
-      for (const auto& [begin, end] : m.runs[j])
-        if (free[x + begin] < end - begin) return free[x + begin] + 1;
+      for (const auto& [begin, end] : m.runs[j]) {
+        const int at = x + begin, here = free[at];
+        if (here >= end - begin) continue;
+        if (here <= 0) return -here;             // a taken run starts here
+        if (at + here >= width_) return width_;  // free to the row's end, too short
+        return here - free[at + here];           // the free run, then the taken one
+      }
     }
     return 0;
   }
@@ -206,9 +219,11 @@ double raster_pack(const Eigen::MatrixXi& F, const std::vector<std::vector<int>>
   for (int c = 0; c < n; ++c)
     for (int f : chart_faces[c]) area[c] += triangle_area(F, UV, f);
   const double total = std::accumulate(area.begin(), area.end(), 0.0);
-  // About 64 cells per chart, at least 2^14 and at most 2^18 in all: fine
-  // enough for the charts' shapes, coarse enough for the brute-force search.
-  const double target = std::clamp(64.0 * n, 16384.0, 262144.0);
+  // About 256 cells per chart (16 across, so that the ring of cells around
+  // each, the gap, costs it about a quarter of its area), at least 2^16 and
+  // at most 2^20 in all: fine enough for the charts' shapes, coarse enough
+  // for the brute-force search.
+  const double target = std::clamp(256.0 * n, 65536.0, 1048576.0);
   const double h = std::sqrt(total / target);
   if (!(h > 0)) return std::numeric_limits<double>::infinity();
   // Two grown masks never share a cell, so charts lie at least 2 ring h apart.
