@@ -162,7 +162,8 @@ bool worth_taking(const PackingCuts& cuts, int charts_before, double min_coverag
 
 void split_for_packing(const ParamSetup& setup, const ParamConfig& config,
                        const std::vector<IterationCallback>& callbacks, ParamRun* run) {
-  if (!config.cut || !(config.min_coverage > 0) || run->result.x.size() == 0) return;
+  if (!config.cut || !(config.min_coverage > 0) || run->result.x.size() == 0 || stop_asked(run->result.status))
+    return;
   const ParamSetup& start = final_setup(setup, *run);
   const int charts = start.disk.num_charts();
   Eigen::VectorXd energy;
@@ -178,7 +179,7 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config,
       ParamRun cut_run = *run;
       take_cuts(start, config, std::move(free_cuts), energy, &cut_run);
       ParamRun again = run_with_seams(*cut_run.seamed, config, callbacks, run);
-      if (again.result.status == TerminationStatus::kUserStopped) {
+      if (stop_asked(again.result.status)) {
         // Stopped there: the map before these seams, with the stop reported.
         run->result.status = again.result.status;
         run->result.message = again.result.message;

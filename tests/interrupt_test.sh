@@ -26,6 +26,52 @@ uvs=$(grep -c '^vt ' "$dir/uv.obj")
 ls "$dir" | grep -qv -e grid.obj -e uv.obj -e uv.mtl -e uv_checker.png -e trace.csv -e stdout -e stderr && { echo "temporary files left: $(ls "$dir")"; exit 1; }
 echo "interrupted cleanly after $(($(wc -l < "$dir/trace.csv") - 2)) iterations"
 
+# --cut seams: the signal ends the rounds of seams too (and the cuts for the
+# packing are not made): a sphere with thin spikes, whose rounds take
+# seconds, exits within a few seconds of it, its outputs whole.
+/usr/bin/python3 - "$dir/spiky.off" <<'PY'
+import math, sys
+V = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]
+F = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)]
+for _ in range(4):
+    mid, out = {}, []
+    def m(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in mid:
+            mid[key] = len(V)
+            p = [(s + t) / 2 for s, t in zip(V[a], V[b])]
+            r = math.sqrt(sum(c * c for c in p))
+            V.append(tuple(c / r for c in p))
+        return mid[key]
+    for a, b, c in F:
+        ab, bc, ca = m(a, b), m(b, c), m(c, a)
+        out += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+    F = out
+V = [tuple(3 * c for c in v) if i % 29 == 9 else v for i, v in enumerate(V)]
+with open(sys.argv[1], "w") as f:
+    f.write("OFF\n%d %d 0\n" % (len(V), len(F)))
+    f.writelines("%.9g %.9g %.9g\n" % v for v in V)
+    f.writelines("3 %d %d %d\n" % t for t in F)
+PY
+"$akvf" param "$dir/spiky.off" --cut seams --out "$dir/spiky_uv.obj" --trace "$dir/spiky.csv" --quiet \
+  > "$dir/stdout" 2> "$dir/stderr" &
+pid=$!
+sleep 1
+kill -INT "$pid"
+signalled=$(date +%s)
+set +e
+wait "$pid"
+code=$?
+set -e
+[ "$code" -eq 130 ] || { echo "--cut seams: expected exit code 130, got $code"; cat "$dir/stderr"; exit 1; }
+[ $(($(date +%s) - signalled)) -le 5 ] || { echo "--cut seams: the run went on $(($(date +%s) - signalled)) s after the signal"; exit 1; }
+tail -n 1 "$dir/spiky.csv" | grep -q ',interrupted$' || { echo "--cut seams: last trace row does not say interrupted"; exit 1; }
+# Pieces and parting come after every round of seams, so a stop 1 s in
+# leaves none (rounds that went on unsolved after the signal made both).
+! grep -e 'lay over itself' -e 'parted in two' "$dir/stdout" || { echo "--cut seams: rounds went on after the signal"; exit 1; }
+[ "$(grep -c '^f ' "$dir/spiky_uv.obj")" -eq 2048 ] || { echo "--cut seams: incomplete UV OBJ"; exit 1; }
+echo "--cut seams interrupted cleanly"
+
 # Before the first iteration (here: reading a FIFO nobody writes to) a signal
 # ends the process at once: `timeout` sends SIGTERM after 1 s and reports 124
 # when the command then ends (137 if it had to send SIGKILL 5 s later).

@@ -114,6 +114,11 @@ struct ParamRun {
   int packing_splits = 0;  // cuts split_for_packing made (the final problem is then run.seamed)
 };
 
+// A callback's stop or a signal: the run ends there, whatever would follow.
+inline bool stop_asked(TerminationStatus status) {
+  return status == TerminationStatus::kUserStopped || status == TerminationStatus::kInterrupted;
+}
+
 // The problem run.result.x is a map of: run.seamed if seams were added or
 // charts split for the packing, else `setup` itself.
 inline const ParamSetup& final_setup(const ParamSetup& setup, const ParamRun& run) {
