@@ -29,30 +29,7 @@ echo "interrupted cleanly after $(($(wc -l < "$dir/trace.csv") - 2)) iterations"
 # --cut seams: the signal ends the rounds of seams too (and the cuts for the
 # packing are not made): a sphere with thin spikes, whose rounds take
 # seconds, exits within a few seconds of it, its outputs whole.
-/usr/bin/python3 - "$dir/spiky.off" <<'PY'
-import math, sys
-V = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]
-F = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)]
-for _ in range(4):
-    mid, out = {}, []
-    def m(a, b):
-        key = (min(a, b), max(a, b))
-        if key not in mid:
-            mid[key] = len(V)
-            p = [(s + t) / 2 for s, t in zip(V[a], V[b])]
-            r = math.sqrt(sum(c * c for c in p))
-            V.append(tuple(c / r for c in p))
-        return mid[key]
-    for a, b, c in F:
-        ab, bc, ca = m(a, b), m(b, c), m(c, a)
-        out += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
-    F = out
-V = [tuple(3 * c for c in v) if i % 29 == 9 else v for i, v in enumerate(V)]
-with open(sys.argv[1], "w") as f:
-    f.write("OFF\n%d %d 0\n" % (len(V), len(F)))
-    f.writelines("%.9g %.9g %.9g\n" % v for v in V)
-    f.writelines("3 %d %d %d\n" % t for t in F)
-PY
+/usr/bin/python3 "$(dirname "$0")/../scripts/spiky_sphere.py" "$dir/spiky.off"
 "$akvf" param "$dir/spiky.off" --cut seams --out "$dir/spiky_uv.obj" --trace "$dir/spiky.csv" --quiet \
   > "$dir/stdout" 2> "$dir/stderr" &
 pid=$!
