@@ -168,12 +168,13 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config,
   const int charts = start.disk.num_charts();
   Eigen::VectorXd energy;
   const PackingCuts cuts = cuts_of_run(setup, config, *run, config.seams, &energy);
-  if (config.seams && cuts.coverage < config.min_coverage) {
+  if (config.seams && charts > 1 && cuts.coverage < config.min_coverage) {
     // The bound may be what stops the cuts: a chart just under it with its
     // distortion in its extremities, which a cut would leave in a piece of
     // their own. The cuts go on without it, seams are added where a piece
     // is above it (run_with_seams, going on from the cut map), the seamed
-    // atlas is cut again as above, and kept if it packs tighter.
+    // atlas is cut again as above, and kept if it packs tighter. Not for
+    // one chart: seams there would serve the packing alone.
     PackingCuts free_cuts = cut_for_packing(cuts, start.gutter, config, false, energy, start.objective->weights());
     if (free_cuts.splits > cuts.splits && free_cuts.coverage >= kLeastGain * cuts.coverage) {
       ParamRun cut_run = *run;
@@ -189,8 +190,7 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config,
         PackingCuts recut = cuts_of_run(*again.seamed, config, again, true, &again_energy);
         if (recut.splits == 0)
           recut.coverage = packed_coverage(again.seamed->disk, unstack_uv(again.result.x), again.seamed->gutter);
-        const bool tighter = recut.coverage >= kLeastGain * cuts.coverage;
-        if (tighter && (charts > 1 || recut.coverage >= config.min_coverage)) {
+        if (recut.coverage >= kLeastGain * cuts.coverage) {
           const std::shared_ptr<const ParamSetup> seamed = again.seamed;
           if (recut.splits > 0) take_cuts(*seamed, config, std::move(recut), again_energy, &again);
           *run = std::move(again);

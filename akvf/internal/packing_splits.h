@@ -5,12 +5,12 @@
 // straight cut raises the packed coverage by 1 % over the best so far is
 // cut; if none does, the cut that leaves the least hull area empty, up to
 // two such cuts past the best packing, which is kept. With --cut seams only
-// cuts whose pieces keep the distortion bound count; if they fall short,
-// the cuts are also made without the bound, seams added where a piece is
-// above it, and the seamed atlas cut again (kept if it packs tighter). A
-// single chart is split only if its pieces reach min_coverage. The map is
-// unchanged but for those seams; docs/design.md, "Cutting closed and
-// higher-genus meshes".
+// cuts whose pieces keep the distortion bound count; if several charts fall
+// short, the cuts are also made without the bound, seams added where a
+// piece is above it, and the seamed atlas cut again (kept if it packs
+// tighter). A single chart is split only if its pieces reach min_coverage.
+// The map is unchanged but for those seams; docs/design.md, "Cutting closed
+// and higher-genus meshes".
 #include "akvf/internal/parameterization.h"
 
 namespace akvf {
