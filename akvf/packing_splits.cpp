@@ -36,17 +36,19 @@ double packed_coverage(const DiskMesh& disk, Eigen::MatrixXd UV, double gutter) 
   return square_coverage(disk.mesh.F, UV);
 }
 
-// An atlas cut for the packing: its charts, map and packed coverage.
+// An atlas cut for the packing: its charts, map and packed coverage (-1:
+// not packed).
 struct PackingCuts {
   DiskMesh disk;
   Eigen::MatrixXd uv;
-  double coverage = 0;
+  double coverage = -1;
   int splits = 0;
 };
 
 // The rounds of cuts from `from` (splits counted on from its own; coverage
-// 0 where no packing is tried): with `bound`, only cuts whose pieces keep
-// config.max_distortion (energy: every face's, weight: its area) count.
+// left as it was where no packing is tried): with `bound`, only cuts whose
+// pieces keep config.max_distortion (energy: every face's, weight: its
+// area) count.
 PackingCuts cut_for_packing(PackingCuts from, double gutter, const ParamConfig& config, bool bound,
                             const Eigen::VectorXd& energy, const Eigen::VectorXd& weight) {
   DiskMesh& disk = from.disk;
@@ -122,14 +124,21 @@ PackingCuts cut_for_packing(PackingCuts from, double gutter, const ParamConfig& 
   return best;
 }
 
-// The run ends split along `cuts`, which were made on `cut` (the problem
-// `cuts` are of, every face's symmetric Dirichlet energy `energy`).
-void take_cuts(const ParamSetup& cut, const ParamConfig& config, PackingCuts cuts, const Eigen::VectorXd& energy,
-               ParamRun* run) {
+// The problem `cut` split along `cuts` (made on it), starting at their map.
+std::shared_ptr<ParamSetup> split_problem(const ParamSetup& cut, const ParamConfig& config, PackingCuts cuts) {
   auto split_setup = std::make_shared<ParamSetup>(cut);
   split_setup->disk = std::move(cuts.disk);
   rebuild_problem(config, split_setup.get());
   split_setup->x0 = stack_uv(cuts.uv);
+  return split_setup;
+}
+
+// The run ends split along `cuts`, which were made on `cut` (the problem
+// `cuts` are of, every face's symmetric Dirichlet energy `energy`).
+void take_cuts(const ParamSetup& cut, const ParamConfig& config, PackingCuts cuts, const Eigen::VectorXd& energy,
+               ParamRun* run) {
+  run->packing_splits += cuts.splits;
+  std::shared_ptr<ParamSetup> split_setup = split_problem(cut, config, std::move(cuts));
   run->result.x = split_setup->x0;
   measure_final_map(*split_setup, run);
   if (config.seams) {
@@ -137,7 +146,6 @@ void take_cuts(const ParamSetup& cut, const ParamConfig& config, PackingCuts cut
         chart_means(cut.objective->weights(), split_setup->disk.face_chart, split_setup->disk.num_charts(), energy);
     run->seams.seam_length = split_setup->disk.cut_length * split_setup->normalization.scale;
   }
-  run->packing_splits += cuts.splits;
   run->seamed = std::move(split_setup);
 }
 
@@ -147,7 +155,7 @@ PackingCuts cuts_of_run(const ParamSetup& setup, const ParamConfig& config, cons
                         Eigen::VectorXd* energy) {
   const ParamSetup& last = final_setup(setup, run);
   *energy = config.seams ? face_symmetric_dirichlet(last, run.result.x) : Eigen::VectorXd();
-  return cut_for_packing({last.disk, unstack_uv(run.result.x), 0, 0}, last.gutter, config, bound, *energy,
+  return cut_for_packing({last.disk, unstack_uv(run.result.x), -1, 0}, last.gutter, config, bound, *energy,
                          last.objective->weights());
 }
 
@@ -162,8 +170,7 @@ bool worth_taking(const PackingCuts& cuts, int charts_before, double min_coverag
 
 void split_for_packing(const ParamSetup& setup, const ParamConfig& config,
                        const std::vector<IterationCallback>& callbacks, ParamRun* run) {
-  if (!config.cut || !(config.min_coverage > 0) || run->result.x.size() == 0 || stop_asked(run->result.status))
-    return;
+  if (!config.cut || !(config.min_coverage > 0) || run->result.x.size() == 0 || stop_asked(run->result.status)) return;
   const ParamSetup& start = final_setup(setup, *run);
   const int charts = start.disk.num_charts();
   Eigen::VectorXd energy;
@@ -177,18 +184,17 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config,
     // one chart: seams there would serve the packing alone.
     PackingCuts free_cuts = cut_for_packing(cuts, start.gutter, config, false, energy, start.objective->weights());
     if (free_cuts.splits > cuts.splits && free_cuts.coverage >= kLeastGain * cuts.coverage) {
-      ParamRun cut_run = *run;
-      take_cuts(start, config, std::move(free_cuts), energy, &cut_run);
-      ParamRun again = run_with_seams(*cut_run.seamed, config, callbacks, run);
+      const int free_splits = free_cuts.splits;
+      ParamRun again = run_with_seams(*split_problem(start, config, std::move(free_cuts)), config, callbacks, run);
       if (stop_asked(again.result.status)) {
         // Stopped there: the map before these seams, with the stop reported.
         run->result.status = again.result.status;
         run->result.message = again.result.message;
       } else if (again.seams.bound_met && is_normal_termination(again.result.status)) {
-        again.packing_splits = cut_run.packing_splits;
+        again.packing_splits = free_splits;
         Eigen::VectorXd again_energy;
         PackingCuts recut = cuts_of_run(*again.seamed, config, again, true, &again_energy);
-        if (recut.splits == 0)
+        if (recut.coverage < 0)
           recut.coverage = packed_coverage(again.seamed->disk, unstack_uv(again.result.x), again.seamed->gutter);
         if (recut.coverage >= kLeastGain * cuts.coverage) {
           const std::shared_ptr<const ParamSetup> seamed = again.seamed;
