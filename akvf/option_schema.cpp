@@ -202,7 +202,8 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
                       "eigenvalues clamped to 0, mirrored (abs), adaptive (Chen et al. 2024: clamp "
                       "while the last step's decrease matched the quadratic model to 1 %, else mirror), "
                       "or exact (not filtered while the Hessian is positive definite, else only partly: each element's "
-                      "negative eigenvalues scaled by 15/16, 3/4 or 0, the least filtering that factors); "
+                      "negative eigenvalues scaled by 15/16, 3/4 or 0: the least filtering that factors, more after a step "
+                      "the flip-free bound set); "
                       "auto: clamp for newton, exact for akvf-newton's Newton phase",
                       &O::eigen_filter));
   fields->push_back(integer_field<O>("threads", "threads", "N", "worker threads (0 = all cores)", &O::threads,

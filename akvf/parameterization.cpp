@@ -191,10 +191,36 @@ ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config
   return run;
 }
 
+namespace {
+
+// The warm start left the map near the run's minimum: within a factor e of
+// the energy's infimum E_lb. The warm-started energies are exponentials,
+// E = exp(f), on which Newton's steps lower f by only about 1 per
+// iteration far from the minimum and AKVF's by more
+// (switching_preconditioner.h); within that factor one Newton step covers
+// what is left of f.
+bool warm_start_near_minimum(const ParamSetup& setup) {
+  if (setup.warm_start.trace.empty() || setup.warm_start.x != setup.x0) return false;
+  return setup.objective->value(setup.x0) < std::exp(1.0) * setup.objective->lower_bound();
+}
+
+}  // namespace
+
 ParamRun optimize_from_start(const ParamSetup& setup, const ParamConfig& config,
-                             const std::vector<IterationCallback>& callbacks) {
-  ParamRun run = run_from_start(setup, config, callbacks);
+                             const std::vector<IterationCallback>& callbacks, bool near_minimum) {
+  if (config.preconditioner != "akvf-newton" || !(near_minimum || warm_start_near_minimum(setup))) {
+    ParamRun run = run_from_start(setup, config, callbacks);
+    prepend_warm_start(setup.warm_start, &run.result);
+    return run;
+  }
+  ParamConfig newton_phase = config;
+  newton_phase.preconditioner = "newton";
+  newton_phase.preconditioner_settings.newton = config.preconditioner_settings.newton_phase;
+  newton_phase.preconditioner_settings.newton_filter = config.preconditioner_settings.newton_phase_filter;
+  ParamRun run = run_from_start(setup, newton_phase, callbacks);
   prepend_warm_start(setup.warm_start, &run.result);
+  run.preconditioner_report = "from the start " + run.preconditioner_name + ": " + run.preconditioner_report;
+  run.preconditioner_name = config.preconditioner;
   return run;
 }
 

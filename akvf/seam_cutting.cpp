@@ -96,18 +96,6 @@ IterationCallback shifted(const IterationCallback& callback, const int* iteratio
   };
 }
 
-// A round that starts warm, from the last round's map (opened along new
-// seams, which changes the energy only near them), is where akvf-newton
-// would switch to its Newton phase: the curvature, not the flip-free bound,
-// sets the step. It starts there, with that phase's settings.
-ParamConfig warm(ParamConfig config) {
-  if (config.preconditioner != "akvf-newton") return config;
-  config.preconditioner = "newton";
-  config.preconditioner_settings.newton = config.preconditioner_settings.newton_phase;
-  config.preconditioner_settings.newton_filter = config.preconditioner_settings.newton_phase_filter;
-  return config;
-}
-
 // The next run starts at x, the last map on the opened mesh: as it is when
 // the run is only flip-free (returns true); else with the seams' sides
 // parted, if the boundary then does not cross itself (true: a flip-free map
@@ -165,9 +153,9 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
     round_callbacks.push_back(shifted(callback, &iterations, &seconds));
   ParamRun run;
   // Each round may take max_iterations; the time limit is for all of them.
-  auto optimize = [&](ParamConfig round) {
+  auto optimize = [&](ParamConfig round, bool near_minimum = false) {
     round.optimizer.time_limit = std::max(config.optimizer.time_limit - seconds, 1e-9);
-    run = optimize_from_start(*setup, round, round_callbacks);
+    run = optimize_from_start(*setup, round, round_callbacks, near_minimum);
     for (const IterationSummary& row : run.result.trace) {
       IterationSummary moved;
       if (shift_row(row, iterations, seconds, &moved)) all.trace.push_back(moved);
@@ -194,7 +182,9 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
     Eigen::VectorXd x(2 * source.size());
     for (std::size_t v = 0; v < source.size(); ++v) x.segment<2>(2 * v) = from.segment<2>(2 * source[v]);
     rebuild_problem(round, setup.get());
-    optimize(start_at(round, x, setup.get()) ? warm(round) : round);
+    // The last round's map, opened along new seams, changes the energy
+    // only near them: near the minimum.
+    optimize(round, start_at(round, x, setup.get()));
   };
   // Seams until the bound holds, optimizing after each: flip-free only, or
   // globally injective with the new seam's sides parted first.

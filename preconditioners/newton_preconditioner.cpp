@@ -103,9 +103,16 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
     last_filter_ = filter_;
   }
   mirrored_assemblies_ += last_filter_ == EigenvalueFilter::kAbsolute;
-  // kExact's fallback: the last one served (no failure since), so the next
-  // keeps less of the negative part.
-  if (partial_ && !partial_failed_) negative_share_ = std::max(kLeastNegativeShare, negative_share_ / 4);
+  // kExact's fallback served (no failure since): the next keeps less of the
+  // negative part after a unit step, more after a step the flip-free bound
+  // set (module comment).
+  if (partial_ && !partial_failed_) {
+    const bool bound_set = state.previous_step > 0 && state.previous_step < 1 && !state.previous_backtracked;
+    if (bound_set)
+      negative_share_ = std::min(1.0, 4 * negative_share_);
+    else if (state.previous_step == 1)
+      negative_share_ = std::max(kLeastNegativeShare, negative_share_ / 4);
+  }
   partial_ = filter_ == EigenvalueFilter::kExact && last_filter_ == EigenvalueFilter::kClamp &&
              this->solves_by_factorization();
   partial_failed_ = false;

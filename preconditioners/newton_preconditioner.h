@@ -38,9 +38,15 @@
 // (consecutive failures double the wait, a success resets it), as
 // factorization reuse backs off, and the iterations between use the
 // fallback. mu starts at 1/16, is quadrupled while P does not factor
-// (each try costs a factorization; at most three: 1/16, 1/4, 1) and
-// quartered, down to 1/16, after a fallback that factored at its first
-// try: a Levenberg-Marquardt damping whose regularizer is the part of the
+// (each try costs a factorization; at most three: 1/16, 1/4, 1), and
+// after a fallback that factored at its first try it follows the step, as
+// a trust region's radius does: quartered (down to 1/16) after Newton's
+// unit step was accepted at once (the model held), quadrupled (up to the
+// clamp) after a step the flip-free bound set (the model's minimizer lay
+// beyond an inversion: more damping shortens the direction toward the
+// collapsing elements, and a share the next factorization would reject is
+// not tried again and again), kept after one the line search shortened.
+// A Levenberg-Marquardt damping whose regularizer is the part of the
 // Hessian the clamp removes, not the identity. Why not the clamp at once:
 // where the exact Hessian is only slightly indefinite (a plateau or saddle
 // of a heavily compressed map), the clamp throws away every element's

@@ -501,11 +501,13 @@ TEST_CASE("the adaptive eigenvalue filter clamps only after a step the quadratic
 }
 
 TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive definite, else the clamped one") {
+  // After a step `step` (1: Newton's unit step, accepted at once; below 1:
+  // a step the flip-free bound set).
   const auto direction_and_matrix = [](const akvf::DistortionObjective2D& objective, const Eigen::VectorXd& x,
-                                       akvf::NewtonPreconditioner2D* newton, Eigen::MatrixXd* P) {
+                                       akvf::NewtonPreconditioner2D* newton, Eigen::MatrixXd* P, double step = 1) {
     Eigen::VectorXd g, d;
     const double energy = objective.value_and_gradient(x, &g);
-    newton->update({x, g, energy, 1});
+    newton->update({x, g, energy, 1, step, step / 0.8});
     newton->apply(g, &d);
     *P = Eigen::MatrixXd(newton->matrix().full());
     CHECK(g.dot(d) > 0);
@@ -682,6 +684,15 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
     direction_and_matrix(objective, x, &exact, &P);
     CHECK(exact.exact_fallbacks() == 2);
     CHECK(exact.negative_share() == share);
+    CHECK(exact.partial_fallbacks() == 2 * failures);
+    // After a fallback that served at once, a step the flip-free bound set
+    // quadruples the share (a trust region's radius shrinking), with no
+    // failed factorization.
+    direction_and_matrix(objective, x, &exact, &P);
+    CHECK(exact.negative_share() == share);
+    direction_and_matrix(objective, x, &exact, &P, 0.5);
+    CHECK(exact.last_partly_filtered());
+    CHECK(exact.negative_share() == std::min(1.0, 4 * share));
     CHECK(exact.partial_fallbacks() == 2 * failures);
   }
   SUBCASE("solved by CG, which cannot tell whether the Hessian is definite, the element Hessians are clamped") {

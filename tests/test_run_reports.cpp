@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -63,6 +64,31 @@ TEST_CASE("the exponential energies' warm start has its own limit, counts its ti
   CHECK(setup.warnings[0].find("the symmetric Dirichlet map reached") != std::string::npos);
   CHECK(setup.warnings[0].find("minimizer") == std::string::npos);
   CHECK(setup.warm_start.trace.back().iteration == 1);
+}
+
+TEST_CASE("after a warm start the default starts in its Newton phase only where the energy is within e of its infimum") {
+  // exp(k D) overflows at the Tutte map's worst triangles for both meshes;
+  // the flat grid's symmetric Dirichlet minimizer is an isometry (E = E_lb),
+  // the bumpy disk's leaves k (D - 4) well above 1 on average.
+  struct Case {
+    akvf::TriMesh mesh;
+    const char* report_start;
+  };
+  for (const Case& c : {Case{akvf::test::grid_disk(9, 9), "from the start newton: "},
+                        Case{akvf::test::bumpy_disk(9, 9), "akvf: "}}) {
+    ParamConfig config;
+    config.energy = "exp-symmetric-dirichlet";
+    config.energy_settings.exponent = 60;
+    const akvf::ParamSetup setup = akvf::prepare_parameterization(c.mesh, "b.obj", config);
+    REQUIRE(setup.warm_start.trace.size() >= 2);
+    const double ratio = setup.objective->value(setup.x0) / setup.objective->lower_bound();
+    CAPTURE(ratio);
+    CHECK((ratio < std::exp(1.0)) == (std::string(c.report_start) != "akvf: "));
+    const akvf::ParamRun run = akvf::run_parameterization(setup, config);
+    CHECK(run.preconditioner_name == "akvf-newton");
+    CHECK(run.preconditioner_report.rfind(c.report_start, 0) == 0);
+    CHECK(akvf::is_normal_termination(run.result.status));
+  }
 }
 
 TEST_CASE("a trace never holds NaN: overflowing energies end as numerical-failure naming an element") {

@@ -132,9 +132,14 @@ ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config
                               const std::vector<IterationCallback>& callbacks = {});
 
 // One optimization from setup.x0 with the warm start's rows ahead, without
-// the final map's overlap measures (the rounds of seam_cutting.h).
+// the final map's overlap measures (the rounds of seam_cutting.h). A run
+// from a map near a minimum (`near_minimum`: the last seam round's map, or
+// a warm start that left the energy within a factor e of its infimum) is
+// where akvf-newton would switch to its Newton phase: the curvature, not
+// the flip-free bound, sets the step (switching_preconditioner.h). It then
+// starts there, with that phase's settings.
 ParamRun optimize_from_start(const ParamSetup& setup, const ParamConfig& config,
-                             const std::vector<IterationCallback>& callbacks);
+                             const std::vector<IterationCallback>& callbacks, bool near_minimum = false);
 
 // The overlap measures and the distortion energy of run->result.x.
 void measure_final_map(const ParamSetup& setup, ParamRun* run);
