@@ -66,7 +66,8 @@ TEST_CASE("the exponential energies' warm start has its own limit, counts its ti
   CHECK(setup.warm_start.trace.back().iteration == 1);
 }
 
-TEST_CASE("after a warm start the default starts in its Newton phase only where the energy is within e of its infimum") {
+TEST_CASE(
+    "after a warm start the default starts in its Newton phase only where the energy is within e of its infimum") {
   // exp(k D) overflows at the Tutte map's worst triangles for both meshes;
   // the flat grid's symmetric Dirichlet minimizer is an isometry (E = E_lb),
   // the bumpy disk's leaves k (D - 4) well above 1 on average.
@@ -74,8 +75,8 @@ TEST_CASE("after a warm start the default starts in its Newton phase only where 
     akvf::TriMesh mesh;
     const char* report_start;
   };
-  for (const Case& c : {Case{akvf::test::grid_disk(9, 9), "from the start newton: "},
-                        Case{akvf::test::bumpy_disk(9, 9), "akvf: "}}) {
+  for (const Case& c :
+       {Case{akvf::test::grid_disk(9, 9), "from the start newton: "}, Case{akvf::test::bumpy_disk(9, 9), "akvf: "}}) {
     ParamConfig config;
     config.energy = "exp-symmetric-dirichlet";
     config.energy_settings.exponent = 60;
