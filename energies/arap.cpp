@@ -28,8 +28,7 @@ struct Rotation {
 // (IPC's barrier, C2 at r = 1) and its first two derivatives in g.
 struct CollapseBarrier {
   double b = 0, b_g = 0, b_gg = 0;
-  explicit CollapseBarrier(double g) {
-    const double hat = Arap2D::collapse_area_ratio();
+  CollapseBarrier(double g, double hat) {
     if (!(g < hat)) return;
     const double r = g / hat, gap = r - 1, log_r = std::log(r);
     b = -gap * gap * log_r;
@@ -38,13 +37,54 @@ struct CollapseBarrier {
   }
 };
 
+// d det J / dvec(J) in 3D: the cofactor matrix, column-major.
+Eigen::Matrix<double, 9, 1> cofactor_3d(const Eigen::Matrix3d& J) {
+  Eigen::Matrix3d C;
+  C.col(0) = J.col(1).cross(J.col(2));
+  C.col(1) = J.col(2).cross(J.col(0));
+  C.col(2) = J.col(0).cross(J.col(1));
+  return Eigen::Map<const Eigen::Matrix<double, 9, 1>>(C.data());
+}
+
+// d2 det J / dJ_ij dJ_kl = eps_ikm eps_jln J_mn (column-major vec: J_ij at i + 3 j).
+Eigen::Matrix<double, 9, 9> determinant_hessian_3d(const Eigen::Matrix3d& J) {
+  const auto eps = [](int a, int b, int c) { return (a - b) * (b - c) * (c - a) / 2; };
+  Eigen::Matrix<double, 9, 9> H = Eigen::Matrix<double, 9, 9>::Zero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          if (i == k || j == l) continue;
+          const int m = 3 - i - k, n = 3 - j - l;
+          H(i + 3 * j, k + 3 * l) = eps(i, k, m) * eps(j, l, n) * J(m, n);
+        }
+  return H;
+}
+
+// The barrier's eigenvalues in the singular-value frame (Smith et al.; the
+// barrier is b(sigma_1 sigma_2 sigma_3)): with p_i = g / sigma_i, twists
+// b_g sigma_k, flips -b_g sigma_k, scalings b_gg p p^T + b_g (p_ij off the
+// diagonal, the third singular value).
+void add_barrier_eigenvalues(const CollapseBarrier& barrier, SingularEigensystem3D* system) {
+  const Eigen::Vector3d& sigma = system->sigma;
+  const Eigen::Vector3d p(sigma[1] * sigma[2], sigma[2] * sigma[0], sigma[0] * sigma[1]);
+  for (int k = 0; k < 3; ++k) {
+    system->twist[k] += barrier.b_g * sigma[k];
+    system->flip[k] -= barrier.b_g * sigma[k];
+  }
+  system->scaling += barrier.b_gg * p * p.transpose();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (i != j) system->scaling(i, j) += barrier.b_g * sigma[3 - i - j];
+}
+
 }  // namespace
 
 InvariantDerivatives2D Arap2D::derivatives(double s, double g) const {
   const double root = std::sqrt(s + 2 * g);
   const double inv3 = 1 / (root * root * root);
   InvariantDerivatives2D d = {s - 2 * root + 2, 1 - 1 / root, -2 / root, 0.5 * inv3, inv3, 2 * inv3};
-  const CollapseBarrier barrier(g);
+  const CollapseBarrier barrier(g, collapse_area_ratio());
   d.f += barrier.b;
   d.f_g += barrier.b_g;
   d.f_gg += barrier.b_gg;
@@ -55,7 +95,7 @@ bool Arap2D::collapse_barrier_hessian(const Matrix& J, Hessian* H) const {
   const double g = J.determinant();
   if (!(g > 0 && g < collapse_area_ratio())) return false;
   // d2 b(det J) / dvec(J)^2 = b_gg c c^T + b_g H_det, c the cofactor.
-  const CollapseBarrier barrier(g);
+  const CollapseBarrier barrier(g, collapse_area_ratio());
   const Eigen::Vector4d c = cofactor_2d(J);
   *H = with_eigenvalues(barrier.b_gg * c * c.transpose() + barrier.b_g * determinant_hessian_2d(),
                         [](double lambda) { return lambda > 0 ? lambda : 0.0; });
@@ -63,15 +103,19 @@ bool Arap2D::collapse_barrier_hessian(const Matrix& J, Hessian* H) const {
 }
 
 double Arap3D::value(const Matrix& J) const {
-  if (!(J.determinant() > 0)) return kInvertedEnergy;
-  return (Rotation(J).sigma.array() - 1).square().sum();
+  const double g = J.determinant();
+  if (!(g > 0)) return kInvertedEnergy;
+  return (Rotation(J).sigma.array() - 1).square().sum() + CollapseBarrier(g, collapse_volume_ratio()).b;
 }
 
 double Arap3D::value_and_gradient(const Matrix& J, Matrix* dD_dJ) const {
-  if (!(J.determinant() > 0)) return kInvertedEnergy;
+  const double g = J.determinant();
+  if (!(g > 0)) return kInvertedEnergy;
   const Rotation polar(J);
+  const CollapseBarrier barrier(g, collapse_volume_ratio());
   *dD_dJ = 2 * (J - polar.R());
-  return (polar.sigma.array() - 1).square().sum();
+  if (barrier.b_g != 0) dD_dJ->reshaped() += barrier.b_g * cofactor_3d(J);
+  return (polar.sigma.array() - 1).square().sum() + barrier.b;
 }
 
 Arap3D::Hessian Arap3D::hessian(const Matrix& J) const {
@@ -84,6 +128,11 @@ Arap3D::Hessian Arap3D::hessian(const Matrix& J) const {
       const Eigen::Map<const Eigen::Matrix<double, 9, 1>> t(twist.data());
       H -= (4 / (polar.sigma[i] + polar.sigma[j])) * t * t.transpose();
     }
+  const CollapseBarrier barrier(J.determinant(), collapse_volume_ratio());
+  if (barrier.b_g != 0) {
+    const Eigen::Matrix<double, 9, 1> c = cofactor_3d(J);
+    H += barrier.b_gg * c * c.transpose() + barrier.b_g * determinant_hessian_3d(J);
+  }
   return H;
 }
 
@@ -95,11 +144,23 @@ Arap3D::Hessian Arap3D::filtered_hessian(const Matrix& J, bool absolute) const {
     system.flip[k] = 2;
   }
   system.scaling = 2 * Eigen::Matrix3d::Identity();
+  add_barrier_eigenvalues(CollapseBarrier(J.determinant(), collapse_volume_ratio()), &system);
   return system.filtered_hessian(absolute);
 }
 
+bool Arap3D::collapse_barrier_hessian(const Matrix& J, Hessian* H) const {
+  const double g = J.determinant();
+  if (!(g > 0 && g < collapse_volume_ratio())) return false;
+  SingularEigensystem3D system(J);
+  add_barrier_eigenvalues(CollapseBarrier(g, collapse_volume_ratio()), &system);
+  *H = system.filtered_hessian(false);
+  return true;
+}
+
 Eigen::Vector3d Arap3D::singular_value_gradient(const Eigen::Vector3d& sigma) const {
-  return 2 * (sigma.array() - 1).matrix();
+  const CollapseBarrier barrier(sigma.prod(), collapse_volume_ratio());
+  const Eigen::Vector3d p(sigma[1] * sigma[2], sigma[2] * sigma[0], sigma[0] * sigma[1]);
+  return 2 * (sigma.array() - 1).matrix() + barrier.b_g * p;
 }
 
 }  // namespace akvf

@@ -95,8 +95,9 @@
 // bound is about a fifth of the last; a bound that keeps more than
 // `closing_ratio` (half) of the last is not closing in (Newton's far phase
 // on tricera_b subdivided: 0.713, 0.710, 0.693). An energy whose infimum
-// lies on a collapse does that (the 3D ARAP, which has no collapse barrier,
-// energies/arap.h), and a barrier's stiff neighbourhood can. After
+// lies on a collapse does that (an energy without a collapse barrier, as
+// ARAP's own density: energies/arap.h), and a barrier's stiff
+// neighbourhood can. After
 // `patience` such Newton steps in a row the first preconditioner is rebuilt
 // (its assembly pattern anew) and takes over the second's analysis and
 // factor. Each return doubles the patience of the next switch to the

@@ -115,6 +115,59 @@ TEST_CASE("ARAP's collapse barrier Hessian is the clamped Hessian of the barrier
   CHECK(H.selfadjointView<Eigen::Lower>().eigenvalues().minCoeff() >= -1e-9 * H.norm());
 }
 
+TEST_CASE("3D ARAP's collapse barrier: plain ARAP from g_hat up, smooth below it, its own closed-form eigensystem") {
+  const akvf::Arap3D arap;
+  const double hat = akvf::Arap3D::collapse_volume_ratio();
+  const auto plain = [](const Eigen::Vector3d& sigma) { return (sigma.array() - 1).square().sum(); };
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  const Eigen::Vector3d above(2, 1, hat / 1.9), below(2, 1, hat / 4);
+  CHECK(arap.value(R * above.asDiagonal()) == doctest::Approx(plain(above)).epsilon(1e-14));
+  CHECK(arap.value(R * below.asDiagonal()) > plain(below));
+  double previous = 0;
+  for (double g : {hat / 2, 1e-6, 1e-9, 1e-12}) {
+    const double value = arap.value(Eigen::Vector3d(1, 1, g).asDiagonal());
+    CHECK(value > previous);
+    previous = value;
+  }
+  CHECK(previous > 10);
+  akvf::DistortionDensity3D::Hessian H;
+  CHECK_FALSE(arap.collapse_barrier_hessian(R * above.asDiagonal(), &H));
+  // Singular values from 0.04 to 0.2: det J on both sides of g_hat.
+  akvf::test::check_density_derivatives<3>(arap, 0.04, 0.2, 40, 3);
+  akvf::test::check_singular_value_gradient<3>(arap, Eigen::Vector3d(1.5, 0.3, 1e-3));
+  const Eigen::Matrix3d R2 = Eigen::AngleAxisd(-1.1, Eigen::Vector3d(0.3, 1, 1).normalized()).toRotationMatrix();
+  bool indefinite = false;
+  for (const Eigen::Vector3d& sigma :
+       {Eigen::Vector3d(1.5, 0.8, 2e-4), Eigen::Vector3d(0.1, 0.1, 0.02), Eigen::Vector3d(0.05, 0.05, 0.05)}) {
+    CAPTURE(sigma.transpose());
+    const Eigen::Matrix3d J = R * sigma.asDiagonal() * R2;
+    REQUIRE(J.determinant() < hat);
+    indefinite = akvf::test::check_filtered_hessians<3>(arap, J) || indefinite;
+    // The barrier alone (ARAP's value less sum (sigma_i - 1)^2), clamped.
+    REQUIRE(arap.collapse_barrier_hessian(J, &H));
+    const auto barrier = [&](const Eigen::Matrix3d& K) {
+      return arap.value(K) - plain(Eigen::JacobiSVD<Eigen::Matrix3d>(K).singularValues());
+    };
+    const double h = 1e-4 * sigma.minCoeff();
+    akvf::DistortionDensity3D::Hessian raw;
+    for (int a = 0; a < 9; ++a)
+      for (int b = 0; b < 9; ++b) {
+        const auto at = [&](double da, double db) {
+          Eigen::Matrix3d K = J;
+          K.data()[a] += da;
+          K.data()[b] += db;
+          return barrier(K);
+        };
+        raw(a, b) = (at(h, h) - at(h, -h) - at(-h, h) + at(-h, -h)) / (4 * h * h);
+      }
+    const Eigen::SelfAdjointEigenSolver<akvf::DistortionDensity3D::Hessian> eig(0.5 * (raw + raw.transpose()));
+    const akvf::DistortionDensity3D::Hessian clamped =
+        eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
+    CHECK((H - clamped).norm() <= 1e-4 * clamped.norm());
+  }
+  CHECK(indefinite);
+}
+
 TEST_CASE("every energy attains its lower bound at rotations and is infinite when inverted") {
   const akvf::Arap2D arap;
   const akvf::Mips2D mips;
