@@ -208,19 +208,19 @@ bool warm_start_near_minimum(const ParamSetup& setup) {
 
 ParamRun optimize_from_start(const ParamSetup& setup, const ParamConfig& config,
                              const std::vector<IterationCallback>& callbacks, bool near_minimum) {
-  if (config.preconditioner != "akvf-newton" || !(near_minimum || warm_start_near_minimum(setup))) {
-    ParamRun run = run_from_start(setup, config, callbacks);
-    prepend_warm_start(setup.warm_start, &run.result);
-    return run;
+  const bool newton_phase = config.preconditioner == "akvf-newton" && (near_minimum || warm_start_near_minimum(setup));
+  ParamConfig used = config;
+  if (newton_phase) {
+    used.preconditioner = "newton";
+    used.preconditioner_settings.newton = config.preconditioner_settings.newton_phase;
+    used.preconditioner_settings.newton_filter = config.preconditioner_settings.newton_phase_filter;
   }
-  ParamConfig newton_phase = config;
-  newton_phase.preconditioner = "newton";
-  newton_phase.preconditioner_settings.newton = config.preconditioner_settings.newton_phase;
-  newton_phase.preconditioner_settings.newton_filter = config.preconditioner_settings.newton_phase_filter;
-  ParamRun run = run_from_start(setup, newton_phase, callbacks);
+  ParamRun run = run_from_start(setup, used, callbacks);
   prepend_warm_start(setup.warm_start, &run.result);
-  run.preconditioner_report = "from the start " + run.preconditioner_name + ": " + run.preconditioner_report;
-  run.preconditioner_name = config.preconditioner;
+  if (newton_phase) {
+    run.preconditioner_report = "from the start " + run.preconditioner_name + ": " + run.preconditioner_report;
+    run.preconditioner_name = config.preconditioner;
+  }
   return run;
 }
 
