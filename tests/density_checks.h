@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
 #include <random>
 
 #include "akvf/distortion_density.h"
@@ -74,6 +75,37 @@ bool check_filtered_hessians(const DistortionDensity<Dim>& density, const Eigen:
   const H mirrored = eig.eigenvectors() * eig.eigenvalues().cwiseAbs().asDiagonal() * eig.eigenvectors().transpose();
   CHECK((density.absolute_hessian(J) - mirrored).norm() <= 1e-10 * (1 + mirrored.norm()));
   return eig.eigenvalues().minCoeff() < 0;
+}
+
+// The density's collapse barrier Hessian at J against the barrier alone
+// (its value less sum (sigma_i - 1)^2, ARAP's own density) by central
+// differences in vec(J) with step h, its eigenvalues clamped at 0.
+template <int Dim>
+void check_collapse_barrier_hessian(const DistortionDensity<Dim>& density, const Eigen::Matrix<double, Dim, Dim>& J,
+                                    double h) {
+  using M = Eigen::Matrix<double, Dim, Dim>;
+  using H = typename DistortionDensity<Dim>::Hessian;
+  H barrier_hessian;
+  REQUIRE(density.collapse_barrier_hessian(J, &barrier_hessian));
+  const auto barrier = [&](const M& K) {
+    return density.value(K) - (Eigen::JacobiSVD<M>(K).singularValues().array() - 1).square().sum();
+  };
+  H raw;
+  for (int a = 0; a < Dim * Dim; ++a)
+    for (int b = 0; b < Dim * Dim; ++b) {
+      const auto at = [&](double da, double db) {
+        M K = J;
+        K.data()[a] += da;
+        K.data()[b] += db;
+        return barrier(K);
+      };
+      raw(a, b) = (at(h, h) - at(h, -h) - at(-h, h) + at(-h, -h)) / (4 * h * h);
+    }
+  const Eigen::SelfAdjointEigenSolver<H> eig(0.5 * (raw + raw.transpose()));
+  const H clamped = eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
+  CHECK((barrier_hessian - clamped).norm() <= 1e-4 * clamped.norm());
+  CHECK(barrier_hessian.template selfadjointView<Eigen::Lower>().eigenvalues().minCoeff() >=
+        -1e-9 * barrier_hessian.norm());
 }
 
 // dD/dsigma_i of a density with a singular-value derivative against central

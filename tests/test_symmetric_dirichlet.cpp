@@ -89,30 +89,7 @@ TEST_CASE("ARAP's collapse barrier Hessian is the clamped Hessian of the barrier
   CHECK_FALSE(arap.collapse_barrier_hessian(Eigen::Vector2d(1, -hat / 2).asDiagonal(), &H));
   const Eigen::Matrix2d J =
       R * Eigen::Vector2d(1.5, hat / 3).asDiagonal() * Eigen::Rotation2Dd(-1.1).toRotationMatrix();
-  REQUIRE(arap.collapse_barrier_hessian(J, &H));
-  // The barrier alone: ARAP's value minus sum (sigma_i - 1)^2, by central
-  // differences in vec(J).
-  const auto barrier = [&](const Eigen::Matrix2d& K) {
-    const Eigen::Vector2d sigma = Eigen::JacobiSVD<Eigen::Matrix2d>(K).singularValues();
-    return arap.value(K) - (sigma.array() - 1).square().sum();
-  };
-  const double h = 1e-6;
-  akvf::DistortionDensity2D::Hessian raw;
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b) {
-      const auto at = [&](double da, double db) {
-        Eigen::Matrix2d K = J;
-        K.data()[a] += da;
-        K.data()[b] += db;
-        return barrier(K);
-      };
-      raw(a, b) = (at(h, h) - at(h, -h) - at(-h, h) + at(-h, -h)) / (4 * h * h);
-    }
-  const Eigen::SelfAdjointEigenSolver<akvf::DistortionDensity2D::Hessian> eig(0.5 * (raw + raw.transpose()));
-  const akvf::DistortionDensity2D::Hessian clamped =
-      eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
-  CHECK((H - clamped).norm() <= 1e-4 * clamped.norm());
-  CHECK(H.selfadjointView<Eigen::Lower>().eigenvalues().minCoeff() >= -1e-9 * H.norm());
+  akvf::test::check_collapse_barrier_hessian<2>(arap, J, 1e-6);
 }
 
 TEST_CASE("3D ARAP's collapse barrier: plain ARAP from g_hat up, smooth below it, its own closed-form eigensystem") {
@@ -143,27 +120,7 @@ TEST_CASE("3D ARAP's collapse barrier: plain ARAP from g_hat up, smooth below it
     const Eigen::Matrix3d J = R * sigma.asDiagonal() * R2;
     REQUIRE(J.determinant() < hat);
     indefinite = akvf::test::check_filtered_hessians<3>(arap, J) || indefinite;
-    // The barrier alone (ARAP's value less sum (sigma_i - 1)^2), clamped.
-    REQUIRE(arap.collapse_barrier_hessian(J, &H));
-    const auto barrier = [&](const Eigen::Matrix3d& K) {
-      return arap.value(K) - plain(Eigen::JacobiSVD<Eigen::Matrix3d>(K).singularValues());
-    };
-    const double h = 1e-4 * sigma.minCoeff();
-    akvf::DistortionDensity3D::Hessian raw;
-    for (int a = 0; a < 9; ++a)
-      for (int b = 0; b < 9; ++b) {
-        const auto at = [&](double da, double db) {
-          Eigen::Matrix3d K = J;
-          K.data()[a] += da;
-          K.data()[b] += db;
-          return barrier(K);
-        };
-        raw(a, b) = (at(h, h) - at(h, -h) - at(-h, h) + at(-h, -h)) / (4 * h * h);
-      }
-    const Eigen::SelfAdjointEigenSolver<akvf::DistortionDensity3D::Hessian> eig(0.5 * (raw + raw.transpose()));
-    const akvf::DistortionDensity3D::Hessian clamped =
-        eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
-    CHECK((H - clamped).norm() <= 1e-4 * clamped.norm());
+    akvf::test::check_collapse_barrier_hessian<3>(arap, J, 1e-4 * sigma.minCoeff());
   }
   CHECK(indefinite);
 }
