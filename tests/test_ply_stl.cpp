@@ -178,8 +178,9 @@ TEST_CASE("PLY: malformed headers and bodies name the line or byte and the probl
             .find("'99999999999' is not an integer of the declared type (item 0 of property "
                   "'vertex_indices' of face 0)") != std::string::npos);
   CHECK(ply_error(good + "1 2\n").find("more rows than the header's element counts declare") != std::string::npos);
-  std::string short_row = good;
-  short_row.replace(short_row.find(" 200\n"), 5, "\n");
+  const std::size_t blue = good.find(" 200\n");
+  REQUIRE(blue != std::string::npos);
+  const std::string short_row = good.substr(0, blue) + "\n" + good.substr(blue + 5);
   CHECK(ply_error(short_row).find("the line ends before property 'red' of vertex 0") != std::string::npos);
   // Binary: truncated, or counts far larger than the file (refused before allocating).
   CHECK(ply_error(binary.substr(0, binary.size() - 3)).find("m.ply: byte ") == 0);
