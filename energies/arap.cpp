@@ -61,10 +61,11 @@ Eigen::Matrix<double, 9, 9> determinant_hessian_3d(const Eigen::Matrix3d& J) {
   return H;
 }
 
-// The barrier's eigenvalues in the singular-value frame (Smith et al.; the
-// barrier is b(sigma_1 sigma_2 sigma_3)): with p_i = g / sigma_i, twists
-// b_g sigma_k, flips -b_g sigma_k, scalings b_gg p p^T + b_g (p_ij off the
-// diagonal, the third singular value).
+// The barrier's eigenvalues added in the singular-value frame (Smith et
+// al.; the barrier is b(sigma_1 sigma_2 sigma_3)): for the pair (i, j) with
+// third index k, twist b_g sigma_k and flip -b_g sigma_k; the scalings'
+// matrix b_gg p p^T (p_i = g / sigma_i) plus b_g sigma_k at (i, j) off the
+// diagonal.
 void add_barrier_eigenvalues(const CollapseBarrier& barrier, SingularEigensystem3D* system) {
   const Eigen::Vector3d& sigma = system->sigma;
   const Eigen::Vector3d p(sigma[1] * sigma[2], sigma[2] * sigma[0], sigma[0] * sigma[1]);
