@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "energies/invariant_density_3d.h"
 #include "energies/singular_eigensystem_3d.h"
 
 namespace akvf {
@@ -36,30 +37,6 @@ struct CollapseBarrier {
     b_gg = (-2 * log_r - 4 * gap / r + gap * gap / (r * r)) / (hat * hat);
   }
 };
-
-// d det J / dvec(J) in 3D: the cofactor matrix, column-major.
-Eigen::Matrix<double, 9, 1> cofactor_3d(const Eigen::Matrix3d& J) {
-  Eigen::Matrix3d C;
-  C.col(0) = J.col(1).cross(J.col(2));
-  C.col(1) = J.col(2).cross(J.col(0));
-  C.col(2) = J.col(0).cross(J.col(1));
-  return Eigen::Map<const Eigen::Matrix<double, 9, 1>>(C.data());
-}
-
-// d2 det J / dJ_ij dJ_kl = eps_ikm eps_jln J_mn (column-major vec: J_ij at i + 3 j).
-Eigen::Matrix<double, 9, 9> determinant_hessian_3d(const Eigen::Matrix3d& J) {
-  const auto eps = [](int a, int b, int c) { return (a - b) * (b - c) * (c - a) / 2; };
-  Eigen::Matrix<double, 9, 9> H = Eigen::Matrix<double, 9, 9>::Zero();
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k)
-        for (int l = 0; l < 3; ++l) {
-          if (i == k || j == l) continue;
-          const int m = 3 - i - k, n = 3 - j - l;
-          H(i + 3 * j, k + 3 * l) = eps(i, k, m) * eps(j, l, n) * J(m, n);
-        }
-  return H;
-}
 
 // The barrier's eigenvalues added in the singular-value frame (Smith et
 // al.; the barrier is b(sigma_1 sigma_2 sigma_3)): for the pair (i, j) with
@@ -115,7 +92,7 @@ double Arap3D::value_and_gradient(const Matrix& J, Matrix* dD_dJ) const {
   const Rotation polar(J);
   const CollapseBarrier barrier(g, collapse_volume_ratio());
   *dD_dJ = 2 * (J - polar.R());
-  if (barrier.b_g != 0) dD_dJ->reshaped() += barrier.b_g * cofactor_3d(J);
+  if (barrier.b_g != 0) *dD_dJ += barrier.b_g * cofactor_3d(J);
   return (polar.sigma.array() - 1).square().sum() + barrier.b;
 }
 
@@ -131,7 +108,8 @@ Arap3D::Hessian Arap3D::hessian(const Matrix& J) const {
     }
   const CollapseBarrier barrier(J.determinant(), collapse_volume_ratio());
   if (barrier.b_g != 0) {
-    const Eigen::Matrix<double, 9, 1> c = cofactor_3d(J);
+    const Eigen::Matrix3d C = cofactor_3d(J);
+    const Eigen::Map<const Eigen::Matrix<double, 9, 1>> c(C.data());
     H += barrier.b_gg * c * c.transpose() + barrier.b_g * determinant_hessian_3d(J);
   }
   return H;

@@ -17,33 +17,9 @@ using Matrix9 = Eigen::Matrix<double, 9, 9>;
 
 Vector9 vec_3d(const Matrix3& M) { return Eigen::Map<const Vector9>(M.data()); }
 
-Matrix3 cofactor_3d(const Matrix3& J) {
-  Matrix3 C;
-  C.col(0) = J.col(1).cross(J.col(2));
-  C.col(1) = J.col(2).cross(J.col(0));
-  C.col(2) = J.col(0).cross(J.col(1));
-  return C;
-}
-
 double cofactor_norm2(const Matrix3& J) {
   const double s = J.squaredNorm();
   return 0.5 * (s * s - (J.transpose() * J).squaredNorm());
-}
-
-// d2 det / dvec(J)^2: entry (i + 3j, k + 3l) = sum_mn eps_ikm eps_jln J_mn.
-Matrix9 determinant_hessian(const Matrix3& J) {
-  const auto eps = [](int a, int b, int c) { return double((a - b) * (b - c) * (c - a)) / 2; };
-  Matrix9 H = Matrix9::Zero();
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k)
-        for (int l = 0; l < 3; ++l) {
-          double sum = 0;
-          for (int m = 0; m < 3; ++m)
-            for (int n = 0; n < 3; ++n) sum += eps(i, k, m) * eps(j, l, n) * J(m, n);
-          H(i + 3 * j, k + 3 * l) = sum;
-        }
-  return H;
 }
 
 // Hessian of c = (s^2 - |J^T J|^2) / 2 in vec_3d(J):
@@ -66,6 +42,30 @@ Matrix9 cofactor_norm_hessian(const Matrix3& J) {
 }
 
 }  // namespace
+
+Eigen::Matrix3d cofactor_3d(const Eigen::Matrix3d& J) {
+  Eigen::Matrix3d C;
+  C.col(0) = J.col(1).cross(J.col(2));
+  C.col(1) = J.col(2).cross(J.col(0));
+  C.col(2) = J.col(0).cross(J.col(1));
+  return C;
+}
+
+// Entry (i + 3j, k + 3l) = sum_mn eps_ikm eps_jln J_mn.
+Eigen::Matrix<double, 9, 9> determinant_hessian_3d(const Eigen::Matrix3d& J) {
+  const auto eps = [](int a, int b, int c) { return double((a - b) * (b - c) * (c - a)) / 2; };
+  Eigen::Matrix<double, 9, 9> H = Eigen::Matrix<double, 9, 9>::Zero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          double sum = 0;
+          for (int m = 0; m < 3; ++m)
+            for (int n = 0; n < 3; ++n) sum += eps(i, k, m) * eps(j, l, n) * J(m, n);
+          H(i + 3 * j, k + 3 * l) = sum;
+        }
+  return H;
+}
 
 double InvariantDensity3D::value(const Matrix& J) const {
   const double g = J.determinant();
@@ -91,7 +91,7 @@ InvariantDensity3D::Hessian InvariantDensity3D::hessian(const Matrix& J) const {
   Eigen::Matrix3d second;
   second << d.f_ss, d.f_sc, d.f_sg, d.f_sc, d.f_cc, d.f_cg, d.f_sg, d.f_cg, d.f_gg;
   return G * second * G.transpose() + 2 * d.f_s * Matrix9::Identity() + d.f_c * cofactor_norm_hessian(J) +
-         d.f_g * determinant_hessian(J);
+         d.f_g * determinant_hessian_3d(J);
 }
 
 InvariantDensity3D::Hessian InvariantDensity3D::filtered_hessian(const Matrix& J, bool absolute) const {

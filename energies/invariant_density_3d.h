@@ -11,6 +11,10 @@
 
 namespace akvf {
 
+// cof J = d det J / dJ, and d2 det J / dvec(J)2 (column-major vec, linear in J).
+Eigen::Matrix3d cofactor_3d(const Eigen::Matrix3d& J);
+Eigen::Matrix<double, 9, 9> determinant_hessian_3d(const Eigen::Matrix3d& J);
+
 struct InvariantDerivatives3D {
   double f = 0;
   double f_s = 0, f_c = 0, f_g = 0;
