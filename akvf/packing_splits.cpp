@@ -10,6 +10,7 @@
 #include "framework/mesh/chart_splitting.h"
 #include "framework/mesh/plane_geometry.h"
 #include "framework/mesh/seam_opening.h"
+#include "framework/process/interrupt.h"
 
 namespace akvf {
 
@@ -66,7 +67,8 @@ PackingCuts cut_for_packing(PackingCuts from, double gutter, const ParamConfig& 
   // each before the square shrinks.
   PackingCuts best{disk, UV, coverage, from.splits};
   int splits = from.splits;
-  while (splits < kMaxSplits && splits - best.splits <= kLookAhead && best.coverage < config.min_coverage) {
+  while (splits < kMaxSplits && splits - best.splits <= kLookAhead && best.coverage < config.min_coverage &&
+         !interrupt_requested()) {
     const int charts = disk.num_charts();
     if (splits > 0) waste = chart_waste(disk.mesh.F, UV, disk.face_chart, charts);
     std::vector<int> order(charts);
@@ -78,7 +80,9 @@ PackingCuts cut_for_packing(PackingCuts from, double gutter, const ParamConfig& 
     DiskMesh next_disk;
     Eigen::MatrixXd next_uv;
     const double least_waste = (kLeastGain - 1) * area / best.coverage;
-    for (int i = 0; i < std::min(charts, kChartsPerRound) && gained == 0 && waste[order[i]] >= least_waste; ++i) {
+    for (int i = 0; i < std::min(charts, kChartsPerRound) && gained == 0 && waste[order[i]] >= least_waste &&
+                    !interrupt_requested();
+         ++i) {
       const int chart = order[i];
       const auto keeps_bound = [&](const ChartSplit& s) {
         if (!bound) return true;
@@ -170,7 +174,7 @@ bool worth_taking(const PackingCuts& cuts, int charts_before, double min_coverag
 
 void split_for_packing(const ParamSetup& setup, const ParamConfig& config,
                        const std::vector<IterationCallback>& callbacks, ParamRun* run) {
-  if (!config.cut || !(config.min_coverage > 0) || run->result.x.size() == 0 || stop_asked(run->result.status)) return;
+  if (stop_on_signal(&run->result) || !config.cut || !(config.min_coverage > 0) || run->result.x.size() == 0) return;
   const ParamSetup& start = final_setup(setup, *run);
   const int charts = start.disk.num_charts();
   Eigen::VectorXd energy;
@@ -199,12 +203,15 @@ void split_for_packing(const ParamSetup& setup, const ParamConfig& config,
         if (recut.coverage >= kLeastGain * cuts.coverage) {
           const std::shared_ptr<const ParamSetup> seamed = again.seamed;
           if (recut.splits > 0) take_cuts(*seamed, config, std::move(recut), again_energy, &again);
+          stop_on_signal(&again.result);
           *run = std::move(again);
           return;
         }
       }
     }
   }
+  // A signal during the cuts ends them; those made so far are kept.
+  stop_on_signal(&run->result);
   if (worth_taking(cuts, charts, config.min_coverage)) take_cuts(start, config, cuts, energy, run);
 }
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "akvf/catalog.h"
 #include "akvf/error.h"
@@ -16,6 +17,7 @@
 #include "framework/mesh/vertex_graph.h"
 #include "framework/optimization/injective_objective.h"
 #include "framework/optimization/uniform_scale.h"
+#include "framework/process/interrupt.h"
 #include "preconditioners/contact_preconditioner.h"
 #include "solvers/lbfgs_solver.h"
 #include "solvers/sparse_cholesky.h"
@@ -177,15 +179,28 @@ void prepend_warm_start(const OptimizerResult& warm, OptimizerResult* result) {
 
 }  // namespace
 
+bool stop_on_signal(OptimizerResult* result) {
+  if (stop_asked(result->status)) return true;
+  if (!interrupt_requested()) return false;
+  result->status = TerminationStatus::kInterrupted;
+  result->message = "interrupted by a signal";
+  return true;
+}
+
 ParamRun run_parameterization(const ParamSetup& setup, const ParamConfig& config,
                               const std::vector<IterationCallback>& callbacks) {
   const ThreadLimit threads(config.threads);
   ParamRun run;
+  // The rounds of seams and the cuts for the packing look for a signal
+  // between their steps, as the optimizer does between iterations.
+  std::optional<InterruptibleLoop> interruptible;
   if (config.seams) {
+    interruptible.emplace();
     run = run_with_seams(setup, config, callbacks);
   } else {
     run = optimize_from_start(setup, config, callbacks);
     measure_final_map(setup, &run);
+    if (config.cut) interruptible.emplace();
   }
   split_for_packing(setup, config, callbacks, &run);
   return run;

@@ -175,7 +175,7 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
         *std::max_element(report.chart_distortion.begin(), report.chart_distortion.end()) <= config.max_distortion;
     return energy;
   };
-  auto running = [&] { return is_normal_termination(all.status) && !stop_asked(all.status); };
+  auto running = [&] { return !stop_on_signal(&all) && is_normal_termination(all.status); };
   // The run goes on from the map `from` on the mesh just opened, whose
   // vertex v copies source[v] of the mesh before.
   auto go_on = [&](const ParamConfig& round, const std::vector<int>& source, const Eigen::VectorXd& from) {

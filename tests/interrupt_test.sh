@@ -60,6 +60,30 @@ tail -n 1 "$dir/spiky.csv" | grep -q ',interrupted$' || { echo "--cut seams: las
 [ "$(grep -c '^f ' "$dir/spiky_uv.obj")" -eq 2048 ] || { echo "--cut seams: incomplete UV OBJ"; exit 1; }
 echo "--cut seams interrupted cleanly"
 
+# Later in the rounds (pieces, parting, the cuts for the packing, between the
+# optimizer's loops) a signal ends the run as cleanly; a run that ended
+# before the signal exits 0.
+for delay in 2 6; do
+  rm -f "$dir/spiky.csv" "$dir/spiky_uv.obj"
+  "$akvf" param "$dir/spiky.off" --cut seams --out "$dir/spiky_uv.obj" --trace "$dir/spiky.csv" --quiet \
+    > "$dir/stdout" 2> "$dir/stderr" &
+  pid=$!
+  wait_for_iterations "$dir/spiky.csv"
+  sleep "$delay"
+  kill -INT "$pid" 2> /dev/null || true
+  signalled=$(date +%s)
+  set +e
+  wait "$pid"
+  code=$?
+  set -e
+  [ "$code" -eq 0 ] && continue
+  [ "$code" -eq 130 ] || { echo "--cut seams, signal ${delay} s in: exit code $code"; cat "$dir/stderr"; exit 1; }
+  [ $(($(date +%s) - signalled)) -le 5 ] || { echo "--cut seams, signal ${delay} s in: went on after it"; exit 1; }
+  tail -n 1 "$dir/spiky.csv" | grep -q ',interrupted$' || { echo "--cut seams, signal ${delay} s in: no interrupted row"; exit 1; }
+  [ "$(grep -c '^f ' "$dir/spiky_uv.obj")" -eq 2048 ] || { echo "--cut seams, signal ${delay} s in: incomplete UV OBJ"; exit 1; }
+done
+echo "--cut seams interrupted cleanly later in the rounds"
+
 # Before the first iteration (here: reading a FIFO nobody writes to) a signal
 # ends the process at once: `timeout` sends SIGTERM after 1 s and reports 124
 # when the command then ends (137 if it had to send SIGKILL 5 s later).

@@ -119,6 +119,11 @@ inline bool stop_asked(TerminationStatus status) {
   return status == TerminationStatus::kUserStopped || status == TerminationStatus::kInterrupted;
 }
 
+// Whether the run stops here: a stop asked already, or a signal arrived
+// (framework/process/interrupt.h) while the work between or after the
+// optimizer's loops ran, which then sets result's status to interrupted.
+bool stop_on_signal(OptimizerResult* result);
+
 // The problem run.result.x is a map of: run.seamed if seams were added or
 // charts split for the packing, else `setup` itself.
 inline const ParamSetup& final_setup(const ParamSetup& setup, const ParamRun& run) {

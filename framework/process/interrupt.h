@@ -4,8 +4,9 @@
 // per iteration), the first SIGINT or SIGTERM only raises a flag, so a run
 // ends with the status "interrupted", its best iterate and a complete trace,
 // and the commands write their outputs as usual (through temporary names).
-// Any other time (reading, ordering, the start map, the analysis, writing) a
-// signal ends the process at once, as does a second signal: first the
+// The parameterization's rounds of seams and cuts for the packing hold one
+// too, checking between their steps. Any other time (reading, ordering, the
+// start map, the analysis, writing) a signal ends the process at once, as does a second signal: first the
 // temporary files of the outputs being written are deleted (output_file.h).
 namespace akvf {
 
