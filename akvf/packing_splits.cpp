@@ -32,8 +32,11 @@ constexpr int kChartsPerRound = 4;
 // both wide and tall can be cut across each way before the square shrinks.
 constexpr int kLookAhead = 2;
 
+// The coverage of the charts packed on the coarse grid: the trials compare
+// layouts; the outputs' layout, on the fine grid, covers about as much or
+// more.
 double packed_coverage(const DiskMesh& disk, Eigen::MatrixXd UV, double gutter) {
-  pack_charts(disk.mesh.F, disk.face_chart, disk.num_charts(), &UV, true, gutter);
+  pack_charts(disk.mesh.F, disk.face_chart, disk.num_charts(), &UV, true, gutter, PackingGrid::kCoarse);
   return square_coverage(disk.mesh.F, UV);
 }
 

@@ -242,6 +242,27 @@ TEST_CASE("a gutter keeps packed charts that share of the square apart, in rows 
   CHECK(akvf::square_coverage(ells.F, interlocked) > 1.3 * akvf::square_coverage(ells.F, rows));
 }
 
+TEST_CASE("thin wedges interlock by half turns") {
+  // 60 single-triangle charts, each a wedge 0.25 wide and 2 long: their
+  // boxes are twice their area, so rows cover at most half the square, as
+  // do the grid's layouts with quarter turns alone (45 %); two wedges, one
+  // turned by half a turn, fill a parallelogram.
+  const int n = 60;
+  Eigen::MatrixXi F(n, 3);
+  Eigen::MatrixXd UV(3 * n, 2);
+  std::vector<int> face_chart(n);
+  for (int c = 0; c < n; ++c) {
+    UV.row(3 * c) << 3.0 * c, 0;
+    UV.row(3 * c + 1) << 3.0 * c + 0.25, 0;
+    UV.row(3 * c + 2) << 3.0 * c + 0.125, 2;
+    F.row(c) << 3 * c, 3 * c + 1, 3 * c + 2;
+    face_chart[c] = c;
+  }
+  akvf::pack_charts(F, face_chart, n, &UV, true, 2.0 / 1024);
+  CHECK_FALSE(any_overlap(UV, F));
+  CHECK(akvf::square_coverage(F, UV) > 0.52);
+}
+
 TEST_CASE("hundreds of small charts pack the gutter apart, not a share of the square") {
   // 400 squares of sides 1 to 1.5: in rows the gutter apart they cover
   // most of the square (with 2 % of its side between boxes, 59 %).

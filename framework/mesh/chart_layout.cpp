@@ -119,14 +119,15 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
 }
 
 void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV,
-                 bool rotate_to_boxes, double gutter) {
+                 bool rotate_to_boxes, double gutter, PackingGrid grid) {
   if (num_charts < 1 || (num_charts == 1 && !rotate_to_boxes)) return;
   const std::vector<std::vector<int>> vertices =
       chart_vertices(F, face_chart, num_charts, static_cast<int>(UV->rows()));
   // With rotate_to_boxes, each chart is turned to its smallest bounding
   // rectangle, lying flat, for the rows (one chart: to its smallest bounding
   // square). The raster gets two sets of turns of the charts as given:
-  // every chart flat, or every chart in its square, each by a quarter or not.
+  // every chart flat, or every chart in its square, each then by any number
+  // of quarter turns (a half turn lets wedges interlock).
   const Eigen::MatrixXd given = *UV;
   std::array<std::vector<std::vector<double>>, 2> turns;
   turns[0].resize(num_charts);
@@ -137,8 +138,10 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
       for (int v : vertices[c]) points.push_back(UV->row(v).transpose());
       const std::vector<Eigen::Vector2d> hull = convex_hull(points);
       const double flat = flat_box_angle(hull), square = square_angle(hull);
-      turns[0][c] = {flat, flat + M_PI / 2};
-      turns[1][c] = {square, square + M_PI / 2};
+      for (int quarter = 0; quarter < 4; ++quarter) {
+        turns[0][c].push_back(flat + quarter * M_PI / 2);
+        turns[1][c].push_back(square + quarter * M_PI / 2);
+      }
       const Eigen::Matrix2d turn = Eigen::Rotation2Dd(num_charts == 1 ? square : flat).toRotationMatrix();
       for (int v : vertices[c]) UV->row(v) = (turn * UV->row(v).transpose()).transpose();
     }
@@ -222,7 +225,7 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
     for (const auto& chart_turns : turns) {
       std::vector<ChartPlacement> trial;
       const double raster_side = holding_gutter([&](double least_gap, double* kept) {
-        return raster_pack(F, chart_faces, given, chart_turns, least_gap, &trial, kept);
+        return raster_pack(F, chart_faces, given, chart_turns, least_gap, &trial, kept, grid);
       });
       if (raster_side < side) {
         interlocked = true;
