@@ -133,28 +133,26 @@ Mask rasterize(const Eigen::MatrixXi& F, const std::vector<int>& faces, const Ei
       if (from <= to) std::fill(cell.begin() + at(from, y), cell.begin() + at(to, y) + 1, 1);
     }
   }
-  // The gap: every cell within the reach of a marked one.
+  // The gap: every cell within the reach of a marked one, a run at a time.
+  mask.own.resize(mask.height);
+  for (int y = 0; y < mask.height; ++y) mask.own[y] = row_runs(cell, at(0, y), mask.width);
   std::vector<char> grown(cell.size(), 0);
   const int rows = static_cast<int>(reach.across.size());
   for (int y = 0; y < mask.height; ++y)
-    for (int x = 0; x < mask.width; ++x)
-      if (cell[at(x, y)])
-        for (int dy = 1 - rows; dy < rows; ++dy) {
-          const int yy = y + dy, dx = reach.across[std::abs(dy)];
-          if (yy >= 0 && yy < mask.height)
-            std::fill(grown.begin() + at(std::max(0, x - dx), yy),
-                      grown.begin() + at(std::min(mask.width - 1, x + dx), yy) + 1, 1);
-        }
-  mask.own.resize(mask.height);
+    for (const auto& [begin, end] : mask.own[y])
+      for (int dy = 1 - rows; dy < rows; ++dy) {
+        const int yy = y + dy, dx = reach.across[std::abs(dy)];
+        if (yy >= 0 && yy < mask.height)
+          std::fill(grown.begin() + at(std::max(0, begin - dx), yy),
+                    grown.begin() + at(std::min(mask.width - 1, end - 1 + dx), yy) + 1, 1);
+      }
   mask.longest.assign(mask.height, 0);
-  for (int y = 0; y < mask.height; ++y) {
-    mask.own[y] = row_runs(cell, at(0, y), mask.width);
+  for (int y = 0; y < mask.height; ++y)
     for (const auto& [begin, end] : row_runs(grown, at(0, y), mask.width)) {
       mask.cells += end - begin;
       mask.longest[y] = std::max(mask.longest[y], end - begin);
       mask.tests.push_back({y, begin, end});
     }
-  }
   std::stable_sort(mask.tests.begin(), mask.tests.end(),
                    [](const auto& a, const auto& b) { return a[2] - a[1] > b[2] - b[1]; });
   return mask;
