@@ -51,7 +51,8 @@ Eigen::Matrix3d cofactor_3d(const Eigen::Matrix3d& J) {
   return C;
 }
 
-// Entry (i + 3j, k + 3l) = sum_mn eps_ikm eps_jln J_mn.
+// Entry (i + 3j, k + 3l) = sum_mn eps_ikm eps_jln J_mn: zero unless i != k
+// and j != l, and then the one term m = 3 - i - k, n = 3 - j - l.
 Eigen::Matrix<double, 9, 9> determinant_hessian_3d(const Eigen::Matrix3d& J) {
   const auto eps = [](int a, int b, int c) { return double((a - b) * (b - c) * (c - a)) / 2; };
   Eigen::Matrix<double, 9, 9> H = Eigen::Matrix<double, 9, 9>::Zero();
@@ -59,10 +60,9 @@ Eigen::Matrix<double, 9, 9> determinant_hessian_3d(const Eigen::Matrix3d& J) {
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k)
         for (int l = 0; l < 3; ++l) {
-          double sum = 0;
-          for (int m = 0; m < 3; ++m)
-            for (int n = 0; n < 3; ++n) sum += eps(i, k, m) * eps(j, l, n) * J(m, n);
-          H(i + 3 * j, k + 3 * l) = sum;
+          if (i == k || j == l) continue;
+          const int m = 3 - i - k, n = 3 - j - l;
+          H(i + 3 * j, k + 3 * l) = eps(i, k, m) * eps(j, l, n) * J(m, n);
         }
   return H;
 }
