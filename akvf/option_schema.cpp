@@ -264,13 +264,13 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                 "with --cut seams: the bound on each chart's symmetric Dirichlet energy (4 is an "
                                 "isometry)",
                                 &O::max_distortion, "> 4", [](double e) { return e > 4; }));
-    f.push_back(
-        number_field<O>("min_coverage", "min-coverage", "C",
-                        "with --cut: charts are split by straight cuts across the map (every triangle "
-                        "keeps its distortion; with seams, every piece its bound, by more seams where a cut "
-                        "alone would not) until the packing covers this share of the UV square, or no cut "
-                        "raises it (one chart: only if its pieces reach it); 0: never",
-                        &O::min_coverage, "in [0, 1)", [](double c) { return c >= 0 && c < 1; }));
+    f.push_back(number_field<O>("min_coverage", "min-coverage", "C",
+                                "with --cut: charts are split by straight cuts across the map (every triangle "
+                                "keeps its distortion; with seams, every piece its bound, by more seams where a cut "
+                                "alone would not) until the packing covers this share of the UV square, or no cut "
+                                "raises it (one chart: only if its pieces reach it); below it the packing also "
+                                "turns charts by eighth turns; 0: never",
+                                &O::min_coverage, "in [0, 1)", [](double c) { return c >= 0 && c < 1; }));
     f.push_back(integer_field<O>("texture_size", "texture-size", "N",
                                  "several charts: the texture they are packed for, N texels per side (the unit "
                                  "of --gutter)",

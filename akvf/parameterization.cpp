@@ -135,6 +135,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   // see a mesh of extent about 1 whatever the input's units (1e-100 to 1e+100).
   setup.unit_scale = power_of_two_unit_scale(input.V, name);
   setup.gutter = config.gutter;
+  setup.min_coverage = config.min_coverage;
   TriMesh unit_input = input;
   unit_input.V *= setup.unit_scale;
   if (config.cut && config.init_from_file)
@@ -315,7 +316,8 @@ Eigen::MatrixXd chart_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
   // and J is unchanged when mesh and map scale alike).
   const double scale = 1 / (setup.normalization.scale * setup.unit_scale);
   Eigen::MatrixXd out = scale * unstack_uv(x);
-  pack_charts(setup.objective->elements(), setup.disk.face_chart, setup.disk.num_charts(), &out, true, setup.gutter);
+  pack_charts(setup.objective->elements(), setup.disk.face_chart, setup.disk.num_charts(), &out, true, setup.gutter,
+              PackingGrid::kFine, setup.min_coverage);
   return out;
 }
 

@@ -24,6 +24,7 @@ struct Parameterizer::State {
     config = param_config(options);
     config.preconditioner_settings.share_analyses(analyses);
     setup.gutter = config.gutter;  // the outputs' packing: no new start
+    setup.min_coverage = config.min_coverage;
   }
   void prepare() {
     configure();

@@ -87,7 +87,8 @@ struct ParamSetup {
   // (empty trace otherwise); x0 is its end point when it succeeded.
   OptimizerResult warm_start;
   Warnings warnings;
-  double gutter = 0;  // ParamConfig::gutter (set with it), for the packed outputs
+  // ParamConfig::gutter and min_coverage (set with them), for the packed outputs.
+  double gutter = 0, min_coverage = 0;
 };
 
 // Throws ValidationError / OptionsError with a message naming `name`.

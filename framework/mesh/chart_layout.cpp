@@ -119,7 +119,7 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
 }
 
 void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV,
-                 bool rotate_to_boxes, double gutter, PackingGrid grid) {
+                 bool rotate_to_boxes, double gutter, PackingGrid grid, double min_coverage) {
   if (num_charts < 1 || (num_charts == 1 && !rotate_to_boxes)) return;
   const std::vector<std::vector<int>> vertices =
       chart_vertices(F, face_chart, num_charts, static_cast<int>(UV->rows()));
@@ -127,11 +127,11 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
   // rectangle, lying flat, for the rows (one chart: to its smallest bounding
   // square). The raster gets two sets of turns of the charts as given:
   // every chart flat, or every chart in its square, each then by any number
-  // of quarter turns (a half turn lets wedges interlock).
+  // of quarter turns (a half turn lets wedges interlock); below
+  // min_coverage on the fine grid, each set by any number of eighth turns.
   const Eigen::MatrixXd given = *UV;
-  std::array<std::vector<std::vector<double>>, 2> turns;
-  turns[0].resize(num_charts);
-  turns[1].resize(num_charts);
+  std::array<std::vector<std::vector<double>>, 4> turns;
+  for (auto& chart_turns : turns) chart_turns.resize(num_charts);
   if (rotate_to_boxes)
     for (int c = 0; c < num_charts; ++c) {
       std::vector<Eigen::Vector2d> points;
@@ -141,6 +141,10 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
       for (int quarter = 0; quarter < 4; ++quarter) {
         turns[0][c].push_back(flat + quarter * M_PI / 2);
         turns[1][c].push_back(square + quarter * M_PI / 2);
+      }
+      for (int eighth = 0; eighth < 8; ++eighth) {
+        turns[2][c].push_back(flat + eighth * M_PI / 4);
+        turns[3][c].push_back(square + eighth * M_PI / 4);
       }
       const Eigen::Matrix2d turn = Eigen::Rotation2Dd(num_charts == 1 ? square : flat).toRotationMatrix();
       for (int v : vertices[c]) UV->row(v) = (turn * UV->row(v).transpose()).transpose();
@@ -218,11 +222,17 @@ void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, i
     *kept = gap;
     return rows(row_width, gap, &corner);
   });
-  // Charts that interlock, when they fit a smaller square so.
+  // Charts that interlock, when they fit a smaller square so. The eighth
+  // turns only where the quarter turns leave the square emptier than asked
+  // (thin sectors, as a cone's spikes unrolled, fan out only by finer
+  // turns): they triple the work of the finest layout.
   std::vector<ChartPlacement> placement;
   bool interlocked = false;
+  const double area = map_area(F, given);
   if (rotate_to_boxes)
-    for (const auto& chart_turns : turns) {
+    for (std::size_t set = 0; set < turns.size(); ++set) {
+      if (set >= 2 && (grid != PackingGrid::kFine || area >= min_coverage * side * side)) break;
+      const auto& chart_turns = turns[set];
       std::vector<ChartPlacement> trial;
       const double raster_side = holding_gutter([&](double least_gap, double* kept) {
         return raster_pack(F, chart_faces, given, chart_turns, least_gap, &trial, kept, grid);

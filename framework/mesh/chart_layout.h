@@ -30,12 +30,15 @@ Eigen::MatrixXd tutte_embedding_charts(const TriMesh& mesh, const std::vector<st
 // interlock (raster_packing.h; every chart flat or every chart turned to its
 // smallest bounding square, each then by any number of quarter turns; on
 // `grid`'s cells) fit a smaller square,
-// they are placed so instead. Charts end at least `gutter` times the side of
+// they are placed so instead; on the fine grid, if they then cover less
+// than `min_coverage` of the square, also the flat charts by any number of
+// eighth turns. Charts end at least `gutter` times the side of
 // the square around them apart (the texture's gutter: texels over its size).
 // The charts keep their scale. One chart is only turned, to its smallest
 // bounding square (with `rotate_to_boxes`).
 void pack_charts(const Eigen::MatrixXi& F, const std::vector<int>& face_chart, int num_charts, Eigen::MatrixXd* UV,
-                 bool rotate_to_boxes = false, double gutter = 0, PackingGrid grid = PackingGrid::kFine);
+                 bool rotate_to_boxes = false, double gutter = 0, PackingGrid grid = PackingGrid::kFine,
+                 double min_coverage = 0);
 
 // The fraction of the square around UV's bounding box (side: its longer
 // extent; the unit square once the map is scaled into it) that the triangles
