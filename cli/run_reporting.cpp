@@ -24,6 +24,8 @@ std::string summary_line(const OptimizerResult& result) {
   std::snprintf(
       summary, sizeof summary, "status %s after %d iterations, %.3f s: energy %.10g, gradient norm %.3e, %d inverted\n",
       status_with_reason(result).c_str(), last.iteration, last.seconds, last.energy, last.grad_norm, last.flips);
+  if (result.status == TerminationStatus::kMaxIterations && !result.message.empty())
+    return summary + ("not converged: " + result.message + "\n");
   return summary;
 }
 

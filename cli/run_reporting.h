@@ -15,7 +15,8 @@ IterationCallback progress_printer(std::ostream& err);
 // 3 for a line-search or numerical failure (exit_codes.h).
 int exit_code_of(const OptimizerResult& result);
 
-// "status converged after 28 iterations, 1.1 s: energy ..., gradient norm ..., 0 inverted"
+// "status converged after 28 iterations, 1.1 s: energy ..., gradient norm ..., 0 inverted"; at the
+// iteration limit a second line, "not converged: " and the run's message (iteration_limit.h).
 std::string summary_line(const OptimizerResult& result);
 
 }  // namespace akvf

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "akvf/error.h"
+#include "framework/optimization/iteration_limit.h"
 #include "framework/process/interrupt.h"
 
 namespace akvf {
@@ -147,7 +148,7 @@ OptimizerResult minimize_lbfgs(const Objective& objective, Eigen::VectorXd x, co
                          : to_string(result.status);
   } else if (summary.termination_type == ceres::NO_CONVERGENCE) {
     result.status = TerminationStatus::kMaxIterations;
-    result.message = "reached " + std::to_string(options.max_iterations) + " iterations";
+    result.message = iteration_limit_message(result.trace, options.gradient_tolerance, options.max_iterations);
   } else if (summary.termination_type == ceres::CONVERGENCE) {
     result.status = TerminationStatus::kStalled;
     result.message = "Ceres: " + summary.message;

@@ -15,6 +15,7 @@
 #include "cli/run_reporting.h"
 #include "experiments/report/trace_csv.h"
 #include "experiments/runner/manifest.h"
+#include "framework/optimization/iteration_limit.h"
 #include "tests/cli_support.h"
 #include "tests/test_support.h"
 
@@ -126,6 +127,30 @@ TEST_CASE("a stalled run says why in the status line and the trace") {
         std::string::npos);
   result.status = TerminationStatus::kConverged;
   CHECK(akvf::summary_line(result).find("status converged after") == 0);
+}
+
+TEST_CASE("a run at its iteration limit says how fast it was converging") {
+  // The gradient norm halves every 10 iterations: from 1 at iteration 0 to
+  // 2^-10 at 100; the last 10 (a tenth) lower it by half, and 1e-6 needs
+  // log2(1024e-6) / (1/10) more, 99.3.
+  akvf::OptimizerResult result;
+  for (int k = 0; k <= 100; ++k) {
+    akvf::IterationSummary row;
+    row.iteration = k;
+    row.grad_norm = std::pow(0.5, k / 10.0);
+    result.trace.push_back(row);
+  }
+  result.status = TerminationStatus::kMaxIterations;
+  result.message = akvf::iteration_limit_message(result.trace, 1e-6, 100);
+  CHECK(result.message ==
+        "reached 100 iterations; over the last 10 the gradient norm fell from 0.00195312 to 0.000976562 (tolerance "
+        "1e-06): about 100 more at that rate");
+  CHECK(akvf::summary_line(result).find("\nnot converged: reached 100 iterations; over the last 10") !=
+        std::string::npos);
+  for (akvf::IterationSummary& row : result.trace) row.grad_norm = 1;
+  CHECK(akvf::iteration_limit_message(result.trace, 1e-6, 100) ==
+        "reached 100 iterations; over the last 10 the gradient norm did not fall: from 1 to 1 (tolerance 1e-06)");
+  CHECK(akvf::iteration_limit_message({}, 1e-6, 0) == "reached 0 iterations");
 }
 
 TEST_CASE("a manifest cannot read outside --data-dir unless it says so") {

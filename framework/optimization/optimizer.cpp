@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "akvf/error.h"
+#include "framework/optimization/iteration_limit.h"
 #include "framework/process/interrupt.h"
 
 namespace akvf {
@@ -136,7 +137,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
       return finish(TerminationStatus::kConverged, "gradient norm below " + std::to_string(options.gradient_tolerance));
     if (k > options.max_iterations)
       return finish(TerminationStatus::kMaxIterations,
-                    "reached " + std::to_string(options.max_iterations) + " iterations");
+                    iteration_limit_message(result.trace, options.gradient_tolerance, options.max_iterations));
     if (elapsed() >= options.time_limit) return finish(TerminationStatus::kTimeLimit, "reached the time limit");
     if (interrupt_requested()) return finish(TerminationStatus::kInterrupted, "interrupted by a signal");
 
