@@ -43,11 +43,12 @@ std::vector<double> vertex_means(const ParamSetup& setup, const Eigen::VectorXd&
   return sum;
 }
 
-// Where the round's seams start: the interior vertices of the charts above
-// the bound whose energy (the area-weighted mean of their faces') is above
-// it too, at least their interior neighbours' (the peaks of the distortion)
-// and at least kPeakShare of the largest peak's excess, most distorted
-// first; if there is none, the most distorted interior vertex.
+// Where the round's seams start: in each chart above the bound, its
+// interior vertices whose energy (the area-weighted mean of their faces')
+// is above the bound too, at least their interior neighbours' (the peaks of
+// the distortion) and at least kPeakShare of the chart's largest peak's
+// excess (a peak can only be the shoulder of one in its own chart), or, if
+// there is none, its most distorted interior vertex; most distorted first.
 std::vector<int> seam_starts(const ParamSetup& setup, const Eigen::VectorXd& energy,
                              const std::vector<double>& chart_energy, double bound) {
   const TriMesh& mesh = setup.disk.mesh;
@@ -57,24 +58,31 @@ std::vector<int> seam_starts(const ParamSetup& setup, const Eigen::VectorXd& ene
   for (const auto& loop : setup.disk.boundary_loops)
     for (int v : loop) interior[v] = 0;
   std::vector<char> candidate = interior;
+  std::vector<int> chart_of(nv, 0);
   for (int f = 0; f < mesh.num_faces(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int v = mesh.F(f, k);
+      chart_of[v] = setup.disk.face_chart[f];
       if (chart_energy[setup.disk.face_chart[f]] <= bound) candidate[v] = 0;
       for (int w : {mesh.F(f, (k + 1) % 3), mesh.F(f, (k + 2) % 3)})
         if (interior[w] && mean[w] > mean[v]) candidate[v] = 0;
     }
-  std::vector<int> starts;
-  int most = -1;
+  // Per chart: its largest peak above the bound, else its most distorted candidate.
+  std::vector<int> peak(chart_energy.size(), -1), most(chart_energy.size(), -1);
   for (int v = 0; v < nv; ++v) {
-    if (candidate[v] && mean[v] > bound) starts.push_back(v);
-    if (candidate[v] && (most < 0 || mean[v] > mean[most])) most = v;
+    if (!candidate[v]) continue;
+    int& m = most[chart_of[v]];
+    if (m < 0 || mean[v] > mean[m]) m = v;
+    int& p = peak[chart_of[v]];
+    if (mean[v] > bound && (p < 0 || mean[v] > mean[p])) p = v;
+  }
+  std::vector<int> starts;
+  for (int v = 0; v < nv; ++v) {
+    if (!candidate[v]) continue;
+    const int p = peak[chart_of[v]];
+    if (p < 0 ? v == most[chart_of[v]] : mean[v] >= 4 + kPeakShare * (mean[p] - 4)) starts.push_back(v);
   }
   std::stable_sort(starts.begin(), starts.end(), [&](int a, int b) { return mean[a] > mean[b]; });
-  if (starts.empty() && most >= 0) starts.push_back(most);
-  if (starts.empty()) return starts;
-  const double floor = 4 + kPeakShare * (mean[starts.front()] - 4);
-  starts.erase(std::find_if(starts.begin(), starts.end(), [&](int v) { return mean[v] < floor; }), starts.end());
   return starts;
 }
 

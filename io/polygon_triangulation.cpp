@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <limits>
 
 namespace akvf {
@@ -25,7 +27,8 @@ constexpr int kEarCorners = 256;
 
 }  // namespace
 
-std::vector<std::array<int, 3>> triangulate_polygon(const Eigen::MatrixXd& V, const std::vector<int>& ring) {
+std::vector<std::array<int, 3>> triangulate_polygon(const Eigen::MatrixXd& V, const std::vector<int>& ring,
+                                                    const std::function<bool(int, int)>& is_edge) {
   const int n = static_cast<int>(ring.size());
   std::vector<std::array<int, 3>> triangles;
   if (n < 3) return triangles;
@@ -51,8 +54,12 @@ std::vector<std::array<int, 3>> triangulate_polygon(const Eigen::MatrixXd& V, co
   for (int i = 0; i < n; ++i) left[i] = i;
   while (left.size() > 3) {
     const int m = static_cast<int>(left.size());
-    int best = -1;
+    // The valid ear with the shortest diagonal; one whose diagonal is
+    // already an edge of the mesh (a side of another face) only if no
+    // other is valid: that diagonal would give the edge a third face.
+    int best = -1, best_on_edge = -1;
     double best_length = std::numeric_limits<double>::infinity();
+    double best_on_edge_length = best_length;
     for (int k = 0; k < m && normal.norm() > 0; ++k) {
       const int a = left[(k + m - 1) % m], b = left[k], c = left[(k + 1) % m];
       if (!(cross(point[b] - point[a], point[c] - point[b]) > 0)) continue;  // reflex or flat
@@ -63,12 +70,20 @@ std::vector<std::array<int, 3>> triangulate_polygon(const Eigen::MatrixXd& V, co
       }
       if (!empty) continue;
       const double length = (V.row(ring[a]) - V.row(ring[c])).squaredNorm();
+      if (is_edge && is_edge(ring[a], ring[c])) {
+        if (length < best_on_edge_length) {
+          best_on_edge = k;
+          best_on_edge_length = length;
+        }
+        continue;
+      }
       if (length < best_length) {
         best = k;
         best_length = length;
       }
       if (n > kBestEarCorners) break;
     }
+    if (best < 0) best = best_on_edge;
     if (best < 0) break;  // no valid ear: a fan finishes it
     triangles.push_back({left[(best + m - 1) % m], left[best], left[(best + 1) % m]});
     left.erase(left.begin() + best);
@@ -81,7 +96,19 @@ TriangulatedPolygons triangulate_faces(const Eigen::MatrixXd& V, const std::vect
                                        const std::vector<int>& sizes) {
   TriangulatedPolygons out;
   out.triangles.reserve(corners.size());
+  // The faces' sides, as sorted keys of their vertex pairs.
+  std::vector<std::uint64_t> sides;
+  const auto key = [](int u, int v) {
+    return (static_cast<std::uint64_t>(std::min(u, v)) << 32) | static_cast<std::uint32_t>(std::max(u, v));
+  };
   long long first = 0;
+  for (const int n : sizes) {
+    for (int k = 0; k < n; ++k) sides.push_back(key(corners[first + k], corners[first + (k + 1) % n]));
+    first += n;
+  }
+  std::sort(sides.begin(), sides.end());
+  const auto is_side = [&](int u, int v) { return std::binary_search(sides.begin(), sides.end(), key(u, v)); };
+  first = 0;
   std::vector<int> ring;
   for (int f = 0; f < static_cast<int>(sizes.size()); ++f) {
     const int n = sizes[f];
@@ -90,7 +117,7 @@ TriangulatedPolygons triangulate_faces(const Eigen::MatrixXd& V, const std::vect
       ++out.polygons;
       out.largest = std::max(out.largest, n);
     }
-    for (const auto& triangle : triangulate_polygon(V, ring))
+    for (const auto& triangle : triangulate_polygon(V, ring, is_side))
       for (const int k : triangle) {
         out.triangles.push_back(ring[k]);
         out.source_corner.push_back(first + k);

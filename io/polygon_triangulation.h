@@ -4,6 +4,7 @@
 // face's orientation.
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,10 +16,13 @@ namespace akvf {
 // caller can carry per-corner data (texture rows, normals) along. The
 // polygon is projected on the plane of its Newell normal and cut by ear
 // clipping, each step taking the valid ear with the shortest diagonal (for a
-// quad: the shorter diagonal that leaves two triangles of its orientation).
-// A polygon with no valid ear left (self-intersecting, or flat to a line) is
-// finished as a fan, and one of more than 256 corners is cut as a fan.
-std::vector<std::array<int, 3>> triangulate_polygon(const Eigen::MatrixXd& V, const std::vector<int>& ring);
+// quad: the shorter diagonal that leaves two triangles of its orientation),
+// an ear whose diagonal is_edge(u, v) names an edge of the mesh (another
+// face's side) only if no other ear is valid. A polygon with no valid ear
+// left (self-intersecting, or flat to a line) is finished as a fan, and one
+// of more than 256 corners is cut as a fan.
+std::vector<std::array<int, 3>> triangulate_polygon(const Eigen::MatrixXd& V, const std::vector<int>& ring,
+                                                    const std::function<bool(int, int)>& is_edge = {});
 
 // Polygons from a file, triangulated.
 struct TriangulatedPolygons {

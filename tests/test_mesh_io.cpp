@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "akvf/mesh_io.h"
@@ -211,6 +212,25 @@ TEST_CASE("a quad split along its shorter diagonal, a concave polygon by ears in
     area += 0.5 * z;
   }
   CHECK(area == doctest::Approx(2 * 2 - 0.5 * 2 * 1.5));  // the square less the notch
+}
+
+TEST_CASE("a quad is not split along a diagonal that another face has as a side") {
+  // Triangle (a, b, v) and quad (v, b, c, a) around v, raised: projected on
+  // the quad's plane v is a convex corner and a-b the shorter diagonal, but
+  // a-b is the triangle's side, and a third face on it would make the edge
+  // non-manifold; the quad takes v-c.
+  const std::string source = "v 0 0 0\nv 1 0 0\nv 0.5 3 0\nv 0.5 -0.2 1.5\nf 1 2 4\nf 4 2 3 1\n";
+  std::istringstream in(source);
+  const akvf::TriMesh mesh = akvf::read_obj(in, "fan.obj");
+  REQUIRE(mesh.num_faces() == 3);
+  for (int f = 1; f < 3; ++f) {
+    const std::set<int> corners = {mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)};
+    CHECK(corners.count(3) + corners.count(2) == 2);  // v and c: 0-based 3 and 2
+  }
+  // Without the mesh's other faces, the shorter diagonal a-b.
+  const auto alone = akvf::triangulate_polygon(mesh.V, {3, 1, 2, 0});
+  REQUIRE(alone.size() == 2);
+  for (const auto& t : alone) CHECK(std::count(t.begin(), t.end(), 1) + std::count(t.begin(), t.end(), 3) == 2);
 }
 
 TEST_CASE("OBJ polygons written back as polygons with per-corner vt, normals kept") {
