@@ -281,7 +281,8 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                 &O::gutter, "in [0, 64]", [](double t) { return t >= 0 && t <= 64; }));
     f.push_back(recomputes_start(
         choice_field<O>("repair", "repair", "repair",
-                        "auto sets aside zero-area and repeated faces (kept in the outputs), opens edges shared "
+                        "auto welds vertices at the same position in separate pieces, sets aside zero-area and "
+                        "repeated faces (kept in the outputs), opens edges shared "
                         "by three or more faces and splits non-manifold vertices into one copy per fan of faces "
                         "(reported; the UV is then per corner); none refuses such meshes",
                         &O::repair)));

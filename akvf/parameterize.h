@@ -47,7 +47,7 @@ struct ParameterizeOptions {
   double min_coverage = 0.6;                       // a cut: charts split until the packing covers this share
   int texture_size = 1024;                         // several charts: the texture's side in texels, and
   double gutter = 2;                               // the least gap between packed charts, in its texels
-  Repair repair = Repair::kAuto;                   // kAuto: open edges of 3+ faces, split non-manifold vertices
+  Repair repair = Repair::kAuto;                   // kAuto: weld duplicate vertices, repair non-manifold input
                                                    // (per-corner uv_faces); kNone: refuse such meshes
   bool flaps = true;                               // flap optimization of §5.4 after the Tutte map
   Injectivity injectivity = Injectivity::kGlobal;  // kGlobal: no UV overlap (boundary contact-free);

@@ -226,6 +226,47 @@ TEST_CASE("repair: degenerate and repeated faces are set aside, numbered as in t
   CHECK(result.warnings[0].find("set aside 3 faces") != std::string::npos);
 }
 
+TEST_CASE("repair: vertices at one position in separate pieces are welded, so a triangle soup is one surface") {
+  // A square as two triangles with three corners each (a soup, as an STL or
+  // a model split along its own seams has it), and an unreferenced vertex.
+  TriMesh soup;
+  soup.V.resize(7, 3);
+  soup.V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 5, 5, 5;
+  soup.F.resize(2, 3);
+  soup.F << 0, 1, 2, 3, 4, 5;
+  CHECK_FALSE(validation_error(soup).empty());  // without repair: two components, no cut
+  const akvf::DiskMesh welded = akvf::prepare_disk_mesh(soup, "soup.obj", false, true);
+  CHECK(welded.welding.welded == 2);
+  CHECK(welded.welding.first_welded == std::vector<int>{3, 4});
+  CHECK(welded.num_charts() == 1);
+  CHECK(welded.mesh.num_vertices() == 4);
+  CHECK(welded.num_input_vertices == 7);
+  CHECK(welded.per_corner_uv());
+  REQUIRE(welded.warnings.size() == 2);
+  CHECK(welded.warnings[0].find("dropped 1 unreferenced vertices (first: 6") != std::string::npos);
+  CHECK(welded.warnings[1] ==
+        "soup.obj: welded 2 vertices onto an earlier vertex at the same position in another piece (3, 4) (numbered "
+        "from 0); their corners take that vertex's UV (--repair none keeps them apart)");
+  // Twins within one piece are the file's own seam: a grid slit from its
+  // top edge to its centre (vertex 7 copied as 9 on the slit's right) stays
+  // slit.
+  TriMesh slit = akvf::test::grid_disk(3, 3);
+  slit.V.conservativeResize(10, 3);
+  slit.V.row(9) = slit.V.row(7);
+  for (int f = 0; f < slit.num_faces(); ++f)
+    if (slit.F(f, 0) == 4 && slit.F(f, 1) == 8 && slit.F(f, 2) == 7) slit.F(f, 2) = 9;
+  const akvf::DiskMesh kept = akvf::prepare_disk_mesh(slit, "slit.obj", false, true);
+  CHECK(kept.welding.welded == 0);
+  CHECK(kept.mesh.num_vertices() == 10);
+  CHECK(kept.boundary_loops[0].size() == 10);
+  // The API's per-corner UV: the welded corners have their twins' UV.
+  akvf::ParameterizeOptions options;
+  const akvf::ParameterizeResult r = akvf::parameterize(soup.V, soup.F, options);
+  REQUIRE(r.uv_faces.rows() == 2);
+  CHECK(r.uv.row(r.uv_faces(1, 0)) == r.uv.row(r.uv_faces(0, 0)));
+  CHECK(r.uv.row(r.uv_faces(1, 1)) == r.uv.row(r.uv_faces(0, 2)));
+}
+
 TEST_CASE("repair: a vertex where two fans meet is split, an edge of three faces opened, or both refused") {
   TriMesh bowtie;
   bowtie.V.resize(7, 3);

@@ -113,7 +113,11 @@ Json repair_record(const DiskMesh& disk) {
   Json first_set_aside = Json::array();
   for (std::size_t i = 0; i < std::min<std::size_t>(disk.removed_faces.size(), 5); ++i)
     first_set_aside.push_back(disk.removed_faces[i] + index_base);
-  Json record = {{"opened_edges", repair.opened_edges},
+  Json welded = Json::array();
+  for (const int v : disk.welding.first_welded) welded.push_back(v + index_base);
+  Json record = {{"welded_vertices", disk.welding.welded},
+                 {"first_welded_vertices", welded},
+                 {"opened_edges", repair.opened_edges},
                  {"split_vertices", repair.split_vertices},
                  {"added_copies", repair.added_copies},
                  {"first_opened_edges", opened},

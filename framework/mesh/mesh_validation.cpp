@@ -35,21 +35,23 @@ void check_finite_and_indices(const TriMesh& m, const std::string& name, bool re
 }
 
 // The mesh of input's faces `kept`, without the vertices none of them uses
-// (a warning names those no face at all uses).
-DiskMesh compact(const TriMesh& input, const std::vector<int>& kept, const std::string& name) {
+// (a warning names those no face of the file, `given`, uses: input's faces
+// are given's, their corners perhaps moved by welding).
+DiskMesh compact(const TriMesh& input, const std::vector<int>& kept, const std::string& name, const TriMesh& given) {
   DiskMesh out;
   out.num_input_vertices = input.num_vertices();
-  std::vector<int> new_index(input.num_vertices(), -2);
-  for (int f = 0; f < input.num_faces(); ++f)
-    for (int k = 0; k < 3; ++k) new_index[input.F(f, k)] = -1;
+  std::vector<int> new_index(input.num_vertices(), -1);
   for (const int f : kept)
     for (int k = 0; k < 3; ++k) new_index[input.F(f, k)] = 0;
+  std::vector<char> in_file(given.num_vertices(), 0);
+  for (int f = 0; f < given.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) in_file[given.F(f, k)] = 1;
   int dropped = 0, first_dropped = -1;
   for (int v = 0; v < input.num_vertices(); ++v) {
     if (new_index[v] == 0) {
       new_index[v] = static_cast<int>(out.input_vertex.size());
       out.input_vertex.push_back(v);
-    } else if (new_index[v] == -2 && dropped++ == 0) {
+    } else if (!in_file[v] && dropped++ == 0) {
       first_dropped = v;
     }
   }
@@ -203,9 +205,17 @@ bool orientable(const Eigen::MatrixXi& F) {
 
 }  // namespace
 
-DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool cut, bool repair) {
-  if (input.num_faces() == 0) throw ValidationError(name + ": mesh has no faces");
-  check_finite_and_indices(input, name, repair);
+DiskMesh prepare_disk_mesh(const TriMesh& given, const std::string& name, bool cut, bool repair) {
+  if (given.num_faces() == 0) throw ValidationError(name + ": mesh has no faces");
+  check_finite_and_indices(given, name, repair);
+  // With repair, the faces on the welded vertices from here on.
+  TriMesh welded;
+  VertexWelding welding;
+  if (repair) {
+    welded = given;
+    welding = weld_exact_duplicates(&welded);
+  }
+  const TriMesh& input = welding.welded > 0 ? welded : given;
   UnusableFaces unusable;
   if (repair) {
     unusable = find_unusable_faces(input);
@@ -214,7 +224,9 @@ DiskMesh prepare_disk_mesh(const TriMesh& input, const std::string& name, bool c
     unusable.kept.resize(input.num_faces());
     std::iota(unusable.kept.begin(), unusable.kept.end(), 0);
   }
-  DiskMesh out = compact(input, unusable.kept, name);
+  DiskMesh out = compact(input, unusable.kept, name, given);
+  out.welding = welding;
+  if (welding.welded > 0) out.warnings.push_back(welding_description(welding, name, input.index_base));
   const TriMesh& m = out.mesh;
   const int b = m.index_base;
   auto at_input = [&](int v) { return file_number(out.input_vertex[v], b); };

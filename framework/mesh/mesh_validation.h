@@ -9,6 +9,7 @@
 #include "akvf/mesh.h"
 #include "framework/mesh/manifold_repair.h"
 #include "framework/mesh/unusable_faces.h"
+#include "framework/mesh/vertex_welding.h"
 
 namespace akvf {
 
@@ -25,6 +26,7 @@ struct DiskMesh {
   double cut_length = 0;                            // their total length
   std::vector<int> chart_genus, chart_input_loops;  // per chart, of its component before the cut
   ManifoldRepair repair;                            // what was repaired (repair asked for)
+  VertexWelding welding;                            // duplicate vertices welded (repair asked for)
   // Faces set aside with repair (unusable_faces.h): mesh face i is input face
   // input_face[i] (empty: the same), and removed_faces are the others, their
   // corners' UVs taken from removed_corners.
@@ -35,12 +37,13 @@ struct DiskMesh {
   int num_charts() const { return static_cast<int>(boundary_loops.size()); }
   // Whether a vertex may have several UVs (seams of the cut, split
   // vertices): outputs then carry per-corner texture coordinates.
-  bool per_corner_uv() const { return cut || repair.any() || !removed_faces.empty(); }
+  bool per_corner_uv() const { return cut || repair.any() || welding.welded > 0 || !removed_faces.empty(); }
 };
 
 // Validates `input` (read from `name`, used in messages) and drops
-// unreferenced vertices with a warning. With `repair`, degenerate and
-// repeated faces are set aside (unusable_faces.h), edges of three or more
+// unreferenced vertices with a warning. With `repair`, exact duplicate
+// vertices are welded (vertex_welding.h), degenerate and
+// repeated faces set aside (unusable_faces.h), edges of three or more
 // faces opened and non-manifold vertices split (manifold_repair.h), each with
 // a warning. With `cut`, a closed, multi-boundary, higher-genus or
 // multi-component manifold mesh is cut into disks (cut_to_disk.h); without,
