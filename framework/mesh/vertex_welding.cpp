@@ -1,9 +1,9 @@
 #include "framework/mesh/vertex_welding.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <numeric>
-#include <unordered_map>
+
+#include "framework/mesh/mesh_topology.h"
 
 namespace akvf {
 
@@ -30,46 +30,50 @@ struct Components {
 
 VertexWelding weld_exact_duplicates(TriMesh* mesh) {
   const int nv = mesh->num_vertices(), nf = mesh->num_faces();
-  // Pieces: faces joined across shared edges; a vertex's piece is its first face's.
-  Components pieces(nf);
-  std::unordered_map<std::int64_t, int> edge_face;
-  std::vector<int> piece_face(nv, -1);
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int a = mesh->F(f, k), b = mesh->F(f, (k + 1) % 3);
-      if (piece_face[a] < 0) piece_face[a] = f;
-      const auto [it, inserted] = edge_face.emplace(static_cast<std::int64_t>(std::min(a, b)) * nv + std::max(a, b), f);
-      if (!inserted) pieces.join(it->second, f);
-    }
-  const auto piece = [&](int v) { return pieces.find(piece_face[v]); };
+  std::vector<int> first_face(nv, -1);
+  for (int f = nf - 1; f >= 0; --f)
+    for (int k = 0; k < 3; ++k) first_face[mesh->F(f, k)] = f;
   // The used vertices by position (then index): equal positions are adjacent.
   std::vector<int> order;
   for (int v = 0; v < nv; ++v)
-    if (piece_face[v] >= 0) order.push_back(v);
+    if (first_face[v] >= 0) order.push_back(v);
   const auto position_less = [&](int a, int b) {
     for (int c = 0; c < 3; ++c)
       if (mesh->V(a, c) != mesh->V(b, c)) return mesh->V(a, c) < mesh->V(b, c);
     return a < b;
   };
   std::sort(order.begin(), order.end(), position_less);
+  const auto same_position = [&](std::size_t i) { return mesh->V.row(order[i]) == mesh->V.row(order[i - 1]); };
+  VertexWelding welding;
+  bool twins = false;
+  for (std::size_t i = 1; i < order.size() && !twins; ++i) twins = same_position(i);
+  if (!twins) return welding;
+  // Pieces: faces joined across shared edges; a vertex's is its first face's.
+  Components pieces(nf);
+  const std::vector<std::array<int, 3>> across = faces_across_edges(mesh->F, nv);
+  for (int f = 0; f < nf; ++f)
+    for (const int g : across[f])
+      if (g >= 0) pieces.join(f, g);
+  const auto piece = [&](int v) { return pieces.find(first_face[v]); };
   std::vector<int> target(nv);
   std::iota(target.begin(), target.end(), 0);
-  VertexWelding welding;
-  for (std::size_t begin = 0, end = 0; begin < order.size(); begin = end) {
-    const int first = order[begin];
-    for (end = begin + 1; end < order.size() && mesh->V.row(order[end]) == mesh->V.row(first); ++end) {
-      const int v = order[end];
-      // A twin in the same piece is the file's own seam (the sides of a
-      // cut disk): kept apart.
-      if (piece(v) == piece(first)) continue;
-      target[v] = first;
-      ++welding.welded;
+  int first = -1;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const int v = order[i];
+    if (i == 0 || !same_position(i)) {
+      first = v;
+      continue;
     }
+    // A twin in the same piece is the file's own seam (the sides of a cut
+    // disk): kept apart.
+    if (piece(v) == piece(first)) continue;
+    target[v] = first;
+    ++welding.welded;
   }
   if (welding.welded == 0) return welding;
   for (int v = 0; v < nv && welding.first_welded.size() < kFirstFew; ++v)
     if (target[v] != v) welding.first_welded.push_back(v);
-  for (int f = 0; f < mesh->num_faces(); ++f)
+  for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) mesh->F(f, k) = target[mesh->F(f, k)];
   return welding;
 }
