@@ -8,6 +8,8 @@
 #include <functional>
 #include <limits>
 
+#include "framework/mesh/mesh_topology.h"
+
 namespace akvf {
 
 namespace {
@@ -96,18 +98,19 @@ TriangulatedPolygons triangulate_faces(const Eigen::MatrixXd& V, const std::vect
                                        const std::vector<int>& sizes) {
   TriangulatedPolygons out;
   out.triangles.reserve(corners.size());
-  // The faces' sides, as sorted keys of their vertex pairs.
-  std::vector<std::uint64_t> sides;
-  const auto key = [](int u, int v) {
-    return (static_cast<std::uint64_t>(std::min(u, v)) << 32) | static_cast<std::uint32_t>(std::max(u, v));
-  };
+  // The faces' sides, as sorted edge keys.
+  const int nv = static_cast<int>(V.rows());
+  std::vector<std::int64_t> sides;
   long long first = 0;
   for (const int n : sizes) {
-    for (int k = 0; k < n; ++k) sides.push_back(key(corners[first + k], corners[first + (k + 1) % n]));
+    for (int k = 0; k < n; ++k)
+      sides.push_back(undirected_edge_key(corners[first + k], corners[first + (k + 1) % n], nv));
     first += n;
   }
   std::sort(sides.begin(), sides.end());
-  const auto is_side = [&](int u, int v) { return std::binary_search(sides.begin(), sides.end(), key(u, v)); };
+  const auto is_side = [&](int u, int v) {
+    return std::binary_search(sides.begin(), sides.end(), undirected_edge_key(u, v, nv));
+  };
   first = 0;
   std::vector<int> ring;
   for (int f = 0; f < static_cast<int>(sizes.size()); ++f) {

@@ -211,10 +211,7 @@ DiskMesh prepare_disk_mesh(const TriMesh& given, const std::string& name, bool c
   // With repair, the faces on the welded vertices from here on.
   TriMesh welded;
   VertexWelding welding;
-  if (repair) {
-    welded = given;
-    welding = weld_exact_duplicates(&welded);
-  }
+  if (repair) welding = weld_exact_duplicates(given, &welded);
   const TriMesh& input = welding.welded > 0 ? welded : given;
   UnusableFaces unusable;
   if (repair) {

@@ -11,49 +11,34 @@ namespace {
 
 constexpr std::size_t kFirstFew = 5;
 
-// Union-find, the smaller index the root.
-struct Components {
-  std::vector<int> parent;
-  explicit Components(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  }
-  void join(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
-
 }  // namespace
 
-VertexWelding weld_exact_duplicates(TriMesh* mesh) {
-  const int nv = mesh->num_vertices(), nf = mesh->num_faces();
+VertexWelding weld_exact_duplicates(const TriMesh& mesh, TriMesh* welded) {
+  const int nv = mesh.num_vertices(), nf = mesh.num_faces();
   std::vector<int> first_face(nv, -1);
   for (int f = nf - 1; f >= 0; --f)
-    for (int k = 0; k < 3; ++k) first_face[mesh->F(f, k)] = f;
+    for (int k = 0; k < 3; ++k) first_face[mesh.F(f, k)] = f;
   // The used vertices by position (then index): equal positions are adjacent.
   std::vector<int> order;
   for (int v = 0; v < nv; ++v)
     if (first_face[v] >= 0) order.push_back(v);
   const auto position_less = [&](int a, int b) {
     for (int c = 0; c < 3; ++c)
-      if (mesh->V(a, c) != mesh->V(b, c)) return mesh->V(a, c) < mesh->V(b, c);
+      if (mesh.V(a, c) != mesh.V(b, c)) return mesh.V(a, c) < mesh.V(b, c);
     return a < b;
   };
   std::sort(order.begin(), order.end(), position_less);
-  const auto same_position = [&](std::size_t i) { return mesh->V.row(order[i]) == mesh->V.row(order[i - 1]); };
+  const auto same_position = [&](std::size_t i) { return mesh.V.row(order[i]) == mesh.V.row(order[i - 1]); };
   VertexWelding welding;
   bool twins = false;
   for (std::size_t i = 1; i < order.size() && !twins; ++i) twins = same_position(i);
   if (!twins) return welding;
   // Pieces: faces joined across shared edges; a vertex's is its first face's.
-  Components pieces(nf);
-  const std::vector<std::array<int, 3>> across = faces_across_edges(mesh->F, nv);
+  DisjointSets pieces(nf);
+  const std::vector<std::array<int, 3>> across = faces_across_edges(mesh.F, nv);
   for (int f = 0; f < nf; ++f)
     for (const int g : across[f])
-      if (g >= 0) pieces.join(f, g);
+      if (g >= 0) pieces.unite(f, g);
   const auto piece = [&](int v) { return pieces.find(first_face[v]); };
   std::vector<int> target(nv);
   std::iota(target.begin(), target.end(), 0);
@@ -73,8 +58,8 @@ VertexWelding weld_exact_duplicates(TriMesh* mesh) {
   if (welding.welded == 0) return welding;
   for (int v = 0; v < nv && welding.first_welded.size() < kFirstFew; ++v)
     if (target[v] != v) welding.first_welded.push_back(v);
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) mesh->F(f, k) = target[mesh->F(f, k)];
+  *welded = mesh;
+  welded->F = mesh.F.unaryExpr([&](int v) { return target[v]; });
   return welding;
 }
 

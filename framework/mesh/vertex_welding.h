@@ -1,8 +1,8 @@
 #pragma once
 // Exact duplicate vertices welded across pieces (akvf param --repair
 // auto): a triangle soup, or a model whose parts were exported apart, has
-// several vertices at one position in separate pieces (components of faces
-// sharing vertices), and the surface falls apart into as many charts. Such
+// several vertices at one position in separate pieces (faces joined
+// across shared edges), and the surface falls apart into as many charts. Such
 // a vertex's corners move to the first vertex at its position (coordinates
 // equal bit for bit, as libigl's remove_duplicate_vertices with epsilon 0)
 // when the two lie in different pieces, joining them; twins within one
@@ -20,8 +20,9 @@ struct VertexWelding {
   std::vector<int> first_welded;  // the first few of them (0-based)
 };
 
-// Moves `mesh`'s face corners; V is unchanged.
-VertexWelding weld_exact_duplicates(TriMesh* mesh);
+// *welded: `mesh` with its corners moved (V unchanged), set only when a
+// vertex was welded.
+VertexWelding weld_exact_duplicates(const TriMesh& mesh, TriMesh* welded);
 
 // The welding in words, for a warning, numbered as the file numbers
 // vertices.
