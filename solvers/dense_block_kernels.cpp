@@ -1,7 +1,9 @@
 #include "solvers/dense_block_kernels.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <string>
 
 #include "akvf/error.h"
@@ -21,26 +23,127 @@ void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* inf
 
 namespace akvf {
 
-void loop_update(int rows, int columns, int k, const double* L, int ld, double* C) {
-  // Column j of C is a sum of k columns of L scaled by row j's entries,
-  // four at a time (contiguous inner loops; C's column read and written
-  // once per four).
-  const auto column = [&](int p) { return L + static_cast<std::size_t>(p) * ld; };
-  for (int j = 0; j < columns; ++j) {
-    double* c = C + static_cast<std::size_t>(j) * rows;
-    for (int i = j; i < rows; ++i) c[i] = 0;
-    int p = 0;
-    for (; p + 4 <= k; p += 4) {
-      const double *l0 = column(p), *l1 = column(p + 1), *l2 = column(p + 2), *l3 = column(p + 3);
-      const double a0 = l0[j], a1 = l1[j], a2 = l2[j], a3 = l3[j];
-      for (int i = j; i < rows; ++i) c[i] += l0[i] * a0 + l1[i] * a1 + l2[i] * a2 + l3[i] * a3;
-    }
-    for (; p < k; ++p) {
-      const double* l = column(p);
-      const double a = l[j];
-      for (int i = j; i < rows; ++i) c[i] += l[i] * a;
+namespace {
+
+// Four doubles, loaded and stored unaligned (GCC's vector extension: the
+// default build compiles it to SSE2 pairs, the x86-64-v3 clones to AVX2).
+typedef double Lanes __attribute__((vector_size(32), aligned(8)));
+
+// By pointer and reference: a 32-byte vector passed by value would have
+// another ABI in the two clones.
+[[gnu::always_inline]] inline void load(const double* p, Lanes* v) { std::memcpy(v, p, sizeof *v); }
+[[gnu::always_inline]] inline void store(double* p, const Lanes& v) { std::memcpy(p, &v, sizeof v); }
+
+// One tile of lower_product: rows i0 .. i0 + 4 V - 1 (a = L + i0) by the
+// columns j0 .. j0 + NC - 1 (b = L + j0), c = C + j0 ldc + i0; `offset` =
+// i0 - j0, so row r of column q is in the lower part when r + offset >= q.
+// The 4 V x NC sums stay in registers over the k columns of L.
+template <int V, int NC, bool kSubtract>
+[[gnu::always_inline]] inline void product_tile(int k, const double* a, const double* b, int ld, double* c, int ldc,
+                                                int offset) {
+  Lanes sum[NC][V];
+#pragma GCC unroll 4
+  for (int q = 0; q < NC; ++q)
+#pragma GCC unroll 2
+    for (int v = 0; v < V; ++v) sum[q][v] = Lanes{0, 0, 0, 0};
+  for (int p = 0; p < k; ++p) {
+    const double* ap = a + static_cast<std::size_t>(p) * ld;
+    const double* bp = b + static_cast<std::size_t>(p) * ld;
+    Lanes x[V];
+#pragma GCC unroll 2
+    for (int v = 0; v < V; ++v) load(ap + 4 * v, &x[v]);
+#pragma GCC unroll 4
+    for (int q = 0; q < NC; ++q) {
+      const double scale = bp[q];
+#pragma GCC unroll 2
+      for (int v = 0; v < V; ++v) sum[q][v] += x[v] * scale;
     }
   }
+  if (offset >= NC - 1) {  // every row of the tile is in the lower part
+#pragma GCC unroll 4
+    for (int q = 0; q < NC; ++q)
+#pragma GCC unroll 2
+      for (int v = 0; v < V; ++v) {
+        double* target = c + static_cast<std::size_t>(q) * ldc + 4 * v;
+        Lanes value = sum[q][v];
+        if constexpr (kSubtract) {
+          Lanes old;
+          load(target, &old);
+          value = old - value;
+        }
+        store(target, value);
+      }
+    return;
+  }
+#pragma GCC unroll 4
+  for (int q = 0; q < NC; ++q)
+#pragma GCC unroll 2
+    for (int v = 0; v < V; ++v)
+#pragma GCC unroll 4
+      for (int l = 0; l < 4; ++l) {
+        if (4 * v + l + offset < q) continue;
+        double& target = c[static_cast<std::size_t>(q) * ldc + 4 * v + l];
+        target = kSubtract ? target - sum[q][v][l] : sum[q][v][l];
+      }
+}
+
+// Rows i0 .. rows - 1 (fewer than four) of a column block, one sum at a time.
+template <bool kSubtract>
+[[gnu::always_inline]] inline void product_rows(int i0, int rows, int j0, int nc, int k, const double* L, int ld,
+                                                double* C, int ldc) {
+  for (int q = 0; q < nc; ++q)
+    for (int i = std::max(i0, j0 + q); i < rows; ++i) {
+      double sum = 0;
+      for (int p = 0; p < k; ++p)
+        sum += L[static_cast<std::size_t>(p) * ld + i] * L[static_cast<std::size_t>(p) * ld + j0 + q];
+      double& target = C[static_cast<std::size_t>(j0 + q) * ldc + i];
+      target = kSubtract ? target - sum : sum;
+    }
+}
+
+template <int NC, bool kSubtract>
+[[gnu::always_inline]] inline void product_column_block(int rows, int j0, int k, const double* L, int ld, double* C,
+                                                        int ldc) {
+  double* c = C + static_cast<std::size_t>(j0) * ldc;
+  int i0 = j0;
+  for (; i0 + 8 <= rows; i0 += 8) product_tile<2, NC, kSubtract>(k, L + i0, L + j0, ld, c + i0, ldc, i0 - j0);
+  if (i0 + 4 <= rows) {
+    product_tile<1, NC, kSubtract>(k, L + i0, L + j0, ld, c + i0, ldc, i0 - j0);
+    i0 += 4;
+  }
+  if (i0 < rows) product_rows<kSubtract>(i0, rows, j0, NC, k, L, ld, C, ldc);
+}
+
+// C(i, j) = sum_p L(i, p) L(j, p) (kSubtract: C(i, j) -= it) for
+// 0 <= j < columns, j <= i < rows, p < k; L column-major with leading
+// dimension ld, C with ldc. Column blocks of four, row tiles of eight.
+template <bool kSubtract>
+[[gnu::always_inline]] inline void lower_product(int rows, int columns, int k, const double* L, int ld, double* C,
+                                                 int ldc) {
+  int j0 = 0;
+  for (; j0 + 4 <= columns; j0 += 4) product_column_block<4, kSubtract>(rows, j0, k, L, ld, C, ldc);
+  switch (columns - j0) {
+    case 3:
+      product_column_block<3, kSubtract>(rows, j0, k, L, ld, C, ldc);
+      break;
+    case 2:
+      product_column_block<2, kSubtract>(rows, j0, k, L, ld, C, ldc);
+      break;
+    case 1:
+      product_column_block<1, kSubtract>(rows, j0, k, L, ld, C, ldc);
+      break;
+    default:
+      break;
+  }
+}
+
+}  // namespace
+
+// Each loop kernel is compiled twice, for any x86-64 and for x86-64-v3
+// (AVX2), and the loader picks the one the processor runs.
+[[gnu::target_clones("arch=x86-64-v3", "default")]] void loop_update(int rows, int columns, int k, const double* L,
+                                                                     int ld, double* C) {
+  lower_product<false>(rows, columns, k, L, ld, C, rows);
 }
 
 void blas_update(int rows, int columns, int k, const double* L, int ld, double* C) {
@@ -50,21 +153,26 @@ void blas_update(int rows, int columns, int k, const double* L, int ld, double* 
   if (below > 0) dgemm_("N", "T", &below, &columns, &k, &one, L + columns, &ld, L, &ld, &zero, C + columns, &rows);
 }
 
-int loop_cholesky(int rows, int columns, double* block) {
-  // Left-looking, by columns: column j less the earlier columns' parts,
-  // then divided by its pivot's square root; the rows below the diagonal
-  // block go along (they are L21's rows).
-  for (int j = 0; j < columns; ++j) {
-    double* c = block + static_cast<std::size_t>(j) * rows;
-    for (int p = 0; p < j; ++p) {
-      const double* l = block + static_cast<std::size_t>(p) * rows;
-      const double a = l[j];
-      for (int i = j; i < rows; ++i) c[i] -= l[i] * a;
+[[gnu::target_clones("arch=x86-64-v3", "default")]] int loop_cholesky(int rows, int columns, double* block) {
+  // Left-looking, by panels of four columns: a panel less the earlier
+  // columns' parts (one lower_product), then its own columns one by one,
+  // each less the panel's earlier ones and divided by its pivot's square
+  // root. The rows below the diagonal block go along (they are L21's rows).
+  for (int j0 = 0; j0 < columns; j0 += 4) {
+    const int width = std::min(4, columns - j0);
+    lower_product<true>(rows - j0, width, j0, block + j0, rows, block + static_cast<std::size_t>(j0) * rows + j0, rows);
+    for (int j = j0; j < j0 + width; ++j) {
+      double* c = block + static_cast<std::size_t>(j) * rows;
+      for (int p = j0; p < j; ++p) {
+        const double* l = block + static_cast<std::size_t>(p) * rows;
+        const double a = l[j];
+        for (int i = j; i < rows; ++i) c[i] -= l[i] * a;
+      }
+      if (!(c[j] > 0)) return j;
+      const double pivot = std::sqrt(c[j]);
+      c[j] = pivot;
+      for (int i = j + 1; i < rows; ++i) c[i] /= pivot;
     }
-    if (!(c[j] > 0)) return j;
-    const double pivot = std::sqrt(c[j]);
-    c[j] = pivot;
-    for (int i = j + 1; i < rows; ++i) c[i] /= pivot;
   }
   return -1;
 }
@@ -90,7 +198,7 @@ void block_update(int rows, int columns, int k, const double* L, int ld, double*
 
 int block_cholesky(int rows, int columns, double* block) {
   return cholesky_flops(rows, columns) < kLoopCholeskyFlops ? loop_cholesky(rows, columns, block)
-                                                    : blas_cholesky(rows, columns, block);
+                                                            : blas_cholesky(rows, columns, block);
 }
 
 }  // namespace akvf

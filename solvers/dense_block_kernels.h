@@ -9,17 +9,21 @@
 // supernodes of a mesh's K a few columns wide, the two cores meet at that
 // mutex all the time: `perf record` on hilbert_b's factorization put about
 // 30 % of its samples in the mutex and the futex calls behind it. The loops
-// take no lock and pack nothing, but run at a half to a third of BLAS's
-// speed on large blocks. Each operation runs as loops below the size where
-// the BLAS calls become faster with both cores calling them at once (the
-// factorization's case), measured by the `DenseBlock` benchmarks:
-// about 24 000 flops for an update (a 20-column
-// supernode's by another's), 29 000 to 44 000 for a block's Cholesky
-// factorization (28 to 32 columns).
+// take no lock and pack nothing: both operations are one kernel, the lower
+// part of L L^T by tiles of eight rows by four columns whose sums stay in
+// vector registers over L's columns (the Cholesky factorization
+// left-looking by panels of four columns), compiled for any x86-64 and for
+// x86-64-v3 (AVX2, FMA), the processor's choice taken at load time. Without
+// cache blocking they fall behind BLAS on large blocks. Each operation runs
+// as loops below the size where the BLAS calls become faster with both
+// cores calling them at once (the factorization's case), measured by the
+// `DenseBlock` benchmarks (blocks of 2c rows by c columns): between c = 48
+// and 64 for an update (330 000 and 790 000 flops), between 96 and 128 for
+// a block's Cholesky factorization (1.2 and 2.8 million flops).
 namespace akvf {
 
-constexpr double kLoopUpdateFlops = 2.4e4;
-constexpr double kLoopCholeskyFlops = 3.5e4;
+constexpr double kLoopUpdateFlops = 5e5;
+constexpr double kLoopCholeskyFlops = 2e6;
 
 // C(i, j) = sum_p L(i, p) L(j, p) for 0 <= j < columns, j <= i < rows: the
 // lower part of an earlier supernode's update of the supernode being built

@@ -20,8 +20,8 @@ Eigen::MatrixXd random_matrix(int rows, int columns, unsigned seed) {
 Eigen::MatrixXd supernode_block(int rows, int columns, unsigned seed) {
   const Eigen::MatrixXd G = random_matrix(rows, columns, seed);
   Eigen::MatrixXd block = G;
-  block.topRows(columns) = G.topRows(columns).transpose() * G.topRows(columns) +
-                           columns * Eigen::MatrixXd::Identity(columns, columns);
+  block.topRows(columns) =
+      G.topRows(columns).transpose() * G.topRows(columns) + columns * Eigen::MatrixXd::Identity(columns, columns);
   return block;
 }
 
@@ -40,9 +40,13 @@ struct Shape {
 }  // namespace
 
 TEST_CASE("block updates: loops and BLAS compute L L(0:columns, :)^T's lower part, small and large") {
-  for (const Shape shape : {Shape{1, 1, 1}, Shape{3, 3, 2}, Shape{7, 2, 5}, Shape{12, 4, 9}, Shape{40, 20, 13},
-                            Shape{90, 30, 33}}) {
+  // Every remainder of the loops' tiles (columns mod 4, rows mod 8 and 4),
+  // and a block large enough for BLAS.
+  for (const Shape shape :
+       {Shape{1, 1, 1}, Shape{3, 3, 2}, Shape{7, 2, 5}, Shape{12, 4, 9}, Shape{13, 5, 7}, Shape{19, 6, 4},
+        Shape{23, 7, 11}, Shape{40, 20, 13}, Shape{90, 30, 33}, Shape{300, 100, 60}}) {
     CAPTURE(shape.rows);
+    CAPTURE(shape.columns);
     CAPTURE(shape.k);
     const int ld = shape.rows + 3;  // a descendant's block has more rows above
     const Eigen::MatrixXd L = random_matrix(ld, shape.k, 11);
@@ -62,7 +66,8 @@ TEST_CASE("block updates: loops and BLAS compute L L(0:columns, :)^T's lower par
 }
 
 TEST_CASE("block Cholesky: loops and BLAS factor the diagonal block and solve the rows below") {
-  for (const Shape shape : {Shape{1, 1, 0}, Shape{5, 5, 0}, Shape{9, 4, 0}, Shape{30, 12, 0}, Shape{120, 40, 0}}) {
+  for (const Shape shape : {Shape{1, 1, 0}, Shape{5, 5, 0}, Shape{9, 4, 0}, Shape{13, 7, 0}, Shape{22, 11, 0},
+                            Shape{30, 12, 0}, Shape{120, 40, 0}, Shape{300, 150, 0}}) {
     CAPTURE(shape.rows);
     CAPTURE(shape.columns);
     const Eigen::MatrixXd block = supernode_block(shape.rows, shape.columns, 5);

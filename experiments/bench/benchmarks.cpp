@@ -364,6 +364,10 @@ void register_all() {
             ("DenseBlock/" + std::string(cholesky ? "cholesky/" : "update/") + (loops ? "loops" : "blas")).c_str(),
             BM_DenseBlock, cholesky, loops)
             ->DenseRange(4, 40, 4)
+            ->Arg(48)
+            ->Arg(64)
+            ->Arg(96)
+            ->Arg(128)
             ->Threads(threads)
             ->Unit(benchmark::kMicrosecond);
   for (const bool eigensolver : {false, true}) {
