@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <string>
 
 #include "akvf/error.h"
+#include "solvers/vector_lanes.h"
 
 // BLAS and LAPACK (Fortran interface, 32-bit integers: Debian's OpenBLAS and
 // reference BLAS, the ones CHOLMOD calls).
@@ -25,15 +25,6 @@ namespace akvf {
 
 namespace {
 
-// Four doubles, loaded and stored unaligned (GCC's vector extension: the
-// default build compiles it to SSE2 pairs, the x86-64-v3 clones to AVX2).
-typedef double Lanes __attribute__((vector_size(32), aligned(8)));
-
-// By pointer and reference: a 32-byte vector passed by value would have
-// another ABI in the two clones.
-[[gnu::always_inline]] inline void load(const double* p, Lanes* v) { std::memcpy(v, p, sizeof *v); }
-[[gnu::always_inline]] inline void store(double* p, const Lanes& v) { std::memcpy(p, &v, sizeof v); }
-
 // One tile of lower_product: rows i0 .. i0 + 4 V - 1 (a = L + i0) by the
 // columns j0 .. j0 + NC - 1 (b = L + j0), c = C + j0 ldc + i0; `offset` =
 // i0 - j0, so row r of column q is in the lower part when r + offset >= q.
@@ -51,7 +42,7 @@ template <int V, int NC, bool kSubtract>
     const double* bp = b + static_cast<std::size_t>(p) * ld;
     Lanes x[V];
 #pragma GCC unroll 2
-    for (int v = 0; v < V; ++v) load(ap + 4 * v, &x[v]);
+    for (int v = 0; v < V; ++v) x[v] = lanes_at(ap + 4 * v).value;
 #pragma GCC unroll 4
     for (int q = 0; q < NC; ++q) {
       const double scale = bp[q];
@@ -65,13 +56,10 @@ template <int V, int NC, bool kSubtract>
 #pragma GCC unroll 2
       for (int v = 0; v < V; ++v) {
         double* target = c + static_cast<std::size_t>(q) * ldc + 4 * v;
-        Lanes value = sum[q][v];
-        if constexpr (kSubtract) {
-          Lanes old;
-          load(target, &old);
-          value = old - value;
-        }
-        store(target, value);
+        if constexpr (kSubtract)
+          lanes_at(target).value -= sum[q][v];
+        else
+          lanes_at(target).value = sum[q][v];
       }
     return;
   }

@@ -9,31 +9,9 @@
 #include <cstddef>
 #include <numeric>
 
+#include "solvers/supernodal_block_solve.h"
+
 namespace akvf {
-
-namespace {
-
-// y[i] -= a x[i], i < n.
-inline void subtract_scaled(double a, const double* __restrict x, double* __restrict y, int n) {
-  for (int i = 0; i < n; ++i) y[i] -= a * x[i];
-}
-
-// sum_i x[i] y[i], i < n, in four interleaved partial sums (vector registers;
-// the order is fixed, so is the result).
-inline double dot(const double* __restrict x, const double* __restrict y, int n) {
-  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-  int i = 0;
-  for (; i + 4 <= n; i += 4) {
-    s0 += x[i] * y[i];
-    s1 += x[i + 1] * y[i + 1];
-    s2 += x[i + 2] * y[i + 2];
-    s3 += x[i + 3] * y[i + 3];
-  }
-  for (; i < n; ++i) s0 += x[i] * y[i];
-  return (s0 + s2) + (s1 + s3);
-}
-
-}  // namespace
 
 template <class Index>
 SupernodalSolve<Index>::SupernodalSolve(const SupernodalStructure<Index>& structure)
@@ -81,10 +59,8 @@ double SupernodalSolve<Index>::top_share(int groups) {
   return top_share_;
 }
 
-// A supernode's block is column-major with its diagonal triangle on top, so
-// column j below the diagonal, L(j+1.., j), is one contiguous run through
-// the triangle's rows and the rows below: forward, one scaled subtraction
-// per column over w = [y; minus the updates of the rows below].
+// Forward, on w = [y; minus the updates of the rows below]
+// (forward_block), the updates then added to the rows below.
 template <class Index>
 void SupernodalSolve<Index>::forward(const double* values, int group, double* z) {
   double* w = scratch_[group == kTop ? groups_.size() : group].data();
@@ -95,11 +71,7 @@ void SupernodalSolve<Index>::forward(const double* values, int group, double* z)
     double* y = z + b.first_column;
     std::copy(y, y + b.columns, w);
     std::fill(w + b.columns, w + b.rows, 0.0);
-    for (int j = 0; j < b.columns; ++j) {
-      const double* column = L + static_cast<std::size_t>(j) * b.rows;
-      w[j] /= column[j];
-      subtract_scaled(w[j], column + j + 1, w + j + 1, b.rows - j - 1);
-    }
+    forward_block(b.rows, b.columns, L, w);
     std::copy(w, w + b.columns, y);
     const Index* below = s_.pattern + s_.pattern_start[node] + b.columns;
     const double* update = w + b.columns;  // minus L(below, :) y
@@ -116,9 +88,7 @@ void SupernodalSolve<Index>::forward(const double* values, int group, double* z)
   }
 }
 
-// Backward, with w = [x; the known x of the rows below]:
-// x_j = (w_j - L(j+1.., j) . w(j+1..)) / L(j, j) from the last column down,
-// one dot product per contiguous column run.
+// Backward, on w = [x; the known x of the rows below] (backward_block).
 template <class Index>
 void SupernodalSolve<Index>::backward(const double* values, int group, double* z) {
   double* w = scratch_[group == kTop ? groups_.size() : group].data();
@@ -131,10 +101,7 @@ void SupernodalSolve<Index>::backward(const double* values, int group, double* z
     const Index* below = s_.pattern + s_.pattern_start[node] + b.columns;
     std::copy(x, x + b.columns, w);
     for (int i = 0; i < b.rows - b.columns; ++i) w[b.columns + i] = z[below[i]];
-    for (int j = b.columns - 1; j >= 0; --j) {
-      const double* column = L + static_cast<std::size_t>(j) * b.rows;
-      w[j] = (w[j] - dot(column + j + 1, w + j + 1, b.rows - j - 1)) / column[j];
-    }
+    backward_block(b.rows, b.columns, L, w);
     std::copy(w, w + b.columns, x);
   }
 }

@@ -1,11 +1,13 @@
-// dense_block_kernels: the loops for small supernode blocks against the BLAS
-// calls they replace, and which one each size gets.
+// dense_block_kernels and supernodal_block_solve: the loops for small
+// supernode blocks against the BLAS calls they replace, which one each size
+// gets, and the triangular solves on one block against Eigen's.
 #include <doctest/doctest.h>
 
 #include <Eigen/Dense>
 #include <random>
 
 #include "solvers/dense_block_kernels.h"
+#include "solvers/supernodal_block_solve.h"
 
 namespace {
 
@@ -99,5 +101,35 @@ TEST_CASE("block Cholesky: loops and BLAS name the same first non-positive pivot
     Eigen::MatrixXd by_loops = block, by_blas = block;
     CHECK(akvf::loop_cholesky(columns + 4, columns, by_loops.data()) == bad);
     CHECK(akvf::blas_cholesky(columns + 4, columns, by_blas.data()) == bad);
+  }
+}
+
+TEST_CASE("block solves: forward and backward on a supernode's block, every panel width") {
+  for (const int columns : {1, 2, 3, 4, 5, 7, 8, 9, 13}) {
+    for (const int below : {0, 1, 3, 4, 11}) {
+      CAPTURE(columns);
+      CAPTURE(below);
+      const int rows = columns + below;
+      Eigen::MatrixXd block = supernode_block(rows, columns, 17);
+      REQUIRE(akvf::loop_cholesky(rows, columns, block.data()) == -1);
+      const Eigen::MatrixXd L11 = block.topRows(columns).triangularView<Eigen::Lower>();
+      const Eigen::MatrixXd L21 = block.bottomRows(below);
+      const Eigen::VectorXd y = random_matrix(columns, 1, 23), known = random_matrix(below, 1, 29);
+
+      Eigen::VectorXd w = Eigen::VectorXd::Zero(rows);
+      w.head(columns) = y;
+      akvf::forward_block(rows, columns, block.data(), w.data());
+      const Eigen::VectorXd x = L11.triangularView<Eigen::Lower>().solve(y);
+      CHECK((w.head(columns) - x).cwiseAbs().maxCoeff() <= 1e-12);
+      if (below > 0) CHECK((w.tail(below) + L21 * x).cwiseAbs().maxCoeff() <= 1e-12);
+
+      w.head(columns) = y;
+      w.tail(below) = known;
+      akvf::backward_block(rows, columns, block.data(), w.data());
+      const Eigen::VectorXd expected =
+          L11.transpose().triangularView<Eigen::Upper>().solve(y - L21.transpose() * known);
+      CHECK((w.head(columns) - expected).cwiseAbs().maxCoeff() <= 1e-12);
+      CHECK(w.tail(below) == known);
+    }
   }
 }

@@ -176,6 +176,15 @@ TEST_CASE("boundary crossings and the rasterized overlap of a map that lies over
   CHECK(measure_uv_overlap(UV, F, {0, 1}).overlapped_samples == 0);
   const TriMesh grid = test::grid_disk(12, 9);
   CHECK(measure_uv_overlap(grid.V.leftCols(2), grid.F, {}).overlapped_samples == 0);
+  // The unit square as four triangles around v, placed so that the edge
+  // from the corner (0, 0) to v passes through the sample at the centre of
+  // cell (503, 414) of the 1024 x 1024 grid, up to rounding: the sample is
+  // inside one of the two triangles at most, whatever the rounding.
+  Eigen::MatrixXd square(5, 2);
+  square << 0, 0, 1, 0, 1, 1, 0, 1, 0.5872209263578807, 0.48342219260246583;
+  Eigen::MatrixXi fan(4, 3);
+  fan << 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4;
+  CHECK(measure_uv_overlap(square, fan, {}).overlapped_samples == 0);
 }
 
 TEST_CASE("a helicoid strip of 1.5 turns: flip-free alone overlaps, global injectivity does not") {

@@ -10,6 +10,15 @@ namespace {
 double signed_area(const Eigen::RowVector2d& a, const Eigen::RowVector2d& b, const Eigen::RowVector2d& c) {
   return 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()));
 }
+
+// Which side of the edge a -> b the point p lies on (> 0: left), computed
+// from the edge's lexicographically smaller end whichever way it is walked,
+// so that the two triangles sharing an edge get exactly opposite signs: a
+// sample on the edge is strictly inside neither, not inside both by rounding.
+double edge_side(const Eigen::RowVector2d& a, const Eigen::RowVector2d& b, const Eigen::RowVector2d& p) {
+  const bool a_first = a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  return a_first ? signed_area(a, b, p) : -signed_area(b, a, p);
+}
 }  // namespace
 
 UvOverlap measure_uv_overlap(const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F, const std::vector<int>& face_chart,
@@ -57,7 +66,7 @@ UvOverlap measure_uv_overlap(const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F
       for (long long j = j0; j <= j1; ++j)
         for (long long i = i0; i <= i1; ++i) {
           const Eigen::RowVector2d p(low.x() + (i + 0.5) * cell, low.y() + (j + 0.5) * cell);
-          if (signed_area(a, b, p) > 0 && signed_area(b, c, p) > 0 && signed_area(c, a, p) > 0) {
+          if (edge_side(a, b, p) > 0 && edge_side(b, c, p) > 0 && edge_side(c, a, p) > 0) {
             std::uint8_t& n = count[static_cast<size_t>(j * nx + i)];
             if (n < 2) ++n;
           }
