@@ -15,8 +15,9 @@ const double* column_of(const double* L, int rows, int j) { return L + static_ca
 
 // Each is compiled for any x86-64 and for x86-64-v3 (AVX2, FMA); the
 // processor's choice is taken at load time.
-[[gnu::target_clones("arch=x86-64-v3", "default")]] void forward_block(int rows, int columns, const double* L,
-                                                                       double* w) {
+[[gnu::target_clones("arch=x86-64-v3", "default")]] void forward_block(int rows, int columns,
+                                                                       const double* __restrict L,
+                                                                       double* __restrict w) {
   for (int j0 = 0; j0 < columns; j0 += 4) {
     const int width = std::min(4, columns - j0), below = j0 + width;
     for (int j = j0; j < below; ++j) {  // the panel's triangle
@@ -39,17 +40,32 @@ const double* column_of(const double* L, int rows, int j) { return L + static_ca
   }
 }
 
-[[gnu::target_clones("arch=x86-64-v3", "default")]] void backward_block(int rows, int columns, const double* L,
-                                                                        double* w) {
+[[gnu::target_clones("arch=x86-64-v3", "default")]] void backward_block(int rows, int columns,
+                                                                        const double* __restrict L,
+                                                                        double* __restrict w) {
   for (int j0 = (columns - 1) / 4 * 4; j0 >= 0; j0 -= 4) {
     const int width = std::min(4, columns - j0), below = j0 + width;
     // The panel's columns dotted with the known entries below it, four
     // sums in vector lanes each, then the rest one by one.
     Lanes sums[4] = {};
     int i = below;
-    for (; i + 4 <= rows; i += 4) {
-      const Lanes x = lanes_at(w + i).value;
-      for (int q = 0; q < width; ++q) sums[q] += lanes_at(column_of(L, rows, j0 + q) + i).value * x;
+    if (width == 4) {
+      const double *l0 = column_of(L, rows, j0), *l1 = column_of(L, rows, j0 + 1), *l2 = column_of(L, rows, j0 + 2),
+                   *l3 = column_of(L, rows, j0 + 3);
+      Lanes s0 = {}, s1 = {}, s2 = {}, s3 = {};
+      for (; i + 4 <= rows; i += 4) {
+        const Lanes x = lanes_at(w + i).value;
+        s0 += lanes_at(l0 + i).value * x;
+        s1 += lanes_at(l1 + i).value * x;
+        s2 += lanes_at(l2 + i).value * x;
+        s3 += lanes_at(l3 + i).value * x;
+      }
+      sums[0] = s0, sums[1] = s1, sums[2] = s2, sums[3] = s3;
+    } else {
+      for (; i + 4 <= rows; i += 4) {
+        const Lanes x = lanes_at(w + i).value;
+        for (int q = 0; q < width; ++q) sums[q] += lanes_at(column_of(L, rows, j0 + q) + i).value * x;
+      }
     }
     double dot[4];
     for (int q = 0; q < width; ++q) {
