@@ -127,10 +127,7 @@ template <bool kSubtract>
 
 }  // namespace
 
-// Each loop kernel is compiled twice, for any x86-64 and for x86-64-v3
-// (AVX2), and the loader picks the one the processor runs.
-[[gnu::target_clones("arch=x86-64-v3", "default")]] void loop_update(int rows, int columns, int k, const double* L,
-                                                                     int ld, double* C) {
+AKVF_FOR_EACH_X86_LEVEL void loop_update(int rows, int columns, int k, const double* L, int ld, double* C) {
   lower_product<false>(rows, columns, k, L, ld, C, rows);
 }
 
@@ -141,7 +138,7 @@ void blas_update(int rows, int columns, int k, const double* L, int ld, double* 
   if (below > 0) dgemm_("N", "T", &below, &columns, &k, &one, L + columns, &ld, L, &ld, &zero, C + columns, &rows);
 }
 
-[[gnu::target_clones("arch=x86-64-v3", "default")]] int loop_cholesky(int rows, int columns, double* block) {
+AKVF_FOR_EACH_X86_LEVEL int loop_cholesky(int rows, int columns, double* block) {
   // Left-looking, by panels of four columns: a panel less the earlier
   // columns' parts (one lower_product), then its own columns one by one,
   // each less the panel's earlier ones and divided by its pivot's square

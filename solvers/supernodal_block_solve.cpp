@@ -13,11 +13,7 @@ const double* column_of(const double* L, int rows, int j) { return L + static_ca
 
 }  // namespace
 
-// Each is compiled for any x86-64 and for x86-64-v3 (AVX2, FMA); the
-// processor's choice is taken at load time.
-[[gnu::target_clones("arch=x86-64-v3", "default")]] void forward_block(int rows, int columns,
-                                                                       const double* __restrict L,
-                                                                       double* __restrict w) {
+AKVF_FOR_EACH_X86_LEVEL void forward_block(int rows, int columns, const double* __restrict L, double* __restrict w) {
   for (int j0 = 0; j0 < columns; j0 += 4) {
     const int width = std::min(4, columns - j0), below = j0 + width;
     for (int j = j0; j < below; ++j) {  // the panel's triangle
@@ -40,9 +36,7 @@ const double* column_of(const double* L, int rows, int j) { return L + static_ca
   }
 }
 
-[[gnu::target_clones("arch=x86-64-v3", "default")]] void backward_block(int rows, int columns,
-                                                                        const double* __restrict L,
-                                                                        double* __restrict w) {
+AKVF_FOR_EACH_X86_LEVEL void backward_block(int rows, int columns, const double* __restrict L, double* __restrict w) {
   for (int j0 = (columns - 1) / 4 * 4; j0 >= 0; j0 -= 4) {
     const int width = std::min(4, columns - j0), below = j0 + width;
     // The panel's columns dotted with the known entries below it, four

@@ -1,9 +1,16 @@
 #pragma once
 // Four doubles as one value (the vector extension of GCC and Clang), for
-// the dense kernels of the supernodal factorization and solves: a function
-// marked target_clones (dense_block_kernels.cpp, supernodal_block_solve.cpp)
-// compiles it to SSE2 pairs for any x86-64 and to one AVX2 register for
-// x86-64-v3.
+// the dense kernels of the supernodal factorization and solves
+// (dense_block_kernels.cpp, supernodal_block_solve.cpp). A kernel marked
+// AKVF_FOR_EACH_X86_LEVEL is compiled for any x86-64 (the vector as SSE2
+// pairs) and for x86-64-v3 (one AVX2 register, FMA), and the loader picks
+// the version the processor runs; on other processors it is compiled once.
+#if defined(__x86_64__)
+#define AKVF_FOR_EACH_X86_LEVEL [[gnu::target_clones("arch=x86-64-v3", "default")]]
+#else
+#define AKVF_FOR_EACH_X86_LEVEL
+#endif
+
 namespace akvf {
 
 typedef double Lanes __attribute__((vector_size(32)));
