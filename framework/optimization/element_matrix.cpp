@@ -53,17 +53,27 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
 
   // Where each local slot (i <= j, in this loop order) lands among the
   // nonzeros: the k-th neighbor's rows start at D k in its column.
+  // The neighbor index is looked up once per pair of corners.
   std::vector<int> slot_entry(static_cast<std::size_t>(kSlots) * ne);
   parallel_for_index(ne, 1024, [&](int e) {
-    auto dof = [&](int i) { return D * elements(e, i / D) + i % D; };  // global dof of local dof i
+    int vertex[N], neighbor[N][N];  // neighbor[a][b]: the smaller one's index in the larger one's column
+    for (int a = 0; a < N; ++a) vertex[a] = elements(e, a);
+    for (int b = 0; b < N; ++b)
+      for (int a = 0; a <= b; ++a) {
+        const int low = std::min(vertex[a], vertex[b]), high = std::max(vertex[a], vertex[b]);
+        const int* first = graph.row.data() + graph.column_start[high];
+        neighbor[a][b] = neighbor[b][a] =
+            static_cast<int>(std::lower_bound(first, first + neighbors_of(high), low) - first);
+      }
     int* entry = slot_entry.data() + static_cast<std::size_t>(kSlots) * e;
     for (int j = 0; j < kLocalSize; ++j)
       for (int i = 0; i <= j; ++i) {
-        const int low = std::min(dof(i), dof(j)), high = std::max(dof(i), dof(j));
-        const int v = high / D;
-        const int* first = graph.row.data() + graph.column_start[v];
-        const int k = static_cast<int>(std::lower_bound(first, first + neighbors_of(v), low / D) - first);
-        *entry++ = outer[high] + D * k + low % D;
+        const int a = i / D, b = j / D;
+        // The entry of dofs (D vertex[a] + i % D, D vertex[b] + j % D) in
+        // the upper triangle: the column is the larger dof's.
+        const int dof_i = D * vertex[a] + i % D, dof_j = D * vertex[b] + j % D;
+        const int low = std::min(dof_i, dof_j), high = std::max(dof_i, dof_j);
+        *entry++ = outer[high] + D * neighbor[a][b] + low % D;
       }
   });
   graph = {};
