@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <tuple>
 #include <unordered_map>
 
 #include "akvf/error.h"
@@ -12,16 +13,26 @@ EdgeTopology edge_topology(const Eigen::MatrixXi& F) {
   struct HalfEdge {
     int lo, hi, from, face;
   };
-  std::vector<HalfEdge> half_edges;
-  half_edges.reserve(3 * F.rows());
-  for (int f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int a = F(f, k), b = F(f, (k + 1) % 3);
-      half_edges.push_back({std::min(a, b), std::max(a, b), a, f});
-    }
-  std::sort(half_edges.begin(), half_edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face);
-  });
+  // Sorted by (lo, hi, face): counted into one bucket per lo, then each
+  // bucket (the edges at a vertex, a few) sorted by (hi, face).
+  if (F.size() > 0 && F.minCoeff() < 0) throw ValidationError("edge_topology: a face has a negative vertex index");
+  const int nv = F.size() > 0 ? F.maxCoeff() + 1 : 0;
+  std::vector<int> bucket_start(nv + 1, 0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) ++bucket_start[std::min(F(f, k), F(f, (k + 1) % 3)) + 1];
+  std::partial_sum(bucket_start.begin(), bucket_start.end(), bucket_start.begin());
+  std::vector<HalfEdge> half_edges(3 * static_cast<std::size_t>(F.rows()));
+  {
+    std::vector<int> next(bucket_start.begin(), bucket_start.end() - 1);
+    for (int f = 0; f < F.rows(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int a = F(f, k), b = F(f, (k + 1) % 3);
+        half_edges[next[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), a, f};
+      }
+  }
+  for (int v = 0; v < nv; ++v)
+    std::sort(half_edges.begin() + bucket_start[v], half_edges.begin() + bucket_start[v + 1],
+              [](const HalfEdge& x, const HalfEdge& y) { return std::tie(x.hi, x.face) < std::tie(y.hi, y.face); });
   EdgeTopology topology;
   for (std::size_t i = 0; i < half_edges.size();) {
     std::size_t j = i;

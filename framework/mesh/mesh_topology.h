@@ -9,7 +9,8 @@
 namespace akvf {
 
 // Undirected edges of F with the faces that use them, plus the problems that
-// make a mesh non-manifold. Built once by sorting the 3|F| half-edges.
+// make a mesh non-manifold. Built once from the 3|F| half-edges, bucketed by
+// their smaller vertex.
 struct EdgeTopology {
   int num_edges = 0;
   // A directed boundary half-edge (a -> b) per boundary edge, as its face
