@@ -54,7 +54,8 @@ SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const Precondition
 // where the other is released, so a switch costs no setup the pure methods
 // do not pay before their start, and no second analysis or factor is kept.
 // Both phases give up a failed factorization reuse after one CG iteration
-// (factored_preconditioner.h, reuse_check_from).
+// (factored_preconditioner.h, reuse_check_from); the AKVF phase reuses its
+// factor rounded to single precision (reuse_in_single_precision).
 template <int D, class Akvf, class Settings>
 std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objective, const Settings& settings) {
   FactorOptions newton = newton_phase_options(settings);
@@ -62,6 +63,8 @@ std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objecti
   const EigenvalueFilter filter = settings.newton_phase_filter;
   auto akvf_options = settings.akvf;
   akvf_options.factor.reuse_check_from = 1;
+  // The far phase: its reuses may precondition in single precision.
+  akvf_options.factor.reuse_in_single_precision = true;
   auto factored = [](Preconditioner& current) -> FactoredPreconditioner<D>& {
     return dynamic_cast<FactoredPreconditioner<D>&>(current);
   };

@@ -268,6 +268,7 @@ void FactoredPreconditioner<D>::apply(const Eigen::VectorXd& gradient, Eigen::Ve
 
 template <int D>
 bool FactoredPreconditioner<D>::solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d) {
+  if (options_.reuse_in_single_precision) cholesky_.round_factor_to_single();
   const auto inverse = [this](const Eigen::VectorXd& r, Eigen::VectorXd* z) { cholesky_.solve(r, z); };
   return projected_cg(g, factored_null_basis_, inverse, options_.reuse_tolerance, options_.reuse_max_cg,
                       options_.reuse_check_from, d)

@@ -50,6 +50,17 @@
 // a factorization). The paper's AKVF keeps the second: on camelhead one of
 // its reuses contracts less at first and converges, and checking from the
 // first took it from 82 to 86 iterations.
+// With reuse_in_single_precision the earlier factor is rounded to single
+// precision in place before its first reuse (SparseCholesky::
+// round_factor_to_single): its solves, most of a CG iteration's cost and
+// bound by memory bandwidth, read half the bytes (horse_b: about 0.4 of a
+// factorization per CG iteration instead of 0.6), and a factorization
+// brings it back to double. CG then solves K(x) d = g with a preconditioner
+// whose L carries a relative 6e-8 per entry, far below tau, so the
+// directions of akvf-newton's AKVF phase, the far phase, keep their
+// iteration counts. Near a minimum the soft modes of K + eps I (eps a
+// relative 1e-12) lie below that rounding, and the paper's AKVF taken to
+// a gradient of 1e-6 stalled at 5e-6 on horse_b; so only that phase uses it.
 //
 // Algebraic multigrid (linear_solver = kAmg). Instead of a factorization,
 // hypre's BoomerAMG builds a hierarchy of P(x) (solvers/algebraic_multigrid.h)
@@ -104,6 +115,8 @@ struct FactorOptions {
   double reuse_tolerance = 0;        // tau; 0 factors at every update
   int reuse_max_cg = 8;
   int reuse_check_from = 2;  // the first CG iteration at which a reuse may be abandoned (module comment)
+  // Reuse with the earlier factor rounded to single precision (module comment).
+  bool reuse_in_single_precision = false;
   // > 0: never factor; solve (P + shift) d = g by Jacobi-preconditioned
   // conjugate gradients to this relative residual (§6.2 uses 1 %), at most
   // cg_max_iterations iterations (the last iterate is still a descent direction).

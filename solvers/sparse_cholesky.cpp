@@ -108,6 +108,9 @@ class PermutedFactor {
   virtual void factorize(const double* upper_values, bool by_cholmod) = 0;
   // z = (L L^T)^-1 z in the permuted numbering.
   virtual void solve(double* z) = 0;
+  // SparseCholesky::round_factor_to_single (a supernodal factor only).
+  virtual void round_to_single() = 0;
+  virtual bool single() const = 0;
   virtual bool supernodal() const = 0;
   virtual bool factored() const = 0;
   // SupernodalFactorization::critical_path_share, SupernodalSolve::top_share.
@@ -204,6 +207,7 @@ class CholmodFactor final : public PermutedFactor {
 
   void factorize(const double* upper_values, bool by_cholmod) override {
     own_factored_ = false;
+    single_ = false;
     const std::vector<int>& source = pattern_->source;
     if (factor_->is_super && !by_cholmod) {
       // Not value-initialized: each supernode's block is set when it is
@@ -238,7 +242,10 @@ class CholmodFactor final : public PermutedFactor {
 
   void solve(double* z) override {
     if (factor_->is_super) {
-      supernodal_solve().solve(own_factored_ ? factor_values_.get() : static_cast<const double*>(factor_->x), z);
+      if (single_)
+        supernodal_solve().solve(reinterpret_cast<const SingleEntry*>(values()), z);
+      else
+        supernodal_solve().solve(static_cast<const double*>(values()), z);
       return;
     }
     const size_t n = factor_->n;
@@ -249,6 +256,25 @@ class CholmodFactor final : public PermutedFactor {
     const double* x = static_cast<const double*>(solution_->x);
     std::copy(x, x + n, z);
   }
+
+  void round_to_single() override {
+    if (!factor_->is_super || single_) return;
+    double* value = values();
+    SingleEntry* single = reinterpret_cast<SingleEntry*>(value);
+    // In place, front to back: entry i's float lands in the bytes of double
+    // i / 2, already read. The first stretch in order, then stretches
+    // [begin, 2 begin), each in parallel: their floats land below begin.
+    const std::size_t n = factor_->xsize, first = std::min<std::size_t>(n, 1 << 16);
+    for (std::size_t i = 0; i < first; ++i) single[i].value = static_cast<float>(value[i]);
+    for (std::size_t begin = first; begin < n; begin *= 2)
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, std::min(n, 2 * begin), 1 << 14),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i != r.end(); ++i)
+                            single[i].value = static_cast<float>(value[i]);
+                        });
+    single_ = true;
+  }
+  bool single() const override { return single_; }
 
   bool supernodal() const override { return factor_->is_super; }
   bool factored() const override { return own_factored_ || factor_->xtype != CHOLMOD_PATTERN; }
@@ -333,6 +359,8 @@ class CholmodFactor final : public PermutedFactor {
   std::unique_ptr<double[]> factor_values_;  // L by SupernodalFactorization (factor_->xsize entries)
   std::vector<double> lower_value_;          // the lower triangle's values, for CHOLMOD's factorizations
   bool own_factored_ = false;
+  bool single_ = false;  // L's values rounded to single precision in place (round_to_single)
+  double* values() { return own_factored_ ? factor_values_.get() : static_cast<double*>(factor_->x); }
 };
 
 }  // namespace
@@ -573,6 +601,14 @@ bool solve_positive_definite(const Eigen::SparseMatrix<double>& A, const Eigen::
   }
   return true;
 }
+
+void SparseCholesky::round_factor_to_single() {
+  if (!analyzed() || !impl_->factor->factored())
+    throw NumericalError("SparseCholesky::round_factor_to_single called before factorize");
+  impl_->factor->round_to_single();
+}
+
+bool SparseCholesky::factor_is_single() const { return analyzed() && impl_->factor->single(); }
 
 void SparseCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd* x) {
   if (!analyzed() || !impl_->factor->factored()) throw NumericalError("SparseCholesky::solve called before factorize");

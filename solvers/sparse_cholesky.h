@@ -55,8 +55,14 @@ class SparseCholesky {
   // Throws NotPositiveDefinite if A is not (numerically) positive
   // definite, NumericalError on other failures.
   void factorize(const Eigen::SparseMatrix<double>& upper);
-  // x = A^-1 b (x is resized).
+  // x = A^-1 b (x is resized), with L at its current precision.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd* x);
+  // Rounds a supernodal L to single precision in place, until the next
+  // factorize(): each solve then reads half the bytes, and its result
+  // carries L's rounding, a relative 6e-8 per entry (enough for a
+  // preconditioner). A simplicial L stays in double.
+  void round_factor_to_single();
+  bool factor_is_single() const;
 
   bool analyzed() const;
   // True for a supernodal factor (solved by our own supernodal triangular

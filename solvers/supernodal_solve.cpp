@@ -62,12 +62,13 @@ double SupernodalSolve<Index>::top_share(int groups) {
 // Forward, on w = [y; minus the updates of the rows below]
 // (forward_block), the updates then added to the rows below.
 template <class Index>
-void SupernodalSolve<Index>::forward(const double* values, int group, double* z) {
+template <class Value>
+void SupernodalSolve<Index>::forward(const Value* values, int group, double* z) {
   double* w = scratch_[group == kTop ? groups_.size() : group].data();
   double* top_updates = group == kTop || group == 0 ? nullptr : top_updates_[group - 1].data();
   for (int node : members(group)) {
     const BlockShape b = block_shape(s_, node);
-    const double* L = values + s_.value_start[node];
+    const Value* L = values + s_.value_start[node];
     double* y = z + b.first_column;
     std::copy(y, y + b.columns, w);
     std::fill(w + b.columns, w + b.rows, 0.0);
@@ -90,13 +91,14 @@ void SupernodalSolve<Index>::forward(const double* values, int group, double* z)
 
 // Backward, on w = [x; the known x of the rows below] (backward_block).
 template <class Index>
-void SupernodalSolve<Index>::backward(const double* values, int group, double* z) {
+template <class Value>
+void SupernodalSolve<Index>::backward(const Value* values, int group, double* z) {
   double* w = scratch_[group == kTop ? groups_.size() : group].data();
   const std::vector<int>& order = members(group);
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     const int node = *it;
     const BlockShape b = block_shape(s_, node);
-    const double* L = values + s_.value_start[node];
+    const Value* L = values + s_.value_start[node];
     double* x = z + b.first_column;
     const Index* below = s_.pattern + s_.pattern_start[node] + b.columns;
     std::copy(x, x + b.columns, w);
@@ -107,7 +109,8 @@ void SupernodalSolve<Index>::backward(const double* values, int group, double* z
 }
 
 template <class Index>
-void SupernodalSolve<Index>::solve(const double* values, double* z) {
+template <class Value>
+void SupernodalSolve<Index>::solve(const Value* values, double* z) {
   const int threads = std::max(2, tbb::this_task_arena::max_concurrency());
   if (static_cast<int>(groups_.size()) != threads) split(threads);
   const tbb::blocked_range<int> groups(0, threads, 1);
@@ -134,5 +137,9 @@ void SupernodalSolve<Index>::solve(const double* values, double* z) {
 
 template class SupernodalSolve<int>;
 template class SupernodalSolve<SuiteSparse_long>;
+template void SupernodalSolve<int>::solve(const double*, double*);
+template void SupernodalSolve<int>::solve(const SingleEntry*, double*);
+template void SupernodalSolve<SuiteSparse_long>::solve(const double*, double*);
+template void SupernodalSolve<SuiteSparse_long>::solve(const SingleEntry*, double*);
 
 }  // namespace akvf

@@ -23,6 +23,7 @@
 #include <memory>
 #include <vector>
 
+#include "solvers/supernodal_block_solve.h"  // SingleEntry
 #include "solvers/supernodal_tree.h"
 
 namespace akvf {
@@ -35,8 +36,11 @@ class SupernodalSolve {
   // at the first solve, and again when the number of threads changes.
   explicit SupernodalSolve(const SupernodalStructure<Index>& structure);
 
-  // z = (L L^T)^-1 z, with L's values in CHOLMOD's supernodal layout.
-  void solve(const double* values, double* z);
+  // z = (L L^T)^-1 z, with L's values in CHOLMOD's supernodal layout, as
+  // doubles or as SingleEntry (supernodal_block_solve.h); z and the sums in
+  // double.
+  template <class Value>
+  void solve(const Value* values, double* z);
 
   // Share of the factor's entries in the top part (solved on one thread)
   // with `groups` groups.
@@ -45,9 +49,11 @@ class SupernodalSolve {
  private:
   void split(int groups);
   // L y = z over a group's supernodes (kTop: the top's).
-  void forward(const double* values, int group, double* z);
+  template <class Value>
+  void forward(const Value* values, int group, double* z);
   // L^T x = y over a group's supernodes (kTop: the top's), last first.
-  void backward(const double* values, int group, double* z);
+  template <class Value>
+  void backward(const Value* values, int group, double* z);
   const std::vector<int>& members(int group) const { return group == kTop ? top_ : groups_[group]; }
 
   SupernodalStructure<Index> s_;

@@ -28,6 +28,16 @@ struct [[gnu::packed, gnu::may_alias]] LanesInMemory {
 }
 [[gnu::always_inline]] inline LanesInMemory& lanes_at(double* p) { return *reinterpret_cast<LanesInMemory*>(p); }
 
+// Four floats in memory at any float's address, likewise (widened to Lanes
+// by __builtin_convertvector).
+typedef float FloatLanes __attribute__((vector_size(16)));
+struct [[gnu::packed, gnu::may_alias]] FloatLanesInMemory {
+  FloatLanes value;
+};
+[[gnu::always_inline]] inline const FloatLanesInMemory& floats_at(const float* p) {
+  return *reinterpret_cast<const FloatLanesInMemory*>(p);
+}
+
 // The four lanes' sum, in a fixed order.
 [[gnu::always_inline]] inline double lane_sum(const Lanes& v) { return (v[0] + v[2]) + (v[1] + v[3]); }
 

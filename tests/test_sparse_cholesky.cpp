@@ -313,3 +313,33 @@ TEST_CASE("solve_positive_definite solves every column of a positive definite sy
   const Eigen::SparseMatrix<double> C = indefinite.upper().selfadjointView<Eigen::Upper>();
   CHECK_FALSE(akvf::solve_positive_definite(C, B, &X));
 }
+
+TEST_CASE("a factor rounded to single precision solves to its rounding until the next factorization restores it") {
+  // 70 x 70: small blocks only; 160 x 160: some factored by BLAS. Several
+  // threads, so that the rounding in place runs in parallel stretches.
+  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 4);
+  for (const int nx : {70, 160}) {
+    CAPTURE(nx);
+    const akvf::ElementMatrix2D K = shifted_killing(nx);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), -1.0, 2.0).array().sin();
+    akvf::SparseCholesky cholesky;
+    cholesky.analyze(K.upper(), 2);
+    cholesky.factorize(K.upper());
+    Eigen::VectorXd exact, rounded, again;
+    cholesky.solve(b, &exact);
+    CHECK(!cholesky.factor_is_single());
+    cholesky.round_factor_to_single();
+    cholesky.round_factor_to_single();  // once is enough: a second call changes nothing
+    CHECK(cholesky.factor_is_single());
+    cholesky.solve(b, &rounded);
+    // L's entries carry a relative 6e-8; K's condition number here is some 1e3.
+    const double error = (rounded - exact).norm() / exact.norm();
+    CHECK(error > 0);
+    CHECK(error <= 1e-3);
+    CHECK(solve_residual(cholesky, K) <= 1e-3);
+    cholesky.factorize(K.upper());
+    CHECK(!cholesky.factor_is_single());
+    cholesky.solve(b, &again);
+    CHECK(again == exact);
+  }
+}
