@@ -332,11 +332,12 @@ TEST_CASE("a factor rounded to single precision solves to its rounding until the
     cholesky.round_factor_to_single();  // once is enough: a second call changes nothing
     CHECK(cholesky.factor_is_single());
     cholesky.solve(b, &rounded);
-    // L's entries carry a relative 6e-8; K's condition number here is some 1e3.
+    // L's entries carry a relative 6e-8, the solution that times at most
+    // K's condition number (some 1e3 here); measured about 5e-8. (Its
+    // residual |K x - b| / |b| is larger, about |K| |x| / |b| times that.)
     const double error = (rounded - exact).norm() / exact.norm();
     CHECK(error > 0);
-    CHECK(error <= 1e-3);
-    CHECK(solve_residual(cholesky, K) <= 1e-3);
+    CHECK(error <= 1e-5);
     cholesky.factorize(K.upper());
     CHECK(!cholesky.factor_is_single());
     cholesky.solve(b, &again);
