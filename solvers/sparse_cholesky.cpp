@@ -264,14 +264,14 @@ class CholmodFactor final : public PermutedFactor {
     // In place, front to back: entry i's float lands in the bytes of double
     // i / 2, already read. The first stretch in order, then stretches
     // [begin, 2 begin), each in parallel: their floats land below begin.
+    const auto round = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) single[i].value = static_cast<float>(value[i]);
+    };
     const std::size_t n = factor_->xsize, first = std::min<std::size_t>(n, 1 << 16);
-    for (std::size_t i = 0; i < first; ++i) single[i].value = static_cast<float>(value[i]);
+    round(0, first);
     for (std::size_t begin = first; begin < n; begin *= 2)
       tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, std::min(n, 2 * begin), 1 << 14),
-                        [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t i = r.begin(); i != r.end(); ++i)
-                            single[i].value = static_cast<float>(value[i]);
-                        });
+                        [&](const tbb::blocked_range<std::size_t>& r) { round(r.begin(), r.end()); });
     single_ = true;
   }
   bool single() const override { return single_; }

@@ -325,13 +325,15 @@ TEST_CASE("a factor rounded to single precision solves to its rounding until the
     akvf::SparseCholesky cholesky;
     cholesky.analyze(K.upper(), 2);
     cholesky.factorize(K.upper());
-    Eigen::VectorXd exact, rounded, again;
+    Eigen::VectorXd exact, rounded, rounded_twice, again;
     cholesky.solve(b, &exact);
     CHECK(!cholesky.factor_is_single());
     cholesky.round_factor_to_single();
-    cholesky.round_factor_to_single();  // once is enough: a second call changes nothing
     CHECK(cholesky.factor_is_single());
     cholesky.solve(b, &rounded);
+    cholesky.round_factor_to_single();  // a second call changes nothing
+    cholesky.solve(b, &rounded_twice);
+    CHECK(rounded_twice == rounded);
     // L's entries carry a relative 6e-8, the solution that times at most
     // K's condition number (some 1e3 here); measured about 5e-8. (Its
     // residual |K x - b| / |b| is larger, about |K| |x| / |b| times that.)
