@@ -44,20 +44,28 @@ std::vector<double> vertex_means(const ParamSetup& setup, const Eigen::VectorXd&
 }
 
 // Where the round's seams start: in each chart above the bound, its
-// interior vertices whose energy (the area-weighted mean of their faces')
-// is above the bound too, at least their interior neighbours' (the peaks of
-// the distortion) and at least kPeakShare of the chart's largest peak's
-// excess (a peak can only be the shoulder of one in its own chart), or, if
-// there is none, its most distorted interior vertex; most distorted first.
-std::vector<int> seam_starts(const ParamSetup& setup, const Eigen::VectorXd& energy,
+// vertices whose energy (the area-weighted mean of their faces') is above
+// the bound too, at least all their neighbours' (the peaks of the
+// distortion) and at least kPeakShare of the chart's largest peak's excess
+// (a peak can only be the shoulder of one in its own chart), or, if there
+// is none, its most distorted interior vertex; most distorted first. A peak
+// on the boundary counts if it has an interior neighbour to cut toward (a
+// seam's tip is such a peak, where the distortion the seam has not relieved
+// concentrates): were boundary vertices left out, the interior vertex
+// beside each would count as a peak below them, and every round would
+// add one-edge seams all along the boundary.
+std::vector<int> seam_starts(const ParamSetup& setup, const std::vector<double>& mean,
                              const std::vector<double>& chart_energy, double bound) {
   const TriMesh& mesh = setup.disk.mesh;
   const int nv = mesh.num_vertices();
-  const std::vector<double> mean = vertex_means(setup, energy);
   std::vector<char> interior(nv, 1);
   for (const auto& loop : setup.disk.boundary_loops)
     for (int v : loop) interior[v] = 0;
   std::vector<char> candidate = interior;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k)
+      for (int j = 1; j < 3; ++j)
+        if (interior[mesh.F(f, (k + j) % 3)]) candidate[mesh.F(f, k)] = 1;
   std::vector<int> chart_of(nv, 0);
   for (int f = 0; f < mesh.num_faces(); ++f)
     for (int k = 0; k < 3; ++k) {
@@ -65,22 +73,22 @@ std::vector<int> seam_starts(const ParamSetup& setup, const Eigen::VectorXd& ene
       chart_of[v] = setup.disk.face_chart[f];
       if (chart_energy[setup.disk.face_chart[f]] <= bound) candidate[v] = 0;
       for (int w : {mesh.F(f, (k + 1) % 3), mesh.F(f, (k + 2) % 3)})
-        if (interior[w] && mean[w] > mean[v]) candidate[v] = 0;
+        if (mean[w] > mean[v]) candidate[v] = 0;
     }
-  // Per chart: its largest peak above the bound, else its most distorted candidate.
+  // Per chart above the bound: its largest peak above the bound, and its most distorted interior vertex.
   std::vector<int> peak(chart_energy.size(), -1), most(chart_energy.size(), -1);
   for (int v = 0; v < nv; ++v) {
-    if (!candidate[v]) continue;
+    if (chart_energy[chart_of[v]] <= bound) continue;
     int& m = most[chart_of[v]];
-    if (m < 0 || mean[v] > mean[m]) m = v;
+    if (interior[v] && (m < 0 || mean[v] > mean[m])) m = v;
     int& p = peak[chart_of[v]];
-    if (mean[v] > bound && (p < 0 || mean[v] > mean[p])) p = v;
+    if (candidate[v] && mean[v] > bound && (p < 0 || mean[v] > mean[p])) p = v;
   }
   std::vector<int> starts;
   for (int v = 0; v < nv; ++v) {
-    if (!candidate[v]) continue;
     const int p = peak[chart_of[v]];
-    if (p < 0 ? v == most[chart_of[v]] : mean[v] >= 4 + kPeakShare * (mean[p] - 4)) starts.push_back(v);
+    if (p < 0 ? v == most[chart_of[v]] : candidate[v] && mean[v] >= 4 + kPeakShare * (mean[p] - 4))
+      starts.push_back(v);
   }
   std::stable_sort(starts.begin(), starts.end(), [&](int a, int b) { return mean[a] > mean[b]; });
   return starts;
@@ -215,8 +223,9 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
         report.stop_reason = "the globally injective rounds took as many iterations as the flip-free ones";
         return;
       }
-      const std::vector<std::vector<int>> paths =
-          seam_paths(setup->disk.mesh, seam_starts(*setup, energy, report.chart_distortion, config.max_distortion));
+      const std::vector<double> mean = vertex_means(*setup, energy);
+      const std::vector<std::vector<int>> paths = seam_paths(
+          setup->disk.mesh, seam_starts(*setup, mean, report.chart_distortion, config.max_distortion), mean);
       if (paths.empty()) {
         report.stop_reason = "no interior vertex is left to cut from";
         return;

@@ -28,14 +28,34 @@ int euler_characteristic(const TriMesh& mesh) {
   return mesh.num_vertices() - akvf::edge_topology(mesh.F).num_edges + mesh.num_faces();
 }
 
+// The same energy at every vertex.
+std::vector<double> flat(const TriMesh& mesh) { return std::vector<double>(mesh.num_vertices(), 4.0); }
+
 }  // namespace
+
+TEST_CASE("a seam from a boundary vertex takes the edge to its most distorted neighbour and leaves a disk") {
+  const int n = 9;
+  akvf::DiskMesh disk = akvf::prepare_disk_mesh(akvf::test::grid_disk(n, n), "grid", true);
+  const int start = grid_vertex(n, 4, 0), inward = grid_vertex(n, 4, 1);
+  std::vector<double> energy = flat(disk.mesh);
+  energy[inward] = 5;
+  energy[grid_vertex(n, 3, 0)] = energy[grid_vertex(n, 5, 0)] = 6;  // on the boundary: not cut toward
+  const auto paths = akvf::seam_paths(disk.mesh, {start}, energy);
+  REQUIRE(paths.size() == 1);
+  CHECK(paths[0] == std::vector<int>{inward, start});
+  const int vertices = disk.mesh.num_vertices();
+  akvf::open_seams(&disk, paths);
+  CHECK(disk.mesh.num_vertices() == vertices + 1);  // the start splits in two; the inner end is the tip
+  CHECK(euler_characteristic(disk.mesh) == 1);
+  CHECK(disk.boundary_loops.size() == 1);
+}
 
 TEST_CASE("a seam runs from an interior vertex to the boundary and opens the disk into a disk") {
   const int n = 9;
   akvf::DiskMesh disk = akvf::prepare_disk_mesh(akvf::test::grid_disk(n, n), "grid", true);
   const TriMesh before = disk.mesh;
   const int center = grid_vertex(n, 4, 4);
-  const auto paths = akvf::seam_paths(disk.mesh, {center});
+  const auto paths = akvf::seam_paths(disk.mesh, {center}, flat(disk.mesh));
   REQUIRE(paths.size() == 1);
   const std::vector<int>& path = paths[0];
   CHECK(path.front() == center);
@@ -63,12 +83,13 @@ TEST_CASE("a seam runs from an interior vertex to the boundary and opens the dis
 TEST_CASE("a later seam ends where it meets an earlier one, so the seams form trees") {
   const int n = 9;
   akvf::DiskMesh disk = akvf::prepare_disk_mesh(akvf::test::grid_disk(n, n), "grid", true);
-  const auto first = akvf::seam_paths(disk.mesh, {grid_vertex(n, 4, 4)});
+  const auto first = akvf::seam_paths(disk.mesh, {grid_vertex(n, 4, 4)}, flat(disk.mesh));
   REQUIRE(first.size() == 1);
   // A vertex beside the first path's second vertex, farther from every side.
   const int beside =
       grid_vertex(n, first[0][1] % n == 4 ? 5 : first[0][1] % n, first[0][1] / n == 4 ? 5 : first[0][1] / n);
-  const auto paths = akvf::seam_paths(disk.mesh, {grid_vertex(n, 4, 4), beside, grid_vertex(n, 4, 4)});
+  const auto paths = akvf::seam_paths(disk.mesh, {grid_vertex(n, 4, 4), beside, grid_vertex(n, 4, 4)},
+                                      flat(disk.mesh));
   REQUIRE(paths.size() == 2);  // the repeated start lies on a path already
   const std::vector<int>& second = paths[1];
   CHECK(std::find(paths[0].begin(), paths[0].end(), second.back()) != paths[0].end());

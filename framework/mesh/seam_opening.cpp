@@ -24,9 +24,11 @@ std::vector<char> boundary_vertices(const Eigen::MatrixXi& F, int nv) {
 
 }  // namespace
 
-std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<int>& starts) {
+std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<int>& starts,
+                                         const std::vector<double>& energy) {
   const int nv = mesh.num_vertices();
-  std::vector<char> end = boundary_vertices(mesh.F, nv);
+  const std::vector<char> on_boundary = boundary_vertices(mesh.F, nv);
+  std::vector<char> end = on_boundary;
   // Neighbours from the faces' edges (an interior edge is listed twice).
   std::vector<std::vector<int>> neighbours(nv);
   for (int f = 0; f < mesh.num_faces(); ++f)
@@ -40,6 +42,16 @@ std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<
   std::vector<std::vector<int>> paths;
   using Item = std::pair<double, int>;
   for (int start : starts) {
+    if (on_boundary[start]) {
+      int inward = -1;
+      for (int w : neighbours[start])
+        if (!end[w] && (inward < 0 || energy[w] > energy[inward])) inward = w;
+      if (inward >= 0) {
+        end[inward] = 1;
+        paths.push_back({inward, start});
+      }
+      continue;
+    }
     if (end[start]) continue;
     std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
     distance[start] = 0;

@@ -23,12 +23,16 @@ struct SeamReport {
   int parted_charts = 0;                 // charts parted in two (split_through) to meet the bound
 };
 
-// Per start in turn, the shortest path (3D edge lengths) from it to its
-// chart's boundary or to an earlier path, through vertices on neither:
-// start, ..., an end vertex. A start on the boundary or an earlier path has
-// none (it is left out). The paths form trees, each meeting the boundary at
-// one vertex, so that opening them leaves every chart a disk.
-std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<int>& starts);
+// Per start in turn, a path of interior edges that opens it (3D edge
+// lengths): from an interior start, the shortest path to its chart's
+// boundary or to an earlier path, through vertices on neither: start, ...,
+// an end vertex; from a start on the boundary, the edge to its neighbour of
+// highest `energy` (per vertex) on neither: that neighbour, start. A start
+// on an earlier path, or on the boundary with no such neighbour, has none
+// (it is left out). The paths form trees, each meeting the boundary at one
+// vertex, so that opening them leaves every chart a disk.
+std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<int>& starts,
+                                         const std::vector<double>& energy);
 
 // Opens `disk` along the edges of `paths` (seam_paths'): its mesh,
 // input_vertex, boundary_loops, cut_edges, cut_length and the sources of the
