@@ -87,8 +87,7 @@ std::vector<int> seam_starts(const ParamSetup& setup, const std::vector<double>&
   std::vector<int> starts;
   for (int v = 0; v < nv; ++v) {
     const int p = peak[chart_of[v]];
-    if (p < 0 ? v == most[chart_of[v]] : candidate[v] && mean[v] >= 4 + kPeakShare * (mean[p] - 4))
-      starts.push_back(v);
+    if (p < 0 ? v == most[chart_of[v]] : candidate[v] && mean[v] >= 4 + kPeakShare * (mean[p] - 4)) starts.push_back(v);
   }
   std::stable_sort(starts.begin(), starts.end(), [&](int a, int b) { return mean[a] > mean[b]; });
   return starts;
@@ -224,10 +223,10 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
         return;
       }
       const std::vector<double> mean = vertex_means(*setup, energy);
-      const std::vector<std::vector<int>> paths = seam_paths(
-          setup->disk.mesh, seam_starts(*setup, mean, report.chart_distortion, config.max_distortion), mean);
+      const std::vector<std::vector<int>> paths =
+          seam_paths(setup->disk.mesh, seam_starts(*setup, mean, report.chart_distortion, config.max_distortion), mean);
       if (paths.empty()) {
-        report.stop_reason = "no interior vertex is left to cut from";
+        report.stop_reason = "no vertex is left to cut from";
         return;
       }
       report.seams += static_cast<int>(paths.size());

@@ -4,7 +4,8 @@
 # distortion"): the energy with the first cut alone, then with the seams,
 # as a Markdown table; also a generated sphere with thin spikes and a scene
 # of several components. --large adds bunny_closed subdivided twice
-# (midpoint subdivision, 111 456 faces; about 5 minutes).
+# (midpoint subdivision, 111 456 faces) and a smooth sphere of 131 072
+# faces (about 3 minutes).
 # Usage: bash scripts/seams.sh [--large]   (after scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -61,6 +62,9 @@ with open(sys.argv[2], "w") as f:
     f.writelines("3 %d %d %d\n" % t for t in F)
 PY
   meshes+=("$work/bunny_closed_x16.off")
+  # A smooth sphere as finely meshed (131 072 faces).
+  /usr/bin/python3 scripts/spiky_sphere.py "$work/sphere_x64.off" --smooth 7
+  meshes+=("$work/sphere_x64.off")
 fi
 for path in "${meshes[@]}"; do
   mesh=$(basename "$path")

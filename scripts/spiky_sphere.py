@@ -1,15 +1,18 @@
 """A sphere with thin spikes, whose flip-free maps wind over each other: an
 octahedron subdivided four times (midpoint, onto the unit sphere), every
 29th vertex pushed out to three times the radius (2048 faces), as OFF.
+With --smooth LEVELS: the sphere subdivided LEVELS times, no spikes
+(8 * 4^LEVELS faces).
 
-Usage: /usr/bin/python3 scripts/spiky_sphere.py OUT.off
+Usage: /usr/bin/python3 scripts/spiky_sphere.py OUT.off [--smooth LEVELS]
 """
 import math
 import sys
 
 V = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]
 F = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)]
-for _ in range(4):
+smooth = len(sys.argv) == 4 and sys.argv[2] == "--smooth"
+for _ in range(int(sys.argv[3]) if smooth else 4):
     mid, out = {}, []
 
     def m(a, b):
@@ -25,7 +28,8 @@ for _ in range(4):
         ab, bc, ca = m(a, b), m(b, c), m(c, a)
         out += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
     F = out
-V = [tuple(3 * c for c in v) if i % 29 == 9 else v for i, v in enumerate(V)]
+if not smooth:
+    V = [tuple(3 * c for c in v) if i % 29 == 9 else v for i, v in enumerate(V)]
 with open(sys.argv[1], "w") as f:
     f.write("OFF\n%d %d 0\n" % (len(V), len(F)))
     f.writelines("%.9g %.9g %.9g\n" % v for v in V)

@@ -88,8 +88,7 @@ TEST_CASE("a later seam ends where it meets an earlier one, so the seams form tr
   // A vertex beside the first path's second vertex, farther from every side.
   const int beside =
       grid_vertex(n, first[0][1] % n == 4 ? 5 : first[0][1] % n, first[0][1] / n == 4 ? 5 : first[0][1] / n);
-  const auto paths = akvf::seam_paths(disk.mesh, {grid_vertex(n, 4, 4), beside, grid_vertex(n, 4, 4)},
-                                      flat(disk.mesh));
+  const auto paths = akvf::seam_paths(disk.mesh, {grid_vertex(n, 4, 4), beside, grid_vertex(n, 4, 4)}, flat(disk.mesh));
   REQUIRE(paths.size() == 2);  // the repeated start lies on a path already
   const std::vector<int>& second = paths[1];
   CHECK(std::find(paths[0].begin(), paths[0].end(), second.back()) != paths[0].end());
