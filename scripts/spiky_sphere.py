@@ -12,6 +12,8 @@ import sys
 V = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]
 F = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)]
 smooth = len(sys.argv) == 4 and sys.argv[2] == "--smooth"
+if len(sys.argv) != 2 and not smooth:
+    sys.exit("usage: spiky_sphere.py OUT.off [--smooth LEVELS]")
 for _ in range(int(sys.argv[3]) if smooth else 4):
     mid, out = {}, []
 
