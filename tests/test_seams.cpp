@@ -131,7 +131,7 @@ TEST_CASE("--cut seams bounds every chart's symmetric Dirichlet energy, flip-fre
 TEST_CASE("a smooth sphere gets a few seams in one chart, not one-edge seams along its boundary") {
   // Were the peaks sought among interior vertices only, the vertex beside
   // each distorted boundary vertex would start a one-edge seam every round:
-  // 88 seams in 2 charts on this sphere (docs/notes/2026-11-28-seam-peaks-on-the-boundary.md).
+  // 88 seams in 2 charts on this sphere (docs/notes/2026-11-28-seam-peaks-and-switch-trials.md).
   const TriMesh mesh = akvf::test::sphere(5);
   akvf::ParameterizeOptions options;
   options.cut = akvf::Cut::kSeams;
