@@ -21,9 +21,9 @@ constexpr int kFutileRounds = 10;
 // The rounds that place seams only need to show where the distortion
 // peaks, not the converged map.
 constexpr double kRoundGradientTolerance = 1e-2;
-// A peak with less than this share of the largest peak's excess over 4 is
-// left to a later round: it may be the shoulder of the larger one, which
-// that one's seam relieves.
+// A peak with less than this share of the largest interior peak's excess
+// over 4 is left to a later round: it may be the shoulder of the larger
+// one, which that one's seam relieves.
 constexpr double kPeakShare = 0.5;
 // A seam's sides are parted by this share of their triangles' smallest
 // height before a globally injective run: apart, yet far from flipping.
@@ -46,14 +46,19 @@ std::vector<double> vertex_means(const ParamSetup& setup, const Eigen::VectorXd&
 // Where the round's seams start: in each chart above the bound, its
 // vertices whose energy (the area-weighted mean of their faces') is above
 // the bound too, at least all their neighbours' (the peaks of the
-// distortion) and at least kPeakShare of the chart's largest peak's excess
-// (a peak can only be the shoulder of one in its own chart), or, if there
-// is none, its most distorted interior vertex; most distorted first. A peak
-// on the boundary counts if it has an interior neighbour to cut toward (a
-// seam's tip is such a peak, where the distortion the seam has not relieved
-// concentrates): were boundary vertices left out, the interior vertex
-// beside each would count as a peak below them, and every round would
-// add one-edge seams all along the boundary.
+// distortion) and at least kPeakShare of the chart's largest interior
+// peak's excess (a peak can only be the shoulder of one in its own chart),
+// or, if there is none, of its largest peak on the boundary, or, if there is
+// none either, its most distorted interior vertex; most distorted first. A
+// peak on the boundary counts if it has an interior neighbour to cut toward
+// (a seam's tip is such a peak, where the distortion the seam has not
+// relieved concentrates): were boundary vertices left out, the interior
+// vertex beside each would count as a peak below them, and every round
+// would add one-edge seams all along the boundary. They are not the share's
+// measure while an interior peak is above the bound: a tip's energy grows
+// as the mesh is refined, as a crack tip's energy density grows as 1/r
+// toward it, and measured against it the interior peaks, whose long seams
+// lower the energy most, would wait while the tips grow one edge a round.
 std::vector<int> seam_starts(const ParamSetup& setup, const std::vector<double>& mean,
                              const std::vector<double>& chart_energy, double bound) {
   const TriMesh& mesh = setup.disk.mesh;
@@ -75,19 +80,24 @@ std::vector<int> seam_starts(const ParamSetup& setup, const std::vector<double>&
       for (int w : {mesh.F(f, (k + 1) % 3), mesh.F(f, (k + 2) % 3)})
         if (mean[w] > mean[v]) candidate[v] = 0;
     }
-  // Per chart above the bound: its largest peak above the bound, and its most distorted interior vertex.
-  std::vector<int> peak(chart_energy.size(), -1), most(chart_energy.size(), -1);
+  // Per chart above the bound: its largest interior peak and its largest
+  // boundary peak above the bound, and its most distorted interior vertex.
+  const std::size_t num_charts = chart_energy.size();
+  std::vector<int> interior_peak(num_charts, -1), boundary_peak(num_charts, -1), most(num_charts, -1);
+  auto raise = [&](int* largest, int v) {
+    if (*largest < 0 || mean[v] > mean[*largest]) *largest = v;
+  };
   for (int v = 0; v < nv; ++v) {
-    if (chart_energy[chart_of[v]] <= bound) continue;
-    int& m = most[chart_of[v]];
-    if (interior[v] && (m < 0 || mean[v] > mean[m])) m = v;
-    int& p = peak[chart_of[v]];
-    if (candidate[v] && mean[v] > bound && (p < 0 || mean[v] > mean[p])) p = v;
+    const int c = chart_of[v];
+    if (chart_energy[c] <= bound) continue;
+    if (interior[v]) raise(&most[c], v);
+    if (candidate[v] && mean[v] > bound) raise(interior[v] ? &interior_peak[c] : &boundary_peak[c], v);
   }
   std::vector<int> starts;
   for (int v = 0; v < nv; ++v) {
-    const int p = peak[chart_of[v]];
-    if (p < 0 ? v == most[chart_of[v]] : candidate[v] && mean[v] >= 4 + kPeakShare * (mean[p] - 4)) starts.push_back(v);
+    const int c = chart_of[v];
+    const int p = interior_peak[c] >= 0 ? interior_peak[c] : boundary_peak[c];
+    if (p < 0 ? v == most[c] : candidate[v] && mean[v] >= 4 + kPeakShare * (mean[p] - 4)) starts.push_back(v);
   }
   std::stable_sort(starts.begin(), starts.end(), [&](int a, int b) { return mean[a] > mean[b]; });
   return starts;
