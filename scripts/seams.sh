@@ -5,7 +5,7 @@
 # as a Markdown table; also a generated sphere with thin spikes and a scene
 # of several components. --large adds bunny_closed subdivided twice
 # (midpoint subdivision, 111 456 faces) and a smooth sphere of 131 072
-# faces (about 3 minutes).
+# faces (under 2 minutes).
 # Usage: bash scripts/seams.sh [--large]   (after scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
