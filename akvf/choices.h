@@ -37,7 +37,7 @@ enum class Cut {
 
 // Non-manifold input.
 enum class Repair {
-  kAuto,  // edges of 3+ faces opened, vertices split into one copy per fan
+  kAuto,  // edges of 3+ faces opened, vertices split into one copy per fan, faces reoriented
   kNone,  // refused, naming the edge or vertex
 };
 

@@ -283,8 +283,9 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
         choice_field<O>("repair", "repair", "repair",
                         "auto welds vertices at the same position in separate pieces, sets aside zero-area and "
                         "repeated faces (kept in the outputs), opens edges shared "
-                        "by three or more faces and splits non-manifold vertices into one copy per fan of faces "
-                        "(reported; the UV is then per corner); none refuses such meshes",
+                        "by three or more faces, splits non-manifold vertices into one copy per fan of faces "
+                        "(reported; the UV is then per corner) and reverses faces wound against their "
+                        "neighbours; none refuses such meshes",
                         &O::repair)));
     f.push_back(recomputes_start(
         choice_field<O>("injectivity", "injectivity", "injectivity",

@@ -364,7 +364,9 @@ Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
 
 Eigen::MatrixXi output_uv_faces(const ParamSetup& setup) {
   const DiskMesh& disk = setup.disk;
-  const Eigen::MatrixXi& F = disk.mesh.F;
+  // The corners in the file's winding: reversed faces turned back.
+  Eigen::MatrixXi F = disk.mesh.F;
+  for (int f : disk.reoriented_faces) std::swap(F(f, 1), F(f, 2));
   if (!disk.per_corner_uv()) return F.unaryExpr([&](int v) { return disk.input_vertex[v]; });
   if (disk.removed_faces.empty()) return F;
   int added = 0;

@@ -67,7 +67,8 @@ Json param_summary(const std::string& mesh_file, const ParameterizeOptions& opti
   record["distortion_energy"] = run.distortion_energy;
   if (setup.disk.cut) record["cut"] = cut_record(setup.disk, run.packing_splits);
   if (options.cut == Cut::kSeams) record["seams"] = seam_record(run.seams, options.max_distortion);
-  if (setup.disk.repair.any() || setup.disk.welding.welded > 0 || !setup.disk.removed_faces.empty())
+  if (setup.disk.repair.any() || setup.disk.welding.welded > 0 || !setup.disk.removed_faces.empty() ||
+      !setup.disk.reoriented_faces.empty())
     record["repair"] = repair_record(setup.disk);
   if (texture_uv_scale > 0) record["texture_uv_scale"] = texture_uv_scale;
   record["uv_coverage"] = coverage;

@@ -6,6 +6,7 @@
 
 #include "akvf/parameterize.h"
 #include "akvf/rest_geometry.h"
+#include "framework/mesh/initialization.h"
 #include "framework/mesh/mesh_subdivision.h"
 #include "framework/mesh/mesh_validation.h"
 #include "tests/test_support.h"
@@ -82,6 +83,32 @@ TEST_CASE("inconsistent orientation is rejected") {
   CHECK(validation_error(m) ==
         "m.obj: faces 0 and 1 traverse edge (0, 4) in the same direction (numbered from 0); faces must be consistently "
         "oriented");
+}
+
+TEST_CASE("repair: a face wound against its neighbours is reversed, its UV corners kept in the file's winding") {
+  TriMesh m = akvf::test::grid_disk(3, 3);
+  m.F.row(1) = Eigen::RowVector3i(m.F(1, 0), m.F(1, 2), m.F(1, 1));
+  const akvf::DiskMesh repaired = akvf::prepare_disk_mesh(m, "m.obj", false, true);
+  CHECK(repaired.reoriented_faces == std::vector<int>{1});  // the one face against most of its piece
+  CHECK(repaired.mesh.F.row(1) == Eigen::RowVector3i(m.F(1, 0), m.F(1, 2), m.F(1, 1)));
+  CHECK(repaired.warnings.back() ==
+        "m.obj: repaired: reversed 1 face wound against their neighbours (1) (numbered from 0); their UV triangles "
+        "run the other way in the file's winding (--repair none refuses such input)");
+  // Through the API (repair auto by default): every corner as the file has it;
+  // the reversed face is the one triangle whose UV runs the other way.
+  const akvf::ParameterizeResult r = akvf::parameterize(m.V, m.F);
+  CAPTURE(r.message);
+  CHECK(akvf::is_normal_termination(r.status));
+  CHECK(r.uv_faces == m.F);
+  CHECK(akvf::count_inverted_triangles(r.uv_faces, r.uv) == 1);
+  // A piece wound the other way throughout is left as it is.
+  TriMesh reversed = akvf::test::grid_disk(3, 3);
+  reversed.F.col(1).swap(reversed.F.col(2));
+  CHECK(akvf::prepare_disk_mesh(reversed, "m.obj", false, true).reoriented_faces.empty());
+  // Most of the piece decides: here the one face left as the file has it is reversed.
+  TriMesh mostly = reversed;
+  mostly.F.row(0) = m.F.row(0);
+  CHECK(akvf::prepare_disk_mesh(mostly, "m.obj", false, true).reoriented_faces == std::vector<int>{0});
 }
 
 TEST_CASE("a Moebius strip is said to be non-orientable") {

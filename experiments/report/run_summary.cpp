@@ -122,6 +122,13 @@ Json repair_record(const DiskMesh& disk) {
                  {"added_copies", repair.added_copies},
                  {"first_opened_edges", opened},
                  {"first_split_vertices", split}};
+  Json reversed = Json::array();
+  for (std::size_t i = 0; i < std::min<std::size_t>(disk.reoriented_faces.size(), 5); ++i) {
+    const int f = disk.reoriented_faces[i];
+    reversed.push_back((disk.input_face.empty() ? f : disk.input_face[f]) + index_base);
+  }
+  record["reversed_faces"] = disk.reoriented_faces.size();
+  record["first_reversed_faces"] = reversed;
   record["set_aside_faces"] = disk.removed_faces.size();
   record["first_set_aside_faces"] = first_set_aside;
   return record;

@@ -8,6 +8,7 @@
 
 #include "akvf/error.h"
 #include "framework/mesh/cut_to_disk.h"
+#include "framework/mesh/face_orientation.h"
 #include "framework/mesh/mesh_topology.h"
 #include "framework/mesh/unusable_faces.h"
 
@@ -162,47 +163,6 @@ void find_chart_boundaries(const std::string& name, DiskMesh* disk) {
   if (!disk->cut) disk->face_chart.assign(m.num_faces(), 0);
 }
 
-// Whether the faces can be given orientations that agree across every
-// shared edge (each edge used by at most two faces): a walk over the faces,
-// each neighbour flipped or not to agree with the face it is reached from;
-// a neighbour reached both ways (a Moebius strip, a Klein bottle) means no
-// such choice exists.
-bool orientable(const Eigen::MatrixXi& F) {
-  std::map<std::pair<int, int>, std::vector<std::pair<int, bool>>> edge_faces;  // (lo, hi) -> (face, lo -> hi)
-  for (int f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int u = F(f, k), v = F(f, (k + 1) % 3);
-      edge_faces[{std::min(u, v), std::max(u, v)}].push_back({f, u < v});
-    }
-  std::vector<std::vector<std::pair<int, bool>>> neighbours(F.rows());  // (face, same direction)
-  for (const auto& [edge, faces] : edge_faces)
-    if (faces.size() == 2) {
-      const bool same = faces[0].second == faces[1].second;
-      neighbours[faces[0].first].push_back({faces[1].first, same});
-      neighbours[faces[1].first].push_back({faces[0].first, same});
-    }
-  std::vector<int> flip(F.rows(), -1);
-  for (int start = 0; start < F.rows(); ++start) {
-    if (flip[start] >= 0) continue;
-    flip[start] = 0;
-    std::vector<int> stack = {start};
-    while (!stack.empty()) {
-      const int f = stack.back();
-      stack.pop_back();
-      for (const auto& [g, same] : neighbours[f]) {
-        const int wanted = flip[f] ^ static_cast<int>(same);
-        if (flip[g] < 0) {
-          flip[g] = wanted;
-          stack.push_back(g);
-        } else if (flip[g] != wanted) {
-          return false;
-        }
-      }
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 DiskMesh prepare_disk_mesh(const TriMesh& given, const std::string& name, bool cut, bool repair) {
@@ -239,13 +199,21 @@ DiskMesh prepare_disk_mesh(const TriMesh& given, const std::string& name, bool c
     if (out.repair.any()) out.warnings.push_back(repair_description(out.repair, name, b));
   }
 
-  const EdgeTopology topology = edge_topology(m.F);
+  EdgeTopology topology = edge_topology(m.F);
+  if (repair && !topology.misoriented_edge.empty()) {
+    out.reoriented_faces = reorient_faces(&out.mesh.F);
+    if (!out.reoriented_faces.empty()) {
+      out.warnings.push_back(reorientation_description(out.reoriented_faces, out.input_face, name, b));
+      topology = edge_topology(m.F);
+    }
+  }
   if (!topology.overused_edge.empty())
     throw ValidationError(name + ": edge (" + at_input(topology.overused_edge[0]) + ", " +
                           at_input(topology.overused_edge[1]) + ") is shared by " +
                           std::to_string(topology.overused_edge[2]) + " faces" + numbering_note(b) +
                           "; the mesh must be edge-manifold");
-  if (!topology.misoriented_edge.empty() && !orientable(m.F))
+  std::vector<char> flip;
+  if (!topology.misoriented_edge.empty() && !consistent_orientation(m.F, &flip))
     throw ValidationError(name +
                           ": the surface is non-orientable (like a Moebius strip or a Klein bottle): no choice "
                           "of face orientations agrees across every edge, so it has no UV map as one piece");

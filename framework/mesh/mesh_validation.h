@@ -32,6 +32,9 @@ struct DiskMesh {
   // corners' UVs taken from removed_corners.
   std::vector<int> input_face, removed_faces;
   std::vector<std::array<CornerSource, 3>> removed_corners;
+  // Mesh faces whose second and third corners were swapped to agree with
+  // their neighbours (repair asked for; face_orientation.h), ascending.
+  std::vector<int> reoriented_faces;
   Warnings warnings;
 
   int num_charts() const { return static_cast<int>(boundary_loops.size()); }
@@ -44,7 +47,8 @@ struct DiskMesh {
 // unreferenced vertices with a warning. With `repair`, exact duplicate
 // vertices are welded (vertex_welding.h), degenerate and
 // repeated faces set aside (unusable_faces.h), edges of three or more
-// faces opened and non-manifold vertices split (manifold_repair.h), each with
+// faces opened, non-manifold vertices split (manifold_repair.h) and faces
+// wound against their neighbours reversed (face_orientation.h), each with
 // a warning. With `cut`, a closed, multi-boundary, higher-genus or
 // multi-component manifold mesh is cut into disks (cut_to_disk.h); without,
 // it is refused with a message naming the option. Throws ValidationError

@@ -1,0 +1,81 @@
+#include "framework/mesh/face_orientation.h"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+#include "akvf/mesh.h"
+
+namespace akvf {
+
+bool consistent_orientation(const Eigen::MatrixXi& F, std::vector<char>* flip) {
+  const int nf = static_cast<int>(F.rows());
+  std::map<std::pair<int, int>, std::vector<std::pair<int, bool>>> edge_faces;  // (lo, hi) -> (face, lo -> hi)
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int u = F(f, k), v = F(f, (k + 1) % 3);
+      edge_faces[{std::min(u, v), std::max(u, v)}].push_back({f, u < v});
+    }
+  std::vector<std::vector<std::pair<int, bool>>> neighbours(nf);  // (face, same direction)
+  for (const auto& [edge, faces] : edge_faces)
+    if (faces.size() == 2) {
+      const bool same = faces[0].second == faces[1].second;
+      neighbours[faces[0].first].push_back({faces[1].first, same});
+      neighbours[faces[1].first].push_back({faces[0].first, same});
+    }
+  // A walk over each piece, each neighbour flipped or not to agree with the
+  // face it is reached from; one reached both ways has no agreeing choice.
+  std::vector<int> turn(nf, -1);
+  std::vector<int> piece;
+  for (int start = 0; start < nf; ++start) {
+    if (turn[start] >= 0) continue;
+    turn[start] = 0;
+    piece.assign(1, start);
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      const int f = piece[i];
+      for (const auto& [g, same] : neighbours[f]) {
+        const int wanted = turn[f] ^ static_cast<int>(same);
+        if (turn[g] < 0) {
+          turn[g] = wanted;
+          piece.push_back(g);
+        } else if (turn[g] != wanted) {
+          return false;
+        }
+      }
+    }
+    // The piece keeps the winding most of its faces have.
+    const auto turned = std::count_if(piece.begin(), piece.end(), [&](int f) { return turn[f] == 1; });
+    if (2 * static_cast<std::size_t>(turned) > piece.size())
+      for (int f : piece) turn[f] ^= 1;
+  }
+  flip->assign(nf, 0);
+  for (int f = 0; f < nf; ++f) (*flip)[f] = static_cast<char>(turn[f]);
+  return true;
+}
+
+std::vector<int> reorient_faces(Eigen::MatrixXi* F) {
+  std::vector<char> flip;
+  std::vector<int> reversed;
+  if (!consistent_orientation(*F, &flip)) return reversed;
+  for (int f = 0; f < F->rows(); ++f)
+    if (flip[f]) {
+      std::swap((*F)(f, 1), (*F)(f, 2));
+      reversed.push_back(f);
+    }
+  return reversed;
+}
+
+std::string reorientation_description(const std::vector<int>& reversed, const std::vector<int>& input_face,
+                                      const std::string& name, int index_base) {
+  constexpr std::size_t kListed = 5;
+  std::string faces;
+  for (std::size_t i = 0; i < std::min(reversed.size(), kListed); ++i)
+    faces += (i > 0 ? ", " : "") + file_number(input_face.empty() ? reversed[i] : input_face[reversed[i]], index_base);
+  const std::size_t count = reversed.size();
+  return name + ": repaired: reversed " + std::to_string(count) + (count == 1 ? " face" : " faces") +
+         " wound against their neighbours (" + faces + (count > kListed ? ", ..." : "") + ")" +
+         numbering_note(index_base) +
+         "; their UV triangles run the other way in the file's winding (--repair none refuses such input)";
+}
+
+}  // namespace akvf
