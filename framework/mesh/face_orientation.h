@@ -2,7 +2,8 @@
 // Faces wound the other way than their neighbours (akvf param --repair
 // auto): each connected piece (faces joined across edges of exactly two
 // faces) keeps the winding most of its faces have, and the others are
-// reversed, as libigl's bfs_orient or Blender's "Recalculate Normals" do.
+// reversed (libigl's bfs_orient makes a piece agree with its first face
+// instead; either way the whole surface agrees).
 #include <Eigen/Core>
 #include <string>
 #include <vector>
