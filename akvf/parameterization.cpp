@@ -364,9 +364,14 @@ Eigen::MatrixXd output_uv(const ParamSetup& setup, const Eigen::VectorXd& x) {
 
 Eigen::MatrixXi output_uv_faces(const ParamSetup& setup) {
   const DiskMesh& disk = setup.disk;
-  // The corners in the file's winding: reversed faces turned back.
-  Eigen::MatrixXi F = disk.mesh.F;
-  for (int f : disk.reoriented_faces) std::swap(F(f, 1), F(f, 2));
+  // The corners in the file's winding: reversed faces turned back (a copy
+  // only then).
+  Eigen::MatrixXi turned_back;
+  if (!disk.reoriented_faces.empty()) {
+    turned_back = disk.mesh.F;
+    for (int f : disk.reoriented_faces) std::swap(turned_back(f, 1), turned_back(f, 2));
+  }
+  const Eigen::MatrixXi& F = disk.reoriented_faces.empty() ? disk.mesh.F : turned_back;
   if (!disk.per_corner_uv()) return F.unaryExpr([&](int v) { return disk.input_vertex[v]; });
   if (disk.removed_faces.empty()) return F;
   int added = 0;

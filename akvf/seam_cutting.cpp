@@ -56,9 +56,9 @@ std::vector<double> vertex_means(const ParamSetup& setup, const Eigen::VectorXd&
 // vertex beside each would count as a peak below them, and every round
 // would add one-edge seams all along the boundary. They are not the share's
 // measure while an interior peak is above the bound: a tip's energy grows
-// as the mesh is refined, as a crack tip's energy density grows as 1/r
-// toward it, and measured against it the interior peaks, whose long seams
-// lower the energy most, would wait while the tips grow one edge a round.
+// as the mesh is refined (a crack tip's energy density grows as 1/r toward
+// it), and measured against it the interior peaks would wait while the
+// tips grow one edge a round.
 std::vector<int> seam_starts(const ParamSetup& setup, const std::vector<double>& mean,
                              const std::vector<double>& chart_energy, double bound) {
   const TriMesh& mesh = setup.disk.mesh;

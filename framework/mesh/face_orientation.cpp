@@ -53,10 +53,8 @@ bool consistent_orientation(const Eigen::MatrixXi& F, std::vector<char>* flip) {
   return true;
 }
 
-std::vector<int> reorient_faces(Eigen::MatrixXi* F) {
-  std::vector<char> flip;
+std::vector<int> reverse_faces(const std::vector<char>& flip, Eigen::MatrixXi* F) {
   std::vector<int> reversed;
-  if (!consistent_orientation(*F, &flip)) return reversed;
   for (int f = 0; f < F->rows(); ++f)
     if (flip[f]) {
       std::swap((*F)(f, 1), (*F)(f, 2));

@@ -17,9 +17,8 @@ namespace akvf {
 bool consistent_orientation(const Eigen::MatrixXi& F, std::vector<char>* flip);
 
 // Reverses (swaps the second and third corners of) the faces of F that
-// consistent_orientation flips; returns them, ascending (none if the
-// surface is not orientable).
-std::vector<int> reorient_faces(Eigen::MatrixXi* F);
+// `flip` (consistent_orientation's) marks; returns them, ascending.
+std::vector<int> reverse_faces(const std::vector<char>& flip, Eigen::MatrixXi* F);
 
 // The reversal in words, for a warning: the first few faces numbered as the
 // file numbers them (face f is input face input_face[f]; empty: f itself).

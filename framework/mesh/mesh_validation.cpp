@@ -199,20 +199,19 @@ DiskMesh prepare_disk_mesh(const TriMesh& given, const std::string& name, bool c
   }
 
   EdgeTopology topology = edge_topology(m.F);
-  if (repair && !topology.misoriented_edge.empty()) {
-    out.reoriented_faces = reorient_faces(&out.mesh.F);
-    if (!out.reoriented_faces.empty()) {
-      out.warnings.push_back(reorientation_description(out.reoriented_faces, out.input_face, name, b));
-      topology = edge_topology(m.F);
-    }
+  std::vector<char> flip;
+  const bool orientable = topology.misoriented_edge.empty() || consistent_orientation(m.F, &flip);
+  if (repair && orientable && !topology.misoriented_edge.empty()) {
+    out.reoriented_faces = reverse_faces(flip, &out.mesh.F);
+    out.warnings.push_back(reorientation_description(out.reoriented_faces, out.input_face, name, b));
+    topology = edge_topology(m.F);
   }
   if (!topology.overused_edge.empty())
     throw ValidationError(name + ": edge (" + at_input(topology.overused_edge[0]) + ", " +
                           at_input(topology.overused_edge[1]) + ") is shared by " +
                           std::to_string(topology.overused_edge[2]) + " faces" + numbering_note(b) +
                           "; the mesh must be edge-manifold");
-  std::vector<char> flip;
-  if (!topology.misoriented_edge.empty() && !consistent_orientation(m.F, &flip))
+  if (!orientable)
     throw ValidationError(name +
                           ": the surface is non-orientable (like a Moebius strip or a Klein bottle): no choice "
                           "of face orientations agrees across every edge, so it has no UV map as one piece");
