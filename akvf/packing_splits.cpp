@@ -57,34 +57,42 @@ PackingCuts cut_for_packing(PackingCuts from, double gutter, const ParamConfig& 
                             const Eigen::VectorXd& energy, const Eigen::VectorXd& weight) {
   DiskMesh& disk = from.disk;
   Eigen::MatrixXd& UV = from.uv;
-  // A cut frees at most the area its chart's hull leaves empty, so a chart
-  // that leaves less than the gain asked of the square (least_waste below)
-  // cannot give it. The square is at least the map's area: if no chart
-  // leaves that share of it, no packing is even tried.
+  // A least-waste cut frees at most the area its chart's hull leaves empty,
+  // so a chart that leaves less than the gain asked of the square
+  // (least_waste below) is not tried for one; one chart that leaves less
+  // is not even packed.
   const double area = map_area(disk.mesh.F, UV);
   std::vector<double> waste = chart_waste(disk.mesh.F, UV, disk.face_chart, disk.num_charts());
-  if (*std::max_element(waste.begin(), waste.end()) < (kLeastGain - 1) * area) return from;
+  // In an atlas, a round where no hull's waste gave a cut is tried again
+  // with even pieces, largest chart first: convex charts too large or too
+  // long for the square beside the others (two equal squares fill half of
+  // it) pack closer cut through their middle. One chart is not cut so: its
+  // pieces would serve the packing alone.
+  const bool atlas = disk.num_charts() > 1;
+  if (!atlas && waste[0] < (kLeastGain - 1) * area) return from;
   double coverage = packed_coverage(disk, UV, gutter);
   // The best packing so far; up to kLookAhead cuts past it are made when no
   // cut raises its coverage: a chart wide and tall may need a cut across
   // each before the square shrinks.
   PackingCuts best{disk, UV, coverage, from.splits};
   int splits = from.splits;
+  bool even = false;
   while (splits < kMaxSplits && splits - best.splits <= kLookAhead && best.coverage < config.min_coverage &&
          !interrupt_requested()) {
     const int charts = disk.num_charts();
     if (splits > 0) waste = chart_waste(disk.mesh.F, UV, disk.face_chart, charts);
+    const std::vector<double> size = even ? chart_areas(disk.mesh.F, UV, disk.face_chart, charts) : waste;
     std::vector<int> order(charts);
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return waste[a] > waste[b]; });
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size[a] > size[b]; });
     // The cut that raises the coverage most, if one raises it kLeastGain
     // over the best; else the one that leaves the least hull area empty.
     double gained = 0, freed = 0;
     DiskMesh next_disk;
     Eigen::MatrixXd next_uv;
     const double least_waste = (kLeastGain - 1) * area / best.coverage;
-    for (int i = 0; i < std::min(charts, kChartsPerRound) && gained == 0 && waste[order[i]] >= least_waste &&
-                    !interrupt_requested();
+    for (int i = 0; i < std::min(charts, kChartsPerRound) && gained == 0 &&
+                    (even || waste[order[i]] >= least_waste) && !interrupt_requested();
          ++i) {
       const int chart = order[i];
       const auto keeps_bound = [&](const ChartSplit& s) {
@@ -96,7 +104,8 @@ PackingCuts cut_for_packing(PackingCuts from, double gutter, const ParamConfig& 
       };
       // The cuts' packings on every core; compared in order, as one thread would.
       const std::vector<ChartSplit> cuts =
-          straight_splits(disk.mesh.F, UV, disk.face_chart, charts, chart, kCutsPerChart, keeps_bound);
+          straight_splits(disk.mesh.F, UV, disk.face_chart, charts, chart, kCutsPerChart, keeps_bound,
+                          even ? SplitRank::kEvenPieces : SplitRank::kLeastWaste);
       const int count = static_cast<int>(cuts.size());
       std::vector<DiskMesh> trials(count, disk);
       std::vector<Eigen::MatrixXd> trial_uvs(count);
@@ -111,7 +120,7 @@ PackingCuts cut_for_packing(PackingCuts from, double gutter, const ParamConfig& 
         const ChartSplit& cut = cuts[t];
         const double trial_coverage = trial_coverages[t];
         const bool gains = trial_coverage >= kLeastGain * std::max(best.coverage, gained);
-        const bool frees = gained == 0 && waste[chart] - cut.waste > freed;
+        const bool frees = !even && gained == 0 && waste[chart] - cut.waste > freed;
         if (!gains && !frees) continue;
         if (gains)
           gained = trial_coverage;
@@ -122,7 +131,12 @@ PackingCuts cut_for_packing(PackingCuts from, double gutter, const ParamConfig& 
         next_uv = std::move(trial_uvs[t]);
       }
     }
-    if (gained == 0 && freed == 0) break;
+    if (gained == 0 && freed == 0) {
+      if (even || !atlas) break;
+      even = true;
+      continue;
+    }
+    even = false;
     disk = std::move(next_disk);
     UV = std::move(next_uv);
     ++splits;

@@ -399,6 +399,31 @@ TEST_CASE("charts split for the packing: the map kept, the square better covered
   CHECK(split.energy() == whole.energy());
 }
 
+TEST_CASE("two equal squares, convex so wasting no hull area, are cut through the middle for the packing") {
+  // Side by side they fill half of the square, whatever their turns.
+  const TriMesh squares = akvf::test::side_by_side(akvf::test::grid_disk(9, 9), akvf::test::grid_disk(9, 9), 12);
+  const TriMesh square = akvf::test::grid_disk(9, 9);
+  const Eigen::MatrixXd UV = square.V.leftCols(2);
+  const std::vector<int> one(square.num_faces(), 0);
+  const auto accept = [](const akvf::ChartSplit&) { return true; };
+  const auto even = akvf::straight_splits(square.F, UV, one, 1, 0, 4, accept, akvf::SplitRank::kEvenPieces);
+  REQUIRE(even.size() == 4);
+  const std::vector<double> area = akvf::chart_areas(square.F, UV, even[0].face_chart, even[0].num_charts);
+  REQUIRE(area.size() == 2);
+  CHECK(area[0] == doctest::Approx(area[1]));  // halves
+  for (std::size_t i = 1; i < even.size(); ++i) CHECK(even[i].rank >= even[i - 1].rank);
+  // By waste alone every cut of a square ties at none, the first found first.
+  const auto least = akvf::straight_splits(square.F, UV, one, 1, 0, 1, accept);
+  CHECK(least[0].waste == doctest::Approx(0).epsilon(1e-12));
+  akvf::ParameterizeOptions options;
+  options.cut = akvf::Cut::kAuto;
+  const akvf::ParameterizeResult r = akvf::parameterize(squares.V, squares.F, options);
+  CHECK(r.packing_splits > 0);
+  CHECK(akvf::square_coverage(r.uv_faces, r.uv) >= options.min_coverage);
+  CHECK(akvf::count_inverted_triangles(r.uv_faces, r.uv) == 0);
+  CHECK_FALSE(any_overlap(r.uv, r.uv_faces));
+}
+
 TEST_CASE("without the cut the default is unchanged: uv per vertex, uv_faces = F") {
   const TriMesh grid = akvf::test::bumpy_disk(8, 8);
   akvf::ParameterizeOptions options;

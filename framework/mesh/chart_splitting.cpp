@@ -47,9 +47,17 @@ std::vector<double> chart_waste(const Eigen::MatrixXi& F, const Eigen::MatrixXd&
   return waste_of(F, UV, faces);
 }
 
+std::vector<double> chart_areas(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, const std::vector<int>& face_chart,
+                                int num_charts) {
+  std::vector<double> area(num_charts, 0);
+  for (int f = 0; f < F.rows(); ++f) area[face_chart[f]] += triangle_area(F, UV, f);
+  return area;
+}
+
 std::vector<ChartSplit> straight_splits(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV,
                                         const std::vector<int>& face_chart, int num_charts, int chart, int count,
-                                        const std::function<bool(const ChartSplit&)>& accept) {
+                                        const std::function<bool(const ChartSplit&)>& accept,
+                                        SplitRank rank) {
   std::vector<int> faces;
   for (int f = 0; f < F.rows(); ++f)
     if (face_chart[f] == chart) faces.push_back(f);
@@ -125,12 +133,16 @@ std::vector<ChartSplit> straight_splits(const Eigen::MatrixXi& F, const Eigen::M
         }
       }
       double total = 0;
+      double largest = 0, smallest = std::numeric_limits<double>::infinity();
       for (std::size_t p = 0; p < pieces.size(); ++p) {
         double area = 0;
         for (int i : pieces[p]) area += face_area[i];
         total += std::max(0.0, polygon_area(convex_hull(std::move(outline[p]))) - area);
+        largest = std::max(largest, area);
+        smallest = std::min(smallest, area);
       }
-      if (static_cast<int>(best.size()) == count && total >= best.back().waste) continue;
+      const double key = rank == SplitRank::kEvenPieces ? total + (largest - smallest) : total;
+      if (static_cast<int>(best.size()) == count && key >= best.back().rank) continue;
       // A disk: V - E + F = 1 (connected and part of a disk, so genus 0;
       // then one boundary loop), with E = (3 F + boundary edges) / 2.
       bool disks = true;
@@ -155,9 +167,10 @@ std::vector<ChartSplit> straight_splits(const Eigen::MatrixXi& F, const Eigen::M
         ++split.num_charts;
       }
       split.waste = total;
+      split.rank = key;
       if (!accept(split)) continue;
-      const auto at = std::upper_bound(best.begin(), best.end(), total,
-                                       [](double waste, const ChartSplit& other) { return waste < other.waste; });
+      const auto at = std::upper_bound(best.begin(), best.end(), key,
+                                       [](double k, const ChartSplit& other) { return k < other.rank; });
       best.insert(at, std::move(split));
       if (static_cast<int>(best.size()) > count) best.pop_back();
     }
