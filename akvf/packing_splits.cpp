@@ -91,8 +91,8 @@ PackingCuts cut_for_packing(PackingCuts from, double gutter, const ParamConfig& 
     DiskMesh next_disk;
     Eigen::MatrixXd next_uv;
     const double least_waste = (kLeastGain - 1) * area / best.coverage;
-    for (int i = 0; i < std::min(charts, kChartsPerRound) && gained == 0 &&
-                    (even || waste[order[i]] >= least_waste) && !interrupt_requested();
+    for (int i = 0; i < std::min(charts, kChartsPerRound) && gained == 0 && (even || waste[order[i]] >= least_waste) &&
+                    !interrupt_requested();
          ++i) {
       const int chart = order[i];
       const auto keeps_bound = [&](const ChartSplit& s) {

@@ -105,9 +105,11 @@ std::vector<int> seam_starts(const ParamSetup& setup, const std::vector<double>&
 
 // A round's row as the whole run's: later rounds continue the numbering and
 // the clock of the earlier ones (`iterations`, `seconds` so far), and their
-// row 0, the previous round's end, is left out (false).
-bool shift_row(const IterationSummary& row, int iterations, double seconds, IterationSummary* moved) {
-  if (iterations > 0 && row.iteration == 0) return false;
+// row 0, the previous round's end, is left out (false) unless the round
+// starts elsewhere (`restart`).
+bool shift_row(const IterationSummary& row, int iterations, double seconds, IterationSummary* moved,
+               bool restart = false) {
+  if (iterations > 0 && row.iteration == 0 && !restart) return false;
   *moved = row;
   moved->iteration += iterations;
   moved->seconds += seconds;
@@ -178,12 +180,14 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
     round_callbacks.push_back(shifted(callback, &iterations, &seconds));
   ParamRun run;
   // Each round may take max_iterations; the time limit is for all of them.
-  auto optimize = [&](ParamConfig round, bool near_minimum = false) {
+  // `restart`: from a map other than the last round's end, whose row 0 the
+  // trace then keeps.
+  auto optimize = [&](ParamConfig round, bool near_minimum = false, bool restart = false) {
     round.optimizer.time_limit = std::max(config.optimizer.time_limit - seconds, 1e-9);
     run = optimize_from_start(*setup, round, round_callbacks, near_minimum);
     for (const IterationSummary& row : run.result.trace) {
       IterationSummary moved;
-      if (shift_row(row, iterations, seconds, &moved)) all.trace.push_back(moved);
+      if (shift_row(row, iterations, seconds, &moved, restart)) all.trace.push_back(moved);
     }
     iterations = all.trace.back().iteration;
     seconds = all.trace.back().seconds;
@@ -313,16 +317,30 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
     add_seams(last, flip_free ? iterations + iterations_flip_free : std::numeric_limits<int>::max());
     if (running() && !report.bound_met && flip_free) {
       // The flip-free map met the bound, but no globally injective map of
-      // its charts was found that does: its charts are cut instead where
-      // the flip-free map lies over itself, and each piece goes on from it.
+      // its charts was found that does (the barrier holds apart the sides
+      // of seams the flip-free map left touching). Taken flip-free to the
+      // gradient asked, it is kept if it still meets the bound and its
+      // boundary crosses itself nowhere: then it is injective as it is
+      // (start_at).
       *setup = *flip_free;
       report = flip_free_report;
-      std::vector<int> pieces;
-      const int count = overlap_free_pieces(setup->disk.mesh.F, unstack_uv(flip_free_x), setup->disk.face_chart,
-                                            setup->disk.num_charts(), &pieces);
-      report.overlap_pieces = count - setup->disk.num_charts();
-      go_on(last, split_charts(&setup->disk, pieces, count), flip_free_x);
-      add_seams(last, std::numeric_limits<int>::max());
+      ParamConfig polish = last;
+      polish.global_injectivity = false;
+      setup->x0 = flip_free_x;
+      optimize(polish, true, true);
+      measure_charts();
+      if (running() && !(report.bound_met && setup->boundary_contact->count_crossings(all.x) == 0)) {
+        // Else its charts are cut where the flip-free map lies over
+        // itself, and each piece goes on from it.
+        *setup = *flip_free;
+        report = flip_free_report;
+        std::vector<int> pieces;
+        const int count = overlap_free_pieces(setup->disk.mesh.F, unstack_uv(flip_free_x), setup->disk.face_chart,
+                                              setup->disk.num_charts(), &pieces);
+        report.overlap_pieces = count - setup->disk.num_charts();
+        go_on(last, split_charts(&setup->disk, pieces, count), flip_free_x);
+        add_seams(last, std::numeric_limits<int>::max());
+      }
     }
     part_charts(last);
   }

@@ -7,7 +7,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 
+#include "akvf/mesh_io.h"
 #include "akvf/parameterize.h"
 #include "framework/mesh/initialization.h"
 #include "framework/mesh/mesh_topology.h"
@@ -236,6 +238,43 @@ TEST_CASE("a chart whose map winds over itself is cut into disks that do not ove
     CHECK(akvf::count_components(piece, UV.rows()) == 1);
     CHECK(static_cast<int>(vertices.size()) - akvf::edge_topology(piece).num_edges + piece.rows() == 1);
   }
+}
+
+TEST_CASE("a CAD-like cylinder keeps its flip-free map where the barrier alone holds the bound off") {
+  // Caps of 64 sides and one row of quads ten times as tall as the radius,
+  // as a CAD export writes them (the reader triangulates the polygons). The
+  // flip-free rounds meet the bound with the caps' seams left touching the
+  // side; the barrier then holds those sides apart and the energy above the
+  // bound, while the flip-free map's boundary crosses itself nowhere. It was
+  // parted into 54 charts (docs/notes/2026-11-28-touching-seams-and-even-cuts.md).
+  const int n = 64;
+  std::ostringstream obj;
+  for (int level = 0; level < 2; ++level)
+    for (int i = 0; i < n; ++i)
+      obj << "v " << std::cos(2 * M_PI * i / n) << " " << std::sin(2 * M_PI * i / n) << " " << 10 * level << "\n";
+  obj << "f";
+  for (int i = n; i >= 1; --i) obj << " " << i;
+  obj << "\nf";
+  for (int i = n + 1; i <= 2 * n; ++i) obj << " " << i;
+  obj << "\n";
+  for (int i = 0; i < n; ++i)
+    obj << "f " << i + 1 << " " << (i + 1) % n + 1 << " " << n + (i + 1) % n + 1 << " " << n + i + 1 << "\n";
+  std::istringstream in(obj.str());
+  akvf::Warnings warnings;
+  const TriMesh cylinder = akvf::read_obj(in, "cylinder.obj", &warnings);
+  akvf::ParameterizeOptions options;
+  options.cut = akvf::Cut::kSeams;
+  const akvf::ParameterizeResult r = akvf::parameterize(cylinder.V, cylinder.F, options);
+  CAPTURE(r.message);
+  CHECK(akvf::is_normal_termination(r.status));
+  CHECK(r.distortion_bounded);
+  CHECK(r.chart_distortion.size() == 1);
+  CHECK(r.boundary_crossings == 0);
+  CHECK(r.overlap_fraction == 0);
+  CHECK(akvf::count_inverted_triangles(r.uv_faces, r.uv) == 0);
+  // The trace ends at the map returned.
+  REQUIRE_FALSE(r.trace.empty());
+  CHECK(r.trace.back().energy == doctest::Approx(r.distortion_energy).epsilon(1e-12));
 }
 
 TEST_CASE("--cut seams on a sphere with spikes: the bound in every chart, no overlap, by seams or by pieces") {

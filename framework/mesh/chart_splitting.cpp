@@ -56,8 +56,7 @@ std::vector<double> chart_areas(const Eigen::MatrixXi& F, const Eigen::MatrixXd&
 
 std::vector<ChartSplit> straight_splits(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV,
                                         const std::vector<int>& face_chart, int num_charts, int chart, int count,
-                                        const std::function<bool(const ChartSplit&)>& accept,
-                                        SplitRank rank) {
+                                        const std::function<bool(const ChartSplit&)>& accept, SplitRank rank) {
   std::vector<int> faces;
   for (int f = 0; f < F.rows(); ++f)
     if (face_chart[f] == chart) faces.push_back(f);
