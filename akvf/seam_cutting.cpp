@@ -238,7 +238,8 @@ ParamRun run_with_seams(const ParamSetup& start, const ParamConfig& config,
       }
       const std::vector<double> mean = vertex_means(*setup, energy);
       const std::vector<std::vector<int>> paths =
-          seam_paths(setup->disk.mesh, seam_starts(*setup, mean, report.chart_distortion, config.max_distortion), mean);
+          seam_paths(setup->disk.mesh, seam_starts(*setup, mean, report.chart_distortion, config.max_distortion), mean,
+                     config.max_distortion);
       if (paths.empty()) {
         report.stop_reason = "no vertex is left to cut from";
         return;

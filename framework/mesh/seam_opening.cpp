@@ -9,12 +9,59 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include <Eigen/Geometry>
+
 #include "framework/mesh/corner_copies.h"
 #include "framework/mesh/mesh_topology.h"
 
 namespace akvf {
 
 namespace {
+
+// A crease: faces whose normals differ by more than this (the angle at which
+// Blender's auto smooth starts to show an edge as sharp); a walk along
+// creases also turns by less at each vertex.
+constexpr double kCreaseAngle = M_PI / 6;
+
+// Whether an edge lies on a feature line: the normals of its two faces more
+// than kCreaseAngle apart, and neither face as sharp across its other edges
+// (a feature line parts two smooth sides; a crease among creases is the
+// surface's noise). The edges' faces are listed at the first question.
+class Creases {
+ public:
+  explicit Creases(const TriMesh& mesh) : mesh_(mesh) {}
+
+  bool operator()(int a, int b) {
+    const int nv = mesh_.num_vertices();
+    if (edge_faces_.empty())
+      for (int f = 0; f < mesh_.num_faces(); ++f)
+        for (int k = 0; k < 3; ++k)
+          edge_faces_[undirected_edge_key(mesh_.F(f, k), mesh_.F(f, (k + 1) % 3), nv)].push_back(f);
+    const std::int64_t key = undirected_edge_key(a, b, nv);
+    if (!sharp(key)) return false;
+    for (int f : edge_faces_[key])
+      for (int k = 0; k < 3; ++k)
+        if (const std::int64_t other = undirected_edge_key(mesh_.F(f, k), mesh_.F(f, (k + 1) % 3), nv);
+            other != key && sharp(other))
+          return false;
+    return true;
+  }
+
+ private:
+  bool sharp(std::int64_t edge) {
+    const std::vector<int>& faces = edge_faces_[edge];
+    return faces.size() == 2 && normal(faces[0]).dot(normal(faces[1])) < std::cos(kCreaseAngle);
+  }
+
+  Eigen::Vector3d normal(int f) const {
+    const Eigen::Vector3d p = mesh_.V.row(mesh_.F(f, 0)), q = mesh_.V.row(mesh_.F(f, 1)),
+                          r = mesh_.V.row(mesh_.F(f, 2));
+    return (q - p).cross(r - p).normalized();
+  }
+
+  const TriMesh& mesh_;
+  std::unordered_map<std::int64_t, std::vector<int>> edge_faces_;
+};
 
 std::vector<char> boundary_vertices(const Eigen::MatrixXi& F, int nv) {
   std::vector<char> on_boundary(nv, 0);
@@ -25,7 +72,7 @@ std::vector<char> boundary_vertices(const Eigen::MatrixXi& F, int nv) {
 }  // namespace
 
 std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<int>& starts,
-                                         const std::vector<double>& energy) {
+                                         const std::vector<double>& energy, double crease_walk_above) {
   const int nv = mesh.num_vertices();
   const std::vector<char> on_boundary = boundary_vertices(mesh.F, nv);
   std::vector<char> end = on_boundary;
@@ -37,6 +84,7 @@ std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<
       neighbours[a].push_back(b);
       neighbours[b].push_back(a);
     }
+  Creases crease(mesh);
   std::vector<double> distance(nv, std::numeric_limits<double>::infinity());
   std::vector<int> parent(nv, -1), reached;
   std::vector<std::vector<int>> paths;
@@ -48,7 +96,26 @@ std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<
         if (!end[w] && (inward < 0 || energy[w] > energy[inward])) inward = w;
       if (inward >= 0) {
         end[inward] = 1;
-        paths.push_back({inward, start});
+        std::vector<int> path{start, inward};
+        for (int w = inward, before = -1; energy[w] > crease_walk_above;) {
+          int next = -1;
+          const auto straight_on = [&](int u) {
+            if (before < 0) return true;
+            const Eigen::Vector3d along = (mesh.V.row(w) - mesh.V.row(before)).normalized();
+            return along.dot((mesh.V.row(u) - mesh.V.row(w)).normalized()) > std::cos(kCreaseAngle);
+          };
+          for (int u : neighbours[w])
+            if (!end[u] && energy[u] > crease_walk_above && (next < 0 || energy[u] > energy[next]) && crease(w, u) &&
+                straight_on(u))
+              next = u;
+          if (next < 0) break;
+          end[next] = 1;
+          path.push_back(next);
+          before = w;
+          w = next;
+        }
+        std::reverse(path.begin(), path.end());
+        paths.push_back(std::move(path));
       }
       continue;
     }

@@ -4,6 +4,7 @@
 // chart opened along it (a slit: the chart stays a disk, its boundary loop
 // now running down one side of the path and back up the other).
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -29,10 +30,17 @@ struct SeamReport {
 // an end vertex; from a start on the boundary, the edge to its neighbour of
 // highest `energy` (per vertex) on neither: that neighbour, start. A start
 // on an earlier path, or on the boundary with no such neighbour, has none
-// (it is left out). The paths form trees, each meeting the boundary at one
-// vertex, so that opening them leaves every chart a disk.
+// (it is left out). From a boundary start the path goes on, an edge at a
+// time, to the neighbour of highest energy on neither while that energy is
+// above `crease_walk_above` and the edge lies on a feature line (its faces'
+// normals more than 30° apart, their other edges not), turning by less
+// than 30° after its first such edge: a seam along a sharp edge is not
+// seen, and the distortion of a rim (a cylinder's cap) lies all along it.
+// The paths form trees, each meeting the boundary at one vertex, so that
+// opening them leaves every chart a disk.
 std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<int>& starts,
-                                         const std::vector<double>& energy);
+                                         const std::vector<double>& energy,
+                                         double crease_walk_above = std::numeric_limits<double>::infinity());
 
 // Opens `disk` along the edges of `paths` (seam_paths'): its mesh,
 // input_vertex, boundary_loops, cut_edges, cut_length and the sources of the
