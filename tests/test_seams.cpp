@@ -294,10 +294,11 @@ TEST_CASE("a CAD-like cylinder ends in one chart: seams along its rims, the flip
     polygons << side;
     fans << side;
   }
-  for (const auto& [caps, obj] :
+  for (const auto& cylinder_obj :
        {std::pair{std::string("polygons"), polygons.str()}, std::pair{std::string("fans"), fans.str()}}) {
+    const std::string& caps = cylinder_obj.first;
     CAPTURE(caps);
-    std::istringstream in(obj);
+    std::istringstream in(cylinder_obj.second);
     akvf::Warnings warnings;
     const TriMesh cylinder = akvf::read_obj(in, "cylinder.obj", &warnings);
     akvf::ParameterizeOptions options;
