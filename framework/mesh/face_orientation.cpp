@@ -1,28 +1,29 @@
 #include "framework/mesh/face_orientation.h"
 
 #include <algorithm>
-#include <map>
+#include <array>
 #include <utility>
 
 #include "akvf/mesh.h"
+#include "framework/mesh/mesh_topology.h"
 
 namespace akvf {
 
 bool consistent_orientation(const Eigen::MatrixXi& F, std::vector<char>* flip) {
   const int nf = static_cast<int>(F.rows());
-  std::map<std::pair<int, int>, std::vector<std::pair<int, bool>>> edge_faces;  // (lo, hi) -> (face, lo -> hi)
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int u = F(f, k), v = F(f, (k + 1) % 3);
-      edge_faces[{std::min(u, v), std::max(u, v)}].push_back({f, u < v});
-    }
+  const int nv = nf == 0 ? 0 : F.maxCoeff() + 1;
+  // Per face, the faces across its edges and whether they run the edge the
+  // same way (an edge of two faces).
+  const std::vector<std::array<int, 3>> across = faces_across_edges(F, nv);
   std::vector<std::vector<std::pair<int, bool>>> neighbours(nf);  // (face, same direction)
-  for (const auto& [edge, faces] : edge_faces)
-    if (faces.size() == 2) {
-      const bool same = faces[0].second == faces[1].second;
-      neighbours[faces[0].first].push_back({faces[1].first, same});
-      neighbours[faces[1].first].push_back({faces[0].first, same});
-    }
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k)
+      if (const int g = across[f][k]; g >= 0) {
+        const int u = F(f, k), v = F(f, (k + 1) % 3);
+        bool same = false;
+        for (int j = 0; j < 3; ++j) same = same || (F(g, j) == u && F(g, (j + 1) % 3) == v);
+        neighbours[f].push_back({g, same});
+      }
   // A walk over each piece, each neighbour flipped or not to agree with the
   // face it is reached from; one reached both ways has no agreeing choice.
   std::vector<int> turn(nf, -1);

@@ -11,8 +11,8 @@
 namespace akvf {
 
 // The winding each face needs to agree with its neighbours across every
-// edge of two faces: flip[f] = 1 to reverse face f, the fewest in each
-// piece. Returns false, flip unset, when no choice agrees (a Moebius strip,
+// edge (F edge-manifold: no edge of three or more faces): flip[f] = 1 to
+// reverse face f, the fewest in each piece. Returns false, flip unset, when no choice agrees (a Moebius strip,
 // a Klein bottle: the surface is not orientable).
 bool consistent_orientation(const Eigen::MatrixXi& F, std::vector<char>* flip);
 

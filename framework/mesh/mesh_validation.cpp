@@ -199,6 +199,11 @@ DiskMesh prepare_disk_mesh(const TriMesh& given, const std::string& name, bool c
   }
 
   EdgeTopology topology = edge_topology(m.F);
+  if (!topology.overused_edge.empty())
+    throw ValidationError(name + ": edge (" + at_input(topology.overused_edge[0]) + ", " +
+                          at_input(topology.overused_edge[1]) + ") is shared by " +
+                          std::to_string(topology.overused_edge[2]) + " faces" + numbering_note(b) +
+                          "; the mesh must be edge-manifold");
   std::vector<char> flip;
   const bool orientable = topology.misoriented_edge.empty() || consistent_orientation(m.F, &flip);
   if (repair && orientable && !topology.misoriented_edge.empty()) {
@@ -206,11 +211,6 @@ DiskMesh prepare_disk_mesh(const TriMesh& given, const std::string& name, bool c
     out.warnings.push_back(reorientation_description(out.reoriented_faces, out.input_face, name, b));
     topology = edge_topology(m.F);
   }
-  if (!topology.overused_edge.empty())
-    throw ValidationError(name + ": edge (" + at_input(topology.overused_edge[0]) + ", " +
-                          at_input(topology.overused_edge[1]) + ") is shared by " +
-                          std::to_string(topology.overused_edge[2]) + " faces" + numbering_note(b) +
-                          "; the mesh must be edge-manifold");
   if (!orientable)
     throw ValidationError(name +
                           ": the surface is non-orientable (like a Moebius strip or a Klein bottle): no choice "

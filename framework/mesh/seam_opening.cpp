@@ -1,6 +1,7 @@
 #include "framework/mesh/seam_opening.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -26,31 +27,27 @@ constexpr double kCreaseAngle = M_PI / 6;
 // Whether an edge lies on a feature line: the normals of its two faces more
 // than kCreaseAngle apart, and neither face as sharp across its other edges
 // (a feature line parts two smooth sides; a crease among creases is the
-// surface's noise). The edges' faces are listed at the first question.
+// surface's noise). The faces across each edge are found at the first
+// question.
 class Creases {
  public:
   explicit Creases(const TriMesh& mesh) : mesh_(mesh) {}
 
-  bool operator()(int a, int b) {
-    const int nv = mesh_.num_vertices();
-    if (edge_faces_.empty())
-      for (int f = 0; f < mesh_.num_faces(); ++f)
-        for (int k = 0; k < 3; ++k)
-          edge_faces_[undirected_edge_key(mesh_.F(f, k), mesh_.F(f, (k + 1) % 3), nv)].push_back(f);
-    const std::int64_t key = undirected_edge_key(a, b, nv);
-    if (!sharp(key)) return false;
-    for (int f : edge_faces_[key])
-      for (int k = 0; k < 3; ++k)
-        if (const std::int64_t other = undirected_edge_key(mesh_.F(f, k), mesh_.F(f, (k + 1) % 3), nv);
-            other != key && sharp(other))
-          return false;
+  // Edge k of face f (from corner k to k + 1).
+  bool operator()(int f, int k) {
+    if (across_.empty()) across_ = faces_across_edges(mesh_.F, mesh_.num_vertices());
+    const int g = across_[f][k];
+    if (!sharp(f, k)) return false;
+    for (int face : {f, g})
+      for (int j = 0; j < 3; ++j)
+        if (across_[face][j] != (face == f ? g : f) && sharp(face, j)) return false;
     return true;
   }
 
  private:
-  bool sharp(std::int64_t edge) {
-    const std::vector<int>& faces = edge_faces_[edge];
-    return faces.size() == 2 && normal(faces[0]).dot(normal(faces[1])) < std::cos(kCreaseAngle);
+  bool sharp(int f, int k) const {
+    const int g = across_[f][k];
+    return g >= 0 && normal(f).dot(normal(g)) < std::cos(kCreaseAngle);
   }
 
   Eigen::Vector3d normal(int f) const {
@@ -60,7 +57,7 @@ class Creases {
   }
 
   const TriMesh& mesh_;
-  std::unordered_map<std::int64_t, std::vector<int>> edge_faces_;
+  std::vector<std::array<int, 3>> across_;
 };
 
 std::vector<char> boundary_vertices(const Eigen::MatrixXi& F, int nv) {
@@ -76,13 +73,14 @@ std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<
   const int nv = mesh.num_vertices();
   const std::vector<char> on_boundary = boundary_vertices(mesh.F, nv);
   std::vector<char> end = on_boundary;
-  // Neighbours from the faces' edges (an interior edge is listed twice).
-  std::vector<std::vector<int>> neighbours(nv);
+  // Neighbours from the faces' edges, each with the edge as 3 f + k (an
+  // interior edge is listed twice).
+  std::vector<std::vector<std::pair<int, int>>> neighbours(nv);
   for (int f = 0; f < mesh.num_faces(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
-      neighbours[a].push_back(b);
-      neighbours[b].push_back(a);
+      neighbours[a].push_back({b, 3 * f + k});
+      neighbours[b].push_back({a, 3 * f + k});
     }
   Creases crease(mesh);
   std::vector<double> distance(nv, std::numeric_limits<double>::infinity());
@@ -92,7 +90,7 @@ std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<
   for (int start : starts) {
     if (on_boundary[start]) {
       int inward = -1;
-      for (int w : neighbours[start])
+      for (const auto& [w, edge] : neighbours[start])
         if (!end[w] && (inward < 0 || energy[w] > energy[inward])) inward = w;
       if (inward >= 0) {
         end[inward] = 1;
@@ -104,9 +102,9 @@ std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<
             const Eigen::Vector3d along = (mesh.V.row(w) - mesh.V.row(before)).normalized();
             return along.dot((mesh.V.row(u) - mesh.V.row(w)).normalized()) > std::cos(kCreaseAngle);
           };
-          for (int u : neighbours[w])
-            if (!end[u] && energy[u] > crease_walk_above && (next < 0 || energy[u] > energy[next]) && crease(w, u) &&
-                straight_on(u))
+          for (const auto& [u, edge] : neighbours[w])
+            if (!end[u] && energy[u] > crease_walk_above && (next < 0 || energy[u] > energy[next]) &&
+                crease(edge / 3, edge % 3) && straight_on(u))
               next = u;
           if (next < 0) break;
           end[next] = 1;
@@ -133,7 +131,7 @@ std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<
         found = v;
         break;
       }
-      for (int w : neighbours[v]) {
+      for (const auto& [w, edge] : neighbours[v]) {
         const double dw = d + (mesh.V.row(v) - mesh.V.row(w)).norm();
         if (dw < distance[w]) {
           if (distance[w] == std::numeric_limits<double>::infinity()) reached.push_back(w);
