@@ -174,7 +174,9 @@ PreconditionerRegistry3D& mutable_preconditioners_3d() {
 PreconditionerRegistry2D& mutable_preconditioners_2d() {
   static PreconditionerRegistry2D registry = [] {
     PreconditionerRegistry2D r("preconditioner");
-    r.add("akvf", "Killing operator K(x) of Eq. (5), area-scaled, CHOLMOD (the paper's method)",
+    r.add("akvf",
+          "Killing operator K(x) of Eq. (5), area-scaled, CHOLMOD (the paper's method; for MIPS without the "
+          "divergence term, which MIPS does not feel)",
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return std::make_unique<AkvfPreconditioner2D>(objective, settings.akvf);
           },

@@ -13,7 +13,8 @@ namespace akvf {
 namespace {
 
 // The settings of the 3D preconditioners: as configured, and for AKVF as
-// §6.2 states it (K + c I, no constraint Hessian, no energy scale) when asked
+// §6.2 states it (K + c I: no constraint Hessian, energy scale or divergence
+// weight) when asked
 // and the constraints are soft. The constraints reach every preconditioner
 // through the objective (DistortionObjective::added_hessian_diagonal).
 PreconditionerSettings3D preconditioner_settings(const DeformConfig& config) {
@@ -23,6 +24,7 @@ PreconditionerSettings3D preconditioner_settings(const DeformConfig& config) {
   if (config.akvf_as_written && !config.hard_constraints) {
     settings.akvf.include_problem_hessian = false;
     settings.akvf.secant_scaling = false;
+    settings.akvf.divergence_weight = 1;
   }
   return settings;
 }
@@ -138,8 +140,7 @@ DeformRun run_deformation(const DeformSetup& setup, const PositionConstraints& i
   }
   const SoftConstrainedObjective objective(energy, 3, constraints, config.weight);
   energy.set_added_hessian_diagonal(objective.hessian_diagonal());  // the penalty's: 2 w on constrained coordinates
-  auto preconditioner =
-      preconditioners_3d().create(config.preconditioner, energy, preconditioner_settings(config));
+  auto preconditioner = preconditioners_3d().create(config.preconditioner, energy, preconditioner_settings(config));
   run.result = minimize(objective, *preconditioner, *line_search, rest, optimizer, callbacks);
   run.preconditioner_report = preconditioner->report();
   run.preconditioner_statistics = preconditioner->statistics();

@@ -19,6 +19,9 @@ Eigen::MatrixXd motion_basis(int dimension, MotionProjection projection, const E
 // The planar rigid motions: translations and the rotation about the
 // centroid (2|V| by 3, orthonormal).
 Eigen::MatrixXd rigid_motion_basis_2d(const Eigen::VectorXd& x);
+// The planar similarities: the rigid motions and the dilation about the
+// centroid (2|V| by 4, orthonormal).
+Eigen::MatrixXd similarity_motion_basis_2d(const Eigen::VectorXd& x);
 // The rigid motions in space: translations and the rotations about the
 // centroid (3|V| by 6, orthonormalized); the null space of K of Eq. (9)-(10).
 Eigen::MatrixXd rigid_motion_basis_3d(const Eigen::VectorXd& x);

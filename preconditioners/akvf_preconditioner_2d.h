@@ -3,6 +3,11 @@
 // d = -K(x)^+ grad E (Eq. 11-12), with K(x) of Eq. (5), area-scaled
 // (§4.2.1). Its null space is exactly the rigid motions of x. Shift,
 // projection and factorization reuse: factored_preconditioner.h.
+// It uses K_beta (killing_operator_2d.h) with the energy's beta
+// (energy_scale.h): K itself except for MIPS, whose K_0 has the
+// similarities of x as null space; they are projected out instead.
+#include <optional>
+
 #include "akvf/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 #include "preconditioners/killing_operator_2d.h"
@@ -18,6 +23,8 @@ struct AkvfOptions2D {
   }();
   // Scale each face by A_hat_f / A_f (§4.2.1); off integrates over the UV domain.
   bool area_scaling = true;
+  // beta of K_beta; unset: the energy's (rest_divergence_weight).
+  std::optional<double> divergence_weight;
 };
 
 class AkvfPreconditioner2D final : public FactoredPreconditioner2D {
@@ -27,10 +34,13 @@ class AkvfPreconditioner2D final : public FactoredPreconditioner2D {
 
  private:
   void assemble(const OptimizationState& state, ElementMatrix2D* matrix) override;
-  Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return rigid_motion_basis_2d(x); }
+  Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override {
+    return divergence_weight_ > 0 ? rigid_motion_basis_2d(x) : similarity_motion_basis_2d(x);
+  }
 
   const MeshObjective2D& objective_;
   AkvfOptions2D options_;
+  double divergence_weight_;  // beta
 };
 
 }  // namespace akvf

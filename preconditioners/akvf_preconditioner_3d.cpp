@@ -19,12 +19,13 @@ AkvfPreconditioner3D::AkvfPreconditioner3D(const MeshObjective3D& objective, Akv
           options.include_problem_hessian ? with_problem_hessian(options.factor, objective) : options.factor),
       objective_(objective),
       options_(options),
+      divergence_weight_(options.divergence_weight.value_or(rest_divergence_weight(objective.density()))),
       // Energy curvature (weights V_t / sum V) over K's, 4 sum V, along a shear.
       scale_(options.secant_scaling ? rest_shear_curvature(objective.density()) / (4 * objective.rest().total_volume)
                                     : 1.0) {}
 
 void AkvfPreconditioner3D::assemble(const OptimizationState& state, ElementMatrix3D* matrix) {
-  assemble_killing_operator_3d(objective_.elements(), state.x, matrix);
+  assemble_killing_operator_3d(objective_.elements(), state.x, matrix, divergence_weight_);
   if (options_.secant_scaling) {
     if (previous_x_.size() == state.x.size()) {
       const Eigen::VectorXd dx = state.x - previous_x_;

@@ -1,6 +1,8 @@
 #pragma once
 // The AKVF preconditioner on tet meshes (§4.2.2, §6.2): P = s K(x) + c I + H_c
-// with K(x) of Eq. (9)-(10) at the current positions, c = 1e-4 (§6.2) and
+// with K(x) of Eq. (9)-(10) at the current positions (K_beta with the
+// energy's divergence weight, energy_scale.h: K itself for the isometric
+// energies, K_0 for MIPS, 9/4 for AMIPS), c = 1e-4 (§6.2) and
 // H_c the soft constraints' Hessian (the objective's added Hessian diagonal), as in
 // SLIM's own solve, which §6.2 follows "identically". In deformation the
 // energy is not rigid-invariant, so nothing is projected out by default;
@@ -15,6 +17,8 @@
 // it (secant_scaling = false, s = 1) the direction is off by the energy's
 // scale (exp(6k) for the exponential energies) and the descent crawls; see
 // docs/deformation.md.
+#include <optional>
+
 #include "akvf/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
 #include "preconditioners/killing_operator_3d.h"
@@ -29,6 +33,9 @@ struct AkvfOptions3D {
   // (MeshObjective::added_hessian_diagonal: the constraints). Off is
   // §6.2 as written, K + c I alone (--akvf-as-written).
   bool include_problem_hessian = true;
+  // beta of K_beta (killing_operator_3d.h); unset: the energy's
+  // (rest_divergence_weight), 1 as written.
+  std::optional<double> divergence_weight;
 };
 
 class AkvfPreconditioner3D final : public FactoredPreconditioner3D {
@@ -42,7 +49,8 @@ class AkvfPreconditioner3D final : public FactoredPreconditioner3D {
 
   const MeshObjective3D& objective_;
   AkvfOptions3D options_;
-  double scale_;  // s
+  double divergence_weight_;  // beta
+  double scale_;              // s
   Eigen::VectorXd previous_x_, previous_gradient_;
 };
 

@@ -2,7 +2,8 @@
 
 namespace akvf {
 
-void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, ElementMatrix2D::Local* local) {
+void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, double divergence_weight,
+                             ElementMatrix2D::Local* local) {
   const Eigen::Vector2d e1 = p[1] - p[0], e2 = p[2] - p[0];
   const double area = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
   local->setZero();
@@ -18,10 +19,20 @@ void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, ElementMa
     local->block<2, 2>(2 * a, 2 * a) -= block;              // K_pp = -sum_r K_pr
     local->block<2, 2>(2 * b, 2 * b) -= block.transpose();  // K_qq gets K_qp = K_pq^T
   }
+  if (divergence_weight != 1) {
+    // (beta - 1) (div v)^2 over the face: div v = b . v with b's corner a
+    // the gradient of its hat function, perp(p_c - p_b) / (2 area).
+    Eigen::Matrix<double, 6, 1> b;
+    for (int a = 0; a < 3; ++a) {
+      const Eigen::Vector2d edge = p[(a + 2) % 3] - p[(a + 1) % 3];
+      b.segment<2>(2 * a) = Eigen::Vector2d(-edge.y(), edge.x()) / (2 * area);
+    }
+    *local += ((divergence_weight - 1) * scale * area) * b * b.transpose();
+  }
 }
 
 void assemble_killing_operator_2d(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
-                                  bool area_scaling, ElementMatrix2D* matrix) {
+                                  bool area_scaling, ElementMatrix2D* matrix, double divergence_weight) {
   matrix->assemble([&](int f, ElementMatrix2D::Local* local) {
     Eigen::Vector2d p[3];
     for (int k = 0; k < 3; ++k) p[k] = x.segment<2>(2 * F(f, k));
@@ -30,7 +41,7 @@ void assemble_killing_operator_2d(const Eigen::MatrixXi& F, const Eigen::VectorX
       const Eigen::Vector2d e1 = p[1] - p[0], e2 = p[2] - p[0];
       scale = rest_area[f] / (0.5 * (e1.x() * e2.y() - e1.y() * e2.x()));
     }
-    killing_local_matrix_2d(p, scale, local);
+    killing_local_matrix_2d(p, scale, divergence_weight, local);
   });
 }
 

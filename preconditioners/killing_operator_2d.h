@@ -13,13 +13,24 @@
 
 namespace akvf {
 
-// The 6x6 local matrix of Eq. (5) for one face with UV corners p[0..2]
-// (counter-clockwise) and face scale s_f.
-void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, ElementMatrix2D::Local* local);
+//
+// K's quadratic form integrates (1/2)|G + G^T|^2 = 2|sym_0 G|^2 + (tr G)^2
+// for the velocity gradient G (sym_0: the trace-free symmetric part). The
+// divergence weight beta gives K_beta, whose form has beta (tr G)^2 instead:
+// K_beta = K - (1 - beta) sum_f s_f A_f b_f b_f^T, b_f . v the divergence of
+// v on face f. beta = 1 is Eq. (5); beta = 0 (K_0) measures only the
+// departure from a conformal motion, and its null space is the similarities
+// (energy_scale.h, rest_divergence_weight, says which energy wants which).
 
-// Fills matrix with K(x) for the faces F (#F by 3) at the interleaved UV
-// positions x; rest_area (#F, A_hat_f) is used when area_scaling.
+// The 6x6 local matrix of Eq. (5) for one face with UV corners p[0..2]
+// (counter-clockwise), face scale s_f and divergence weight beta.
+void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, double divergence_weight,
+                             ElementMatrix2D::Local* local);
+
+// Fills matrix with K_beta(x) (beta = divergence_weight; 1: K(x) of Eq. 5)
+// for the faces F (#F by 3) at the interleaved UV positions x; rest_area
+// (#F, A_hat_f) is used when area_scaling.
 void assemble_killing_operator_2d(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
-                                  bool area_scaling, ElementMatrix2D* matrix);
+                                  bool area_scaling, ElementMatrix2D* matrix, double divergence_weight = 1);
 
 }  // namespace akvf

@@ -5,7 +5,7 @@
 
 namespace akvf {
 
-void killing_local_matrix_3d(const Eigen::Vector3d p[4], ElementMatrix3D::Local* local) {
+void killing_local_matrix_3d(const Eigen::Vector3d p[4], double divergence_weight, ElementMatrix3D::Local* local) {
   const double volume = (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])) / 6;
   local->setZero();
   for (int i = 0; i < 4; ++i)
@@ -22,13 +22,26 @@ void killing_local_matrix_3d(const Eigen::Vector3d p[4], ElementMatrix3D::Local*
       local->block<3, 3>(3 * i, 3 * i) -= block;              // Eq. (10): K_pp = -sum_q K_pq
       local->block<3, 3>(3 * j, 3 * j) -= block.transpose();  // K_qq gets K_qp = K_pq^T
     }
+  if (divergence_weight != 1) {
+    // (beta - 1) (2/3) (div v)^2 over the tet: div v = b . v with b's corner
+    // i the gradient of its hat function (rows of Ds^-1; corner 0 minus
+    // their sum).
+    Eigen::Matrix3d Ds;
+    for (int k = 0; k < 3; ++k) Ds.col(k) = p[k + 1] - p[0];
+    const Eigen::Matrix3d inverse = Ds.inverse();
+    Eigen::Matrix<double, 12, 1> b;
+    b.segment<3>(0) = -inverse.colwise().sum().transpose();
+    for (int k = 0; k < 3; ++k) b.segment<3>(3 * (k + 1)) = inverse.row(k).transpose();
+    *local += ((divergence_weight - 1) * 2.0 / 3.0 * volume) * b * b.transpose();
+  }
 }
 
-void assemble_killing_operator_3d(const Eigen::MatrixXi& T, const Eigen::VectorXd& x, ElementMatrix3D* matrix) {
+void assemble_killing_operator_3d(const Eigen::MatrixXi& T, const Eigen::VectorXd& x, ElementMatrix3D* matrix,
+                                  double divergence_weight) {
   matrix->assemble([&](int t, ElementMatrix3D::Local* local) {
     Eigen::Vector3d p[4];
     for (int k = 0; k < 4; ++k) p[k] = x.segment<3>(3 * T(t, k));
-    killing_local_matrix_3d(p, local);
+    killing_local_matrix_3d(p, divergence_weight, local);
   });
 }
 

@@ -14,12 +14,18 @@
 
 namespace akvf {
 
-// The 12x12 local matrix of one tet with current corners p[0..3]
-// (positively oriented).
-void killing_local_matrix_3d(const Eigen::Vector3d p[4], ElementMatrix3D::Local* local);
+//
+// K's quadratic form integrates (1/2)|G + G^T|^2 = 2|sym_0 G|^2 +
+// (2/3)(tr G)^2 over the current tets; the divergence weight beta gives
+// K_beta with beta (2/3)(tr G)^2 instead, as in 2D (killing_operator_2d.h).
 
-// Fills matrix with K(x) for the tets T (#T by 4) at the interleaved
+// The 12x12 local matrix of one tet with current corners p[0..3]
+// (positively oriented) and divergence weight beta (1: Eq. 9-10).
+void killing_local_matrix_3d(const Eigen::Vector3d p[4], double divergence_weight, ElementMatrix3D::Local* local);
+
+// Fills matrix with K_beta(x) for the tets T (#T by 4) at the interleaved
 // positions x (x_0, y_0, z_0, x_1, ...).
-void assemble_killing_operator_3d(const Eigen::MatrixXi& T, const Eigen::VectorXd& x, ElementMatrix3D* matrix);
+void assemble_killing_operator_3d(const Eigen::MatrixXi& T, const Eigen::VectorXd& x, ElementMatrix3D* matrix,
+                                  double divergence_weight = 1);
 
 }  // namespace akvf

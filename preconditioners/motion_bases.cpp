@@ -30,6 +30,20 @@ Eigen::MatrixXd rigid_motion_basis_2d(const Eigen::VectorXd& x) {
   return B;
 }
 
+Eigen::MatrixXd similarity_motion_basis_2d(const Eigen::VectorXd& x) {
+  Eigen::MatrixXd B(x.size(), 4);
+  B.leftCols<3>() = rigid_motion_basis_2d(x);
+  // The dilation about the centroid, x - c: orthogonal to the translations
+  // (centred) and to the rotation (r . perp(r) = 0).
+  const Eigen::Index n = x.size() / 2;
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (Eigen::Index i = 0; i < n; ++i) c += x.segment<2>(2 * i);
+  c /= static_cast<double>(n);
+  for (Eigen::Index i = 0; i < n; ++i) B.block<2, 1>(2 * i, 3) = x.segment<2>(2 * i) - c;
+  B.col(3).normalize();
+  return B;
+}
+
 Eigen::MatrixXd translation_basis(int dimension, int num_vertices) {
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(dimension) * num_vertices, dimension);
   for (int i = 0; i < num_vertices; ++i)

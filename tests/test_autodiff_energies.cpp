@@ -10,6 +10,7 @@
 
 #include "akvf/catalog.h"
 #include "akvf/extend.h"
+#include "preconditioners/energy_scale.h"
 #include "tests/density_checks.h"
 #include "tests/test_support.h"
 
@@ -128,4 +129,22 @@ TEST_CASE("a registered energy is listed by name, and its name cannot be taken t
           akvf::register_autodiff_energy<2>("test-registered-sd", "again", 4.0, SymmetricDirichlet{});
         }) == "energy 'test-registered-sd' is already registered");
   CHECK(akvf::energies_2d().create("test-registered-sd", {})->lower_bound() == 4.0);
+}
+
+// docs/extending.md's example: a log(det J)^2 term stiffens dilations only,
+// by 4 against symmetric Dirichlet's 16 along both (energy_scale.h).
+namespace {
+struct AreaAwareDirichlet {
+  template <class T>
+  T operator()(const Eigen::Matrix<T, 2, 2>& J) const {
+    return J.squaredNorm() + J.inverse().squaredNorm() + T(0.5) * log(J.determinant()) * log(J.determinant());
+  }
+};
+}  // namespace
+
+TEST_CASE("AKVF's divergence weight follows a registered energy's Hessian at the identity") {
+  const akvf::AutodiffDensity<2, AreaAwareDirichlet> area_aware("area-aware", 4.0, AreaAwareDirichlet{});
+  CHECK(akvf::rest_divergence_weight(area_aware) == doctest::Approx(1.25).epsilon(1e-12));
+  const akvf::AutodiffDensity<2, Mips> mips("mips", 2.0, Mips{});
+  CHECK(akvf::rest_divergence_weight(mips) == 0.0);
 }

@@ -435,11 +435,12 @@ TEST_CASE("SLIM refuses an energy without a singular-value derivative") {
 // energy_scale.h): at an isometry the Hessian of symmetric Dirichlet, ARAP
 // and exponential symmetric Dirichlet is c K(x), c = 1 / isometric_newton_step;
 // MIPS's is not (it is flat along conformal maps, not only rigid ones).
-TEST_CASE("at an isometric map the Hessian of the isometric energies is c K(x), c the isometric Newton scale") {
+TEST_CASE(
+    "at a similarity map the Hessian is c K_beta(x), beta the energy's: at a rotation for every energy, at any "
+    "scale for MIPS") {
   akvf::TriMesh mesh = akvf::test::grid_disk(6, 5, 0.2, 3);  // planar, jittered: every UV rotation is isometric
   akvf::normalize_to_unit_area(&mesh);
   const Eigen::Matrix2d rotation = Eigen::Rotation2Dd(0.7).toRotationMatrix();
-  const Eigen::VectorXd x = akvf::stack_uv(mesh.V.leftCols<2>() * rotation.transpose());
   auto unshifted = [](const akvf::FactoredPreconditioner2D& p) {
     Eigen::MatrixXd P(p.matrix().full());
     P.diagonal().array() -= kShift * P.diagonal().mean() / (1 + kShift);
@@ -447,25 +448,63 @@ TEST_CASE("at an isometric map the Hessian of the isometric energies is c K(x), 
   };
   for (const auto& density : std::vector<std::shared_ptr<akvf::DistortionDensity2D>>{
            std::make_shared<akvf::SymmetricDirichlet2D>(), std::make_shared<akvf::Arap2D>(),
-           std::make_shared<akvf::ExpSymmetricDirichlet2D>(0.5), std::make_shared<akvf::Mips2D>()}) {
-    CAPTURE(density->name());
-    const akvf::DistortionObjective2D objective(mesh.F, akvf::rest_triangles(mesh), density, mesh.num_vertices());
-    Eigen::VectorXd g;
-    objective.value_and_gradient(x, &g);
-    akvf::NewtonPreconditioner2D newton(objective);
-    akvf::AkvfPreconditioner2D akvf_k(objective);
-    newton.update({x, g, 0.0, 1});
-    akvf_k.update({x, g, 0.0, 1});
-    const double c = 1 / akvf::isometric_newton_step(*density, objective.rest().total_area);
-    const Eigen::MatrixXd H = unshifted(newton), K = unshifted(akvf_k);
-    if (density->name() == "mips") {
-      CHECK((H - c * K).norm() > 0.1 * H.norm());
-    } else {
-      CHECK((H - c * K).norm() <= 1e-8 * H.norm());
+           std::make_shared<akvf::ExpSymmetricDirichlet2D>(0.5), std::make_shared<akvf::Amips2D>(1.5),
+           std::make_shared<akvf::Mips2D>()}) {
+    const bool conformal = density->name() == "mips";
+    const double beta = akvf::rest_divergence_weight(*density);
+    // Exact: K_beta is K itself unless the energy ignores dilations.
+    CHECK(beta == (conformal ? 0.0 : 1.0));
+    // MIPS is scale invariant: its Hessian is c K_0 at every similarity.
+    for (const double scale : conformal ? std::vector<double>{1.0, 1.7} : std::vector<double>{1.0}) {
+      CAPTURE(density->name());
+      CAPTURE(scale);
+      const Eigen::VectorXd x = akvf::stack_uv(scale * mesh.V.leftCols<2>() * rotation.transpose());
+      const akvf::DistortionObjective2D objective(mesh.F, akvf::rest_triangles(mesh), density, mesh.num_vertices());
+      Eigen::VectorXd g;
+      objective.value_and_gradient(x, &g);
+      akvf::NewtonPreconditioner2D newton(objective);
+      akvf::AkvfOptions2D options;
+      options.divergence_weight = beta;
+      akvf::AkvfPreconditioner2D akvf_k(objective, options);
+      akvf::AkvfOptions2D as_written;
+      as_written.divergence_weight = 1;
+      akvf::AkvfPreconditioner2D killing(objective, as_written);
+      newton.update({x, g, 0.0, 1});
+      akvf_k.update({x, g, 0.0, 1});
+      killing.update({x, g, 0.0, 1});
+      const double c = 1 / akvf::isometric_newton_step(*density, objective.rest().total_area);
+      const Eigen::MatrixXd H = unshifted(newton);
+      CHECK((H - c * unshifted(akvf_k)).norm() <= 1e-8 * H.norm());
+      if (conformal) CHECK((H - c * unshifted(killing)).norm() > 0.1 * H.norm());
     }
   }
   CHECK(akvf::isometric_newton_step(akvf::SymmetricDirichlet2D(), 1.0) == doctest::Approx(0.25).epsilon(1e-12));
   CHECK(akvf::isometric_newton_step(akvf::Arap2D(), 1.0) == doctest::Approx(1.0).epsilon(1e-12));
+}
+
+TEST_CASE("K_0 is PSD with exactly the similarities as null space, and K_beta = K - (1 - beta) (div)^2") {
+  const PlanarMesh p = jittered_grid(7, 2);
+  akvf::ElementMatrix2D K0(p.F, static_cast<int>(p.x.size() / 2)), K(p.F, static_cast<int>(p.x.size() / 2));
+  const Eigen::VectorXd rest_area = p.uv_area * 1.7;
+  akvf::assemble_killing_operator_2d(p.F, p.x, rest_area, true, &K0, 0.0);
+  akvf::assemble_killing_operator_2d(p.F, p.x, rest_area, true, &K);
+  const Eigen::MatrixXd dense0(K0.full()), dense(K.full());
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(dense0);
+  const Eigen::VectorXd lambda = eig.eigenvalues();
+  const double tol = 1e-10 * lambda.maxCoeff();
+  CHECK(lambda.minCoeff() >= -tol);
+  int null_dim = 0;
+  for (Eigen::Index i = 0; i < lambda.size(); ++i) null_dim += lambda[i] < tol;
+  CHECK(null_dim == 4);
+  CHECK(lambda[4] > 1e3 * tol);
+  const Eigen::MatrixXd similarities = akvf::similarity_motion_basis_2d(p.x);
+  CHECK((dense0 * similarities).norm() <= 1e-10 * dense0.norm());
+  CHECK((similarities.transpose() * similarities - Eigen::Matrix4d::Identity()).norm() <= 1e-12);
+  // A dilation's divergence is 2 on every face: K's form along it is
+  // (1/2)|2I|^2 = 4 per unit of the (area-scaled) measure, K_0's 0.
+  const Eigen::VectorXd dilation = p.x;
+  CHECK(dilation.dot(dense * dilation) == doctest::Approx(4 * rest_area.sum()).epsilon(1e-10));
+  CHECK(std::abs(dilation.dot(dense0 * dilation)) <= 1e-10 * rest_area.sum());
 }
 
 // Chen et al. 2024's adaptive filter (newton_preconditioner.h): mirror at the
