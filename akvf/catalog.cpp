@@ -54,30 +54,15 @@ SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const Precondition
 // where the other is released, so a switch costs no setup the pure methods
 // do not pay before their start, and no second analysis or factor is kept.
 // Both phases give up a failed factorization reuse after one CG iteration
-// (factored_preconditioner.h, reuse_check_from) and reuse no factor that
-// took fewer than kReuseMinFlopsPerEntry flops per entry; the AKVF phase
-// reuses its factor rounded to single precision (reuse_in_single_precision).
-//
-// The flops per entry: CHOLMOD's own switch between a simplicial and a
-// supernodal factorization (its supernodal_switch, 40). Below it the factor
-// is so sparse that factoring costs a few solves (camel_b, cow_b, tricera_b,
-// hilbert_b: 2.9-4.3 solves; camelhead and horse_b, at 175 and 86 flops per
-// entry, 14 and 7), while a reuse costs a solve and a product with P per CG
-// iteration and, in single precision, a pass over the factor, so it rarely
-// pays there (best of five runs without it: hilbert_b 8-25 % faster on every
-// energy, tricera_b 5-24 %, cow_b's ARAP and AMIPS 7 % and 12 % slower;
-// docs/notes/2026-11-28-divergence-weight.md).
-constexpr double kReuseMinFlopsPerEntry = 40;
-
+// (factored_preconditioner.h, reuse_check_from); the AKVF phase reuses its
+// factor rounded to single precision (reuse_in_single_precision).
 template <int D, class Akvf, class Settings>
 std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objective, const Settings& settings) {
   FactorOptions newton = newton_phase_options(settings);
   newton.reuse_check_from = 1;
-  newton.reuse_min_flops_per_entry = kReuseMinFlopsPerEntry;
   const EigenvalueFilter filter = settings.newton_phase_filter;
   auto akvf_options = settings.akvf;
   akvf_options.factor.reuse_check_from = 1;
-  akvf_options.factor.reuse_min_flops_per_entry = kReuseMinFlopsPerEntry;
   // The far phase: its reuses may precondition in single precision.
   akvf_options.factor.reuse_in_single_precision = true;
   auto factored = [](Preconditioner& current) -> FactoredPreconditioner<D>& {

@@ -159,17 +159,12 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   if (options_.cg_tolerance > 0) return;  // apply() runs CG on the assembled matrix
   // Without reuse, or before the first factorization, factor now (§5.2);
   // otherwise apply() decides whether the previous factor still serves.
-  if (options_.reuse_tolerance <= 0 || !factored_ || !reuse_may_pay()) {
+  if (options_.reuse_tolerance <= 0 || !factored_) {
     factorize_current();
   } else if (skip_reuse_ > 0) {
     --skip_reuse_;
     factorize_current();
   }
-}
-
-template <int D>
-bool FactoredPreconditioner<D>::reuse_may_pay() const {
-  return cholesky_.factor_flops() >= options_.reuse_min_flops_per_entry * cholesky_.factor_nonzeros();
 }
 
 template <int D>
