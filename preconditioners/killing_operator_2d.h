@@ -13,7 +13,6 @@
 
 namespace akvf {
 
-//
 // K's quadratic form integrates (1/2)|G + G^T|^2 = 2|sym_0 G|^2 + (tr G)^2
 // for the velocity gradient G (sym_0: the trace-free symmetric part). The
 // divergence weight beta gives K_beta, whose form has beta (tr G)^2 instead:

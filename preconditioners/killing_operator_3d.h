@@ -14,7 +14,6 @@
 
 namespace akvf {
 
-//
 // K's quadratic form integrates (1/2)|G + G^T|^2 = 2|sym_0 G|^2 +
 // (2/3)(tr G)^2 over the current tets; the divergence weight beta gives
 // K_beta with beta (2/3)(tr G)^2 instead, as in 2D (killing_operator_2d.h).
