@@ -31,4 +31,15 @@ std::array<Eigen::Matrix<double, D, 1>, D + 1> hat_gradients(const Eigen::Matrix
   return grad;
 }
 
+// The divergence of a velocity v (corner velocities interleaved) over an
+// element whose current edge matrix Ds has inverse Ds_inv: b . v, b holding
+// each corner's hat-function gradient (tr(Dv Ds^-1) = sum_k grad phi_k . v_k).
+template <int D>
+Eigen::Matrix<double, D*(D + 1), 1> divergence_row(const Eigen::Matrix<double, D, D>& Ds_inv) {
+  const auto grad = hat_gradients<D>(Ds_inv);
+  Eigen::Matrix<double, D*(D + 1), 1> b;
+  for (int k = 0; k <= D; ++k) b.template segment<D>(D * k) = grad[k];
+  return b;
+}
+
 }  // namespace akvf

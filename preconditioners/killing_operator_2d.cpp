@@ -1,5 +1,9 @@
 #include "preconditioners/killing_operator_2d.h"
 
+#include <Eigen/LU>
+
+#include "preconditioners/element_derivatives.h"
+
 namespace akvf {
 
 void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, double divergence_weight,
@@ -19,14 +23,10 @@ void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, double di
     local->block<2, 2>(2 * a, 2 * a) -= block;              // K_pp = -sum_r K_pr
     local->block<2, 2>(2 * b, 2 * b) -= block.transpose();  // K_qq gets K_qp = K_pq^T
   }
-  if (divergence_weight != 1) {
-    // (beta - 1) (div v)^2 over the face: div v = b . v with b's corner a
-    // the gradient of its hat function, perp(p_c - p_b) / (2 area).
-    Eigen::Matrix<double, 6, 1> b;
-    for (int a = 0; a < 3; ++a) {
-      const Eigen::Vector2d edge = p[(a + 2) % 3] - p[(a + 1) % 3];
-      b.segment<2>(2 * a) = Eigen::Vector2d(-edge.y(), edge.x()) / (2 * area);
-    }
+  if (divergence_weight != 1) {  // (beta - 1) (div v)^2 over the face
+    Eigen::Matrix2d Ds;
+    Ds << e1, e2;
+    const Eigen::Matrix<double, 6, 1> b = divergence_row<2>(Ds.inverse());
     *local += ((divergence_weight - 1) * scale * area) * b * b.transpose();
   }
 }

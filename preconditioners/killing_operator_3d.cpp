@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 #include <Eigen/QR>
 
+#include "preconditioners/element_derivatives.h"
+
 namespace akvf {
 
 void killing_local_matrix_3d(const Eigen::Vector3d p[4], double divergence_weight, ElementMatrix3D::Local* local) {
@@ -22,16 +24,10 @@ void killing_local_matrix_3d(const Eigen::Vector3d p[4], double divergence_weigh
       local->block<3, 3>(3 * i, 3 * i) -= block;              // Eq. (10): K_pp = -sum_q K_pq
       local->block<3, 3>(3 * j, 3 * j) -= block.transpose();  // K_qq gets K_qp = K_pq^T
     }
-  if (divergence_weight != 1) {
-    // (beta - 1) (2/3) (div v)^2 over the tet: div v = b . v with b's corner
-    // i the gradient of its hat function (rows of Ds^-1; corner 0 minus
-    // their sum).
+  if (divergence_weight != 1) {  // (beta - 1) (2/3) (div v)^2 over the tet
     Eigen::Matrix3d Ds;
     for (int k = 0; k < 3; ++k) Ds.col(k) = p[k + 1] - p[0];
-    const Eigen::Matrix3d inverse = Ds.inverse();
-    Eigen::Matrix<double, 12, 1> b;
-    b.segment<3>(0) = -inverse.colwise().sum().transpose();
-    for (int k = 0; k < 3; ++k) b.segment<3>(3 * (k + 1)) = inverse.row(k).transpose();
+    const Eigen::Matrix<double, 12, 1> b = divergence_row<3>(Ds.inverse());
     *local += ((divergence_weight - 1) * 2.0 / 3.0 * volume) * b * b.transpose();
   }
 }

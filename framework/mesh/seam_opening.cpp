@@ -60,6 +60,35 @@ class Creases {
   std::vector<std::array<int, 3>> across_;
 };
 
+// Each vertex's neighbours, with the edge between them as 3 f + k (edge k
+// of face f; an interior edge is listed twice).
+using EdgeNeighbours = std::vector<std::vector<std::pair<int, int>>>;
+
+// Goes on from the last vertex of *path (a seam's start and first edge) to
+// the neighbour of highest energy above `above` across a crease edge, not
+// an end, turning by less than kCreaseAngle; each vertex taken becomes an
+// end (seam_paths' comment).
+void walk_along_creases(const TriMesh& mesh, const EdgeNeighbours& neighbours, const std::vector<double>& energy,
+                        double above, Creases* crease, std::vector<char>* end, std::vector<int>* path) {
+  for (int w = path->back(), before = -1; energy[w] > above;) {
+    const auto straight_on = [&](int u) {
+      if (before < 0) return true;
+      const Eigen::Vector3d along = (mesh.V.row(w) - mesh.V.row(before)).normalized();
+      return along.dot((mesh.V.row(u) - mesh.V.row(w)).normalized()) > std::cos(kCreaseAngle);
+    };
+    int next = -1;
+    for (const auto& [u, edge] : neighbours[w])
+      if (!(*end)[u] && energy[u] > above && (next < 0 || energy[u] > energy[next]) && (*crease)(edge / 3, edge % 3) &&
+          straight_on(u))
+        next = u;
+    if (next < 0) return;
+    (*end)[next] = 1;
+    path->push_back(next);
+    before = w;
+    w = next;
+  }
+}
+
 std::vector<char> boundary_vertices(const Eigen::MatrixXi& F, int nv) {
   std::vector<char> on_boundary(nv, 0);
   for (const auto& [from, to] : edge_topology(F).boundary_half_edges) on_boundary[from] = on_boundary[to] = 1;
@@ -73,9 +102,7 @@ std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<
   const int nv = mesh.num_vertices();
   const std::vector<char> on_boundary = boundary_vertices(mesh.F, nv);
   std::vector<char> end = on_boundary;
-  // Neighbours from the faces' edges, each with the edge as 3 f + k (an
-  // interior edge is listed twice).
-  std::vector<std::vector<std::pair<int, int>>> neighbours(nv);
+  EdgeNeighbours neighbours(nv);
   for (int f = 0; f < mesh.num_faces(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
@@ -95,23 +122,7 @@ std::vector<std::vector<int>> seam_paths(const TriMesh& mesh, const std::vector<
       if (inward >= 0) {
         end[inward] = 1;
         std::vector<int> path{start, inward};
-        for (int w = inward, before = -1; energy[w] > crease_walk_above;) {
-          int next = -1;
-          const auto straight_on = [&](int u) {
-            if (before < 0) return true;
-            const Eigen::Vector3d along = (mesh.V.row(w) - mesh.V.row(before)).normalized();
-            return along.dot((mesh.V.row(u) - mesh.V.row(w)).normalized()) > std::cos(kCreaseAngle);
-          };
-          for (const auto& [u, edge] : neighbours[w])
-            if (!end[u] && energy[u] > crease_walk_above && (next < 0 || energy[u] > energy[next]) &&
-                crease(edge / 3, edge % 3) && straight_on(u))
-              next = u;
-          if (next < 0) break;
-          end[next] = 1;
-          path.push_back(next);
-          before = w;
-          w = next;
-        }
+        walk_along_creases(mesh, neighbours, energy, crease_walk_above, &crease, &end, &path);
         std::reverse(path.begin(), path.end());
         paths.push_back(std::move(path));
       }
