@@ -1,5 +1,7 @@
 #include "tests/test_support.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -163,6 +165,17 @@ Eigen::VectorXd distorted_tet_positions(const TetMesh& mesh, unsigned seed) {
   Eigen::VectorXd x(3 * P.rows());
   for (int v = 0; v < P.rows(); ++v) x.segment<3>(3 * v) = P.row(v).transpose();
   return x;
+}
+
+int null_space_dimension(const Eigen::MatrixXd& K, bool* psd, double* gap) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(K);
+  const Eigen::VectorXd lambda = eig.eigenvalues();  // ascending
+  const double tol = 1e-10 * lambda.maxCoeff();
+  *psd = lambda.minCoeff() >= -tol;
+  int dimension = 0;
+  while (dimension < lambda.size() && lambda[dimension] < tol) ++dimension;
+  *gap = dimension < lambda.size() ? lambda[dimension] / tol : 0;
+  return dimension;
 }
 
 }  // namespace akvf::test

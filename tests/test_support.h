@@ -53,6 +53,11 @@ std::string data_dir();
 // The what() of the akvf::Error that f throws, or "" if it throws nothing.
 std::string error_message(const std::function<void()>& f);
 
+// The dimension of a symmetric matrix's null space: its eigenvalues below
+// 1e-10 of the largest. Sets *psd to whether none lies below minus that, and
+// *gap to the first eigenvalue above the null space over the threshold.
+int null_space_dimension(const Eigen::MatrixXd& K, bool* psd, double* gap);
+
 // Prints "SKIPPED: reason" (ctest marks the test skipped on that text).
 void skip(const std::string& reason);
 
