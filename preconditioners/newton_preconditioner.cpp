@@ -94,8 +94,10 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
     // The last exact Hessian served (no fallback since): try it at once next time.
     if (last_filter_ == EigenvalueFilter::kExact) exact_backoff_ = 1;
     // Only a factorization tells whether the exact Hessian is positive
-    // definite; it is tried where Newton's model held (module comment).
-    const bool model_held = state.previous_step == 0 || (state.previous_step == 1 && !state.previous_backtracked);
+    // definite; it is tried where Newton's model held, never before the
+    // first step, which uses the clamp (module comment).
+    const bool model_held = state.previous_step == 1 && !state.previous_backtracked;
+    if (state.previous_step == 0) negative_share_ = 1;
     last_filter_ = exact_wait_ > 0 || !model_held || !this->solves_by_factorization() ? EigenvalueFilter::kClamp
                                                                                       : EigenvalueFilter::kExact;
     if (exact_wait_ > 0) --exact_wait_;
