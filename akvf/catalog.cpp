@@ -55,7 +55,23 @@ SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const Precondition
 // do not pay before their start, and no second analysis or factor is kept.
 // Both phases give up a failed factorization reuse after one CG iteration
 // (factored_preconditioner.h, reuse_check_from); the AKVF phase reuses its
-// factor rounded to single precision (reuse_in_single_precision).
+// factor rounded to single precision (reuse_in_single_precision), and only
+// a factor that took at least kReuseMinFlopsPerEntry flops per entry.
+//
+// The flops per entry: CHOLMOD's own switch between a simplicial and a
+// supernodal factorization (its supernodal_switch, 40). Below it the factor
+// is so sparse that factoring costs a few solves (camel_b, cow_b, tricera_b,
+// hilbert_b: 2.9-4.3 solves; camelhead and horse_b, at 175 and 86 flops per
+// entry, 14 and 7), while a reuse in single precision costs a pass over the
+// factor and, per CG iteration, a solve and a product with K, so it rarely
+// pays there: hilbert_b's symmetric Dirichlet run takes the same 15
+// iterations 8 % sooner without it
+// (docs/notes/2026-11-29-first-assembly-and-reuse.md).
+// The Newton phase keeps its reuses: the seam rounds start in it, and their
+// globally injective end took other paths without them (cow_bunny_calf's
+// optimizer time 1.86 -> 4.97 s; docs/notes/2026-11-28-divergence-weight.md).
+constexpr double kReuseMinFlopsPerEntry = 40;
+
 template <int D, class Akvf, class Settings>
 std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objective, const Settings& settings) {
   FactorOptions newton = newton_phase_options(settings);
@@ -63,6 +79,7 @@ std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objecti
   const EigenvalueFilter filter = settings.newton_phase_filter;
   auto akvf_options = settings.akvf;
   akvf_options.factor.reuse_check_from = 1;
+  akvf_options.factor.reuse_min_flops_per_entry = kReuseMinFlopsPerEntry;
   // The far phase: its reuses may precondition in single precision.
   akvf_options.factor.reuse_in_single_precision = true;
   auto factored = [](Preconditioner& current) -> FactoredPreconditioner<D>& {

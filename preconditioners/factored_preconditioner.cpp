@@ -57,6 +57,8 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
   if (options_.cg_max_iterations < 1) throw OptionsError("CG needs at least one iteration");
   if (options_.reuse_max_cg < 1) throw OptionsError("factorization reuse needs at least one CG iteration");
   if (options_.reuse_check_from < 1) throw OptionsError("a reuse attempt can be checked from CG iteration 1 on");
+  if (!(options_.reuse_min_flops_per_entry >= 0))
+    throw OptionsError("the least flops per factor entry for a reuse must be >= 0");
   if (!(options_.auto_factor_bytes >= 0)) throw OptionsError("the automatic solver choice's factor limit must be >= 0");
   // Nothing to choose without multigrid, or with the Jacobi CG solve.
   if (options_.linear_solver == LinearSolver::kAuto && (!AlgebraicMultigrid::available() || options_.cg_tolerance > 0))
@@ -159,12 +161,17 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   if (options_.cg_tolerance > 0) return;  // apply() runs CG on the assembled matrix
   // Without reuse, or before the first factorization, factor now (§5.2);
   // otherwise apply() decides whether the previous factor still serves.
-  if (options_.reuse_tolerance <= 0 || !factored_) {
+  if (options_.reuse_tolerance <= 0 || !factored_ || !reuse_may_pay()) {
     factorize_current();
   } else if (skip_reuse_ > 0) {
     --skip_reuse_;
     factorize_current();
   }
+}
+
+template <int D>
+bool FactoredPreconditioner<D>::reuse_may_pay() const {
+  return cholesky_.factor_flops() >= options_.reuse_min_flops_per_entry * cholesky_.factor_nonzeros();
 }
 
 template <int D>

@@ -39,6 +39,10 @@
 // when ||P d - g|| <= tau ||g|| within max_cg iterations (a CG iterate is
 // always a descent direction: g^T d = d^T P d > 0), else factor and skip
 // further attempts for 1, 2, 4, ... iterations after consecutive failures.
+// With reuse_min_flops_per_entry, a factor that took fewer flops per entry
+// to compute is never reused (factoring anew costs a few solves there;
+// akvf-newton's AKVF phase sets CHOLMOD's supernodal switch, 40:
+// catalog.cpp).
 // An attempt is abandoned as soon as its mean residual contraction, continued
 // to max_cg, would miss tau by more than 3x (that saves most of the cost of
 // a failed attempt; on horse_b it turns 1.05 s into 1.0 s), checked from CG
@@ -115,6 +119,9 @@ struct FactorOptions {
   double reuse_tolerance = 0;        // tau; 0 factors at every update
   int reuse_max_cg = 8;
   int reuse_check_from = 2;  // the first CG iteration at which a reuse may be abandoned (module comment)
+  // Reuse only a factor that took at least this many flops per entry to
+  // compute (module comment); 0: any.
+  double reuse_min_flops_per_entry = 0;
   // Reuse with the earlier factor rounded to single precision (module comment).
   bool reuse_in_single_precision = false;
   // > 0: never factor; solve (P + shift) d = g by Jacobi-preconditioned
@@ -217,6 +224,8 @@ class FactoredPreconditioner : public Preconditioner {
   bool fixed_system() const { return is_constant() && !options_.contact_curvature; }
   // Adds the Tikhonov shift and the extra diagonal to the assembled P.
   void add_shift();
+  // The factor's flops per entry reach reuse_min_flops_per_entry (FactorOptions).
+  bool reuse_may_pay() const;
   // Factors the assembled matrix; when it is not positive definite, raises
   // the shift (module comment) and retries.
   void factorize_current();

@@ -37,10 +37,10 @@
 // clamp); the exact one is tried again after 1, 2, 4, ... iterations
 // (consecutive failures double the wait, a success resets it), as
 // factorization reuse backs off, and the iterations between use the
-// fallback. mu starts at 1/16, is quadrupled while P does not factor
-// (each try costs a factorization; at most three: 1/16, 1/4, 1), and
-// after a fallback that factored at its first try it follows the step, as
-// a trust region's radius does: quartered (down to 1/16) after Newton's
+// fallback. mu starts at 1/16 (at 1 before a run's first step, below),
+// is quadrupled while P does not factor (each try costs a factorization;
+// at most three: 1/16, 1/4, 1), and after a fallback that factored at its
+// first try it follows the step, as a trust region's radius does: quartered (down to 1/16) after Newton's
 // unit step was accepted at once (the model held), quadrupled (up to the
 // clamp) after a step the flip-free bound set (the model's minimizer lay
 // beyond an inversion: more damping shortens the direction toward the
@@ -54,12 +54,17 @@
 // that matter; on cow_closed cut to a disk the default's Newton phase
 // crept with unit steps for 384 iterations that way, and takes 33 with
 // the partial fallback. The exact Hessian is tried
-// only at the start or after a unit step accepted at once: that is where
-// Newton's model held, near a minimum, where the Hessian is positive
-// definite. After a step the flip-free bound or the line search shortened
-// (a switch from AKVF's far phase included), the model's minimizer was not
-// acceptable and the exact Hessian is usually indefinite there, so the try
-// would cost a numeric factorization that fails; the fallback (with its
+// only after a unit step accepted at once: that is where Newton's model
+// held, near a minimum, where the Hessian is positive definite. Before the
+// first step nothing has tested the model, and the run's first assembly is
+// the clamp, which always factors (mu starts at 1 and follows the steps from
+// there): after the exponential energies' warm start the exact Hessian is
+// not positive definite at the first iterate of camelhead's and horse_b's
+// AMIPS, and trying it and then the partial shares took up to four
+// factorizations there where one serves. After a step the flip-free bound
+// or the line search shortened (a switch from AKVF's far phase included),
+// the model's minimizer was not acceptable and the exact Hessian is
+// usually indefinite there, so the try would cost a numeric factorization that fails; the fallback (with its
 // mu) is used at once instead. On the SLIM cube the default then reaches
 // the 1e-4 band in 6 iterations instead of 7 after its switch
 // (docs/design.md); on the disk meshes of ../shared/meshes/tri the

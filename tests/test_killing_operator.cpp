@@ -307,6 +307,31 @@ TEST_CASE("with factorization reuse the direction solves K(x) d = g to the toler
   CHECK((akvf::rigid_motion_basis_2d(x2).transpose() * d).norm() <= 1e-10 * d.norm());
 }
 
+TEST_CASE("a factor that took fewer flops per entry than reuse_min_flops_per_entry is not reused") {
+  akvf::TriMesh normalized = akvf::test::bumpy_disk(8, 8);
+  const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
+  const Eigen::VectorXd x1 = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 4) * 0.9);
+  const Eigen::VectorXd x2 = x1 + 1e-3 * akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 5));
+  for (const bool sparse_factor_reused : {true, false}) {
+    CAPTURE(sparse_factor_reused);
+    akvf::AkvfOptions2D options;
+    options.factor.reuse_tolerance = 0.01;
+    // This small disk's factor takes far fewer than 1e6 flops per entry.
+    options.factor.reuse_min_flops_per_entry = sparse_factor_reused ? 0 : 1e6;
+    akvf::AkvfPreconditioner2D preconditioner(objective, options);
+    Eigen::VectorXd g, d;
+    direction_after(objective, x1, x2, &preconditioner, &g, &d);
+    CHECK(preconditioner.statistics().factorizations == (sparse_factor_reused ? 1 : 2));
+    CHECK(preconditioner.statistics().reused_solves == (sparse_factor_reused ? 1 : 0));
+    CHECK((preconditioner.statistics().cg_iterations > 0) == sparse_factor_reused);  // no reuse attempted
+    const Eigen::MatrixXd K = dense_killing(objective.elements(), x2, objective.rest().area, true);
+    CHECK((K * d - g).norm() <= (sparse_factor_reused ? 0.011 : 1e-8) * g.norm());
+  }
+  akvf::FactorOptions invalid;
+  invalid.reuse_min_flops_per_entry = -1;
+  CHECK_THROWS_AS(ReweightedLaplacian(objective, invalid), akvf::OptionsError);
+}
+
 TEST_CASE("a reuse whose first CG iteration barely contracts is given up there when checked from the first") {
   akvf::TriMesh grid = akvf::test::grid_disk(12, 12);
   const akvf::DistortionObjective2D objective = unit_area_objective(&grid);
