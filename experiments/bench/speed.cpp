@@ -214,35 +214,40 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
       continue;
     }
     std::vector<Row> rows;
-    std::vector<std::vector<std::vector<akvf::IterationSummary>>> traces;  // per method, per repeat
+    std::vector<std::string> ours;  // the methods of this library, in the order given
     double lowest = std::numeric_limits<double>::infinity();
     std::vector<Row> peers;
     for (const std::string& method : methods) {
-      if (method == "cgal") {
-#ifdef AKVF_SPEED_WITH_CGAL
-        peers.push_back(cgal_arap_row(mesh, &lowest));
-#endif
+      if (method != "cgal") {
+        ours.push_back(method);
         continue;
       }
-      akvf::ParameterizeOptions options;
-      options.energy = energy;
-      options.preconditioner = method_name(method, options.preconditioner);
-      // The flip-free problem the peers (TinyAD, libigl's SLIM) solve; the
-      // cost of global injectivity is measured in docs/design.md.
-      options.injectivity = akvf::Injectivity::kLocal;
-      std::vector<double> seconds;
-      akvf::ParameterizeResult result;
-      traces.emplace_back();
-      for (int i = 0; i < repeat; ++i) {
-        result = akvf::parameterize(mesh.V, mesh.F, options);
-        seconds.push_back(result.statistics.seconds);
-        for (const auto& row : result.trace)
-          if (!row.warm_start) lowest = std::min(lowest, row.energy);
-        traces.back().push_back(result.trace);
-      }
-      rows.push_back({method == "default" ? "default (" + options.preconditioner + ")" : method, result.iterations(),
-                      median(seconds), akvf::to_string(result.status), result.energy()});
+#ifdef AKVF_SPEED_WITH_CGAL
+      peers.push_back(cgal_arap_row(mesh, &lowest));
+#endif
     }
+    // The repeats go round the methods (one run of each, then the next
+    // round), so that a slow stretch of the machine falls on all of them.
+    std::vector<std::vector<std::vector<akvf::IterationSummary>>> traces(ours.size());  // per method, per repeat
+    std::vector<std::vector<double>> run_seconds(ours.size());
+    std::vector<akvf::ParameterizeResult> last(ours.size());
+    for (int i = 0; i < repeat; ++i)
+      for (std::size_t m = 0; m < ours.size(); ++m) {
+        akvf::ParameterizeOptions options;
+        options.energy = energy;
+        options.preconditioner = method_name(ours[m], options.preconditioner);
+        // The flip-free problem the peers (TinyAD, libigl's SLIM) solve; the
+        // cost of global injectivity is measured in docs/design.md.
+        options.injectivity = akvf::Injectivity::kLocal;
+        last[m] = akvf::parameterize(mesh.V, mesh.F, options);
+        run_seconds[m].push_back(last[m].statistics.seconds);
+        for (const auto& row : last[m].trace)
+          if (!row.warm_start) lowest = std::min(lowest, row.energy);
+        traces[m].push_back(last[m].trace);
+      }
+    for (std::size_t m = 0; m < ours.size(); ++m)
+      rows.push_back({ours[m] == "default" ? "default (" + akvf::ParameterizeOptions{}.preconditioner + ")" : ours[m],
+                      last[m].iterations(), median(run_seconds[m]), akvf::to_string(last[m].status), last[m].energy()});
     for (std::size_t m = 0; m < rows.size(); ++m) {
       std::vector<double> seconds;
       for (const auto& trace : traces[m])
@@ -284,12 +289,10 @@ void run_3d(const std::filesystem::path& data, const std::vector<std::string>& m
     std::string file, label;
     bool cube;
   };
-  const std::vector<Case> cases = {{"cube_4k.obj", "cube_4k (slim-cube)", true},
-                                   {"octopus-low.mesh", "octopus-low (lifted)", false},
-                                   {"bar.tet", "bar (lifted)", false},
-                                   {"cube_40k.obj", "cube_40k (slim-cube)", true},
-                                   {"cube_4k.obj", "cube_4k (lifted)", false},
-                                   {"cube_40k.obj", "cube_40k (lifted)", false}};
+  const std::vector<Case> cases = {
+      {"cube_4k.obj", "cube_4k (slim-cube)", true}, {"octopus-low.mesh", "octopus-low (lifted)", false},
+      {"bar.tet", "bar (lifted)", false},           {"cube_40k.obj", "cube_40k (slim-cube)", true},
+      {"cube_4k.obj", "cube_4k (lifted)", false},   {"cube_40k.obj", "cube_40k (lifted)", false}};
   std::cout << "\n| tet mesh | tets | unit (ms) | CHOLMOD unit (ms) | method | iterations to 1e-4 | seconds | units | "
                "CHOLMOD units | / best | status | energy |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Case& c : cases) {
@@ -308,31 +311,31 @@ void run_3d(const std::filesystem::path& data, const std::vector<std::string>& m
       options.max_iters = 200;
       return akvf::deform(mesh.V, mesh.T, constraints, options);
     };
-    // First runs of every method give the lowest energy any reaches.
-    std::vector<akvf::DeformResult> results;
+    // The repeats go round the methods, as in 2D; every run counts for the
+    // lowest energy any reaches.
+    std::vector<std::vector<akvf::DeformResult>> results(methods.size());
     double lowest = std::numeric_limits<double>::infinity();
-    for (const std::string& method : methods) {
-      results.push_back(run(method));
-      for (const auto& row : results.back().trace) lowest = std::min(lowest, row.energy);
-    }
+    for (int i = 0; i < repeat; ++i)
+      for (std::size_t m = 0; m < methods.size(); ++m) {
+        results[m].push_back(run(methods[m]));
+        for (const auto& row : results[m].back().trace) lowest = std::min(lowest, row.energy);
+      }
     std::vector<Row> rows;
     for (std::size_t m = 0; m < methods.size(); ++m) {
       Row row;
       row.method = methods[m] == "default" ? "default (" + akvf::DeformOptions{}.preconditioner + ")" : methods[m];
       row.status = "not reached";
-      row.iterations = results[m].iterations();
-      row.seconds = results[m].statistics.seconds;
-      row.energy = results[m].energy();
+      row.iterations = results[m].front().iterations();
+      row.seconds = results[m].front().statistics.seconds;
+      row.energy = results[m].front().energy();
       std::vector<double> seconds;
-      for (int i = 0; i < repeat; ++i) {
-        const akvf::DeformResult r = i == 0 ? results[m] : run(methods[m]);
+      for (const akvf::DeformResult& r : results[m])
         if (const akvf::IterationSummary* trace_row = first_within(r.trace, lowest, 1e-4)) {
           seconds.push_back(trace_row->seconds);
           row.iterations = trace_row->iteration;
           row.status = "reached";
           row.energy = trace_row->energy;
         }
-      }
       if (!seconds.empty()) row.seconds = median(seconds);
       rows.push_back(row);
     }
@@ -377,6 +380,7 @@ int main(int argc, char** argv) {
                    "[--repeat N] [--min-faces N] [--only 2d|3d]\n"
                    "  --energy NAME  the 2D runs' energy (default symmetric-dirichlet; `akvf list` names them)\n"
                    "  --min-faces N  the 2D meshes of at least N faces (default 10000)\n"
+                   "  --repeat N     N runs of each method, taken in turn, and their median time (default 1)\n"
                    "  cgal           CGAL's ARAP parameterizer, 2D with --energy arap only; in the default list\n"
                    "                 then, where this build found CGAL\n";
       return arg == "--help" || arg == "-h" ? 0 : 2;
