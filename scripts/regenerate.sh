@@ -7,7 +7,7 @@
 # per energy and in 3D, the thread benchmarks, CGAL's ARAP, the seams and
 # xatlas tables, global injectivity's cost, Figure 8's and cube_4k's tables.
 # Each step's output and seconds go to OUT/<step>.md and OUT/steps.tsv.
-# About 60 minutes on the 2-core development VM (Figure 6 alone 33); run it
+# About 75 minutes on the 2-core development VM (Figure 6 alone 33); run it
 # with nothing else on the machine, since every table has timings.
 # Usage: bash scripts/regenerate.sh [OUT]   (after scripts/build.sh; needs
 # node and npm for xatlas, ../shared/meshes or $AKVF_DATA_DIR)
@@ -50,9 +50,10 @@ done
 step figure8_plots bash scripts/figure8.sh
 step pairs bash scripts/pairs.sh
 [ "$rc" -ne 0 ] || cp "$OUT/pairs.md" docs/pairs.md  # rc: the last step's exit code
-step speed ./build/akvf_speed
+# Medians of five runs, taken in turn over the methods.
+step speed ./build/akvf_speed --repeat 5
 for energy in arap mips amips exp-symmetric-dirichlet; do
-  step "speed_$energy" ./build/akvf_speed --only 2d --energy "$energy"
+  step "speed_$energy" ./build/akvf_speed --only 2d --energy "$energy" --repeat 5
 done
 step threads ./build/akvf_benchmarks \
   --benchmark_filter='^(NumericFactorization|Solve)/horse_b.obj/x(16|64)(/threads:1)?$' \
