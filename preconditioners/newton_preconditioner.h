@@ -37,42 +37,40 @@
 // clamp); the exact one is tried again after 1, 2, 4, ... iterations
 // (consecutive failures double the wait, a success resets it), as
 // factorization reuse backs off, and the iterations between use the
-// fallback. mu starts at 1/16 (at 1 before a run's first step, below),
-// is quadrupled while P does not factor (each try costs a factorization;
-// at most three: 1/16, 1/4, 1), and after a fallback that factored at its
-// first try it follows the step, as a trust region's radius does: quartered (down to 1/16) after Newton's
-// unit step was accepted at once (the model held), quadrupled (up to the
-// clamp) after a step the flip-free bound set (the model's minimizer lay
-// beyond an inversion: more damping shortens the direction toward the
-// collapsing elements, and a share the next factorization would reject is
-// not tried again and again), kept after one the line search shortened.
-// A Levenberg-Marquardt damping whose regularizer is the part of the
-// Hessian the clamp removes, not the identity. Why not the clamp at once:
-// where the exact Hessian is only slightly indefinite (a plateau or saddle
-// of a heavily compressed map), the clamp throws away every element's
-// negative curvature and P is much stiffer than H along the directions
-// that matter; on cow_closed cut to a disk the default's Newton phase
-// crept with unit steps for 384 iterations that way, and takes 33 with
-// the partial fallback. The exact Hessian is tried
-// only after a unit step accepted at once: that is where Newton's model
-// held, near a minimum, where the Hessian is positive definite. Before the
-// first step nothing has tested the model, and the run's first assembly is
-// the clamp, which always factors (mu starts at 1 and follows the steps from
-// there): after the exponential energies' warm start the exact Hessian is
-// not positive definite at the first iterate of camelhead's and horse_b's
-// AMIPS, and trying it and then the partial shares took up to four
-// factorizations there where one serves. After a step the flip-free bound
-// or the line search shortened (a switch from AKVF's far phase included),
-// the model's minimizer was not acceptable and the exact Hessian is
-// usually indefinite there, so the try would cost a numeric factorization that fails; the fallback (with its
-// mu) is used at once instead. On the SLIM cube the default then reaches
-// the 1e-4 band in 6 iterations instead of 7 after its switch
-// (docs/design.md); on the disk meshes of ../shared/meshes/tri the
-// iterations are unchanged. Where the caller knows the Hessian to be far
-// from positive definite (akvf-newton's switch with the soft constraints
-// still far, switching_preconditioner.h), the first fallback is the clamp
-// instead of mu = 1/16 (start_fallback_at_clamp), saving the tries that
-// would fail. Only a factorization tells
+// fallback. mu starts at 1/16 (at 1 before a run's first step, below), is
+// quadrupled while P does not factor (each try costs a factorization; at most
+// three: 1/16, 1/4, 1), and after a fallback that factored at its first try it
+// follows the step, as a trust region's radius does: quartered (down to 1/16)
+// after Newton's unit step was accepted at once (the model held), quadrupled
+// (up to the clamp) after a step the flip-free bound set (the model's minimizer
+// lay beyond an inversion: more damping shortens the direction toward the
+// collapsing elements, and a share the next factorization would reject is not
+// tried again and again), kept after one the line search shortened. A
+// Levenberg-Marquardt damping whose regularizer is the part of the Hessian the
+// clamp removes, not the identity. Why not the clamp at once: where the exact
+// Hessian is only slightly indefinite (a plateau or saddle of a heavily
+// compressed map), the clamp throws away every element's negative curvature and
+// P is much stiffer than H along the directions that matter; on cow_closed cut
+// to a disk the default's Newton phase crept with unit steps for 384 iterations
+// that way, and takes 33 with the partial fallback. The exact Hessian is tried
+// only after a unit step accepted at once: that is where Newton's model held,
+// near a minimum, where the Hessian is positive definite. Before the first step
+// nothing has tested the model, and the run's first assembly is the clamp,
+// which always factors (mu starts at 1 and follows the steps from there): after
+// the exponential energies' warm start the exact Hessian is not positive
+// definite at the first iterate of camelhead's and horse_b's AMIPS, and trying
+// it and then the partial shares took up to four factorizations there where one
+// serves. After a step the flip-free bound or the line search shortened (a
+// switch from AKVF's far phase included), the model's minimizer was not
+// acceptable and the exact Hessian is usually indefinite there, so the try
+// would cost a numeric factorization that fails; the fallback (with its mu) is
+// used at once instead. On the SLIM cube the default then reaches the 1e-4 band
+// in 6 iterations instead of 7 after its switch (docs/design.md); on the disk
+// meshes of ../shared/meshes/tri the iterations are unchanged. Where the caller
+// knows the Hessian to be far from positive definite (akvf-newton's switch with
+// the soft constraints still far, switching_preconditioner.h), the first
+// fallback is the clamp instead of mu = 1/16 (start_fallback_at_clamp), saving
+// the tries that would fail. Only a factorization tells
 // whether the Hessian is positive definite: with multigrid or Jacobi CG
 // (FactorOptions) kExact clamps.
 #include <string>
