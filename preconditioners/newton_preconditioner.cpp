@@ -97,7 +97,7 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
     // definite; it is tried where Newton's model held, never before the
     // first step, which uses the clamp (module comment).
     const bool model_held = state.previous_step == 1 && !state.previous_backtracked;
-    if (state.previous_step == 0) negative_share_ = 1;
+    if (state.previous_step == 0) start_fallback_at_clamp();
     last_filter_ = exact_wait_ > 0 || !model_held || !this->solves_by_factorization() ? EigenvalueFilter::kClamp
                                                                                       : EigenvalueFilter::kExact;
     if (exact_wait_ > 0) --exact_wait_;
