@@ -82,8 +82,16 @@ EigenvalueFilter NewtonPreconditioner<D>::adaptive_choice(const OptimizationStat
   }
   previous_x_ = state.x;
   previous_gradient_ = state.gradient;
-  previous_energy_ = state.energy;
   return choice;
+}
+
+template <int D>
+bool NewtonPreconditioner<D>::model_held_near_minimum(const OptimizationState& state) const {
+  if (!(state.previous_step == 1 && !state.previous_backtracked)) return false;
+  // Not halved where E_lb is unknown (-inf) or there is no earlier energy (NaN).
+  const double lower_bound = objective_.lower_bound();
+  const bool halved = state.energy - lower_bound < 0.5 * (previous_energy_ - lower_bound);
+  return !halved;
 }
 
 template <int D>
@@ -96,7 +104,7 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
     // Only a factorization tells whether the exact Hessian is positive
     // definite; it is tried where Newton's model held, never before the
     // first step, which uses the clamp (module comment).
-    const bool model_held = state.previous_step == 1 && !state.previous_backtracked;
+    const bool model_held = model_held_near_minimum(state);
     if (state.previous_step == 0) start_fallback_at_clamp();
     last_filter_ = exact_wait_ > 0 || !model_held || !this->solves_by_factorization() ? EigenvalueFilter::kClamp
                                                                                       : EigenvalueFilter::kExact;
@@ -112,9 +120,10 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
     const bool bound_set = state.previous_step > 0 && state.previous_step < 1 && !state.previous_backtracked;
     if (bound_set)
       negative_share_ = std::min(1.0, 4 * negative_share_);
-    else if (state.previous_step == 1)
+    else if (model_held_near_minimum(state))
       negative_share_ = std::max(kLeastNegativeShare, negative_share_ / 4);
   }
+  previous_energy_ = state.energy;
   partial_ = filter_ == EigenvalueFilter::kExact && last_filter_ == EigenvalueFilter::kClamp &&
              this->solves_by_factorization();
   partial_failed_ = false;

@@ -41,7 +41,7 @@
 // quadrupled while P does not factor (each try costs a factorization; at most
 // three: 1/16, 1/4, 1), and after a fallback that factored at its first try it
 // follows the step, as a trust region's radius does: quartered (down to 1/16)
-// after Newton's unit step was accepted at once (the model held), quadrupled
+// after Newton's model held near the minimum (below), quadrupled
 // (up to the clamp) after a step the flip-free bound set (the model's minimizer
 // lay beyond an inversion: more damping shortens the direction toward the
 // collapsing elements, and a share the next factorization would reject is not
@@ -53,8 +53,19 @@
 // P is much stiffer than H along the directions that matter; on cow_closed cut
 // to a disk the default's Newton phase crept with unit steps for 384 iterations
 // that way, and takes 33 with the partial fallback. The exact Hessian is tried
-// only after a unit step accepted at once: that is where Newton's model held,
-// near a minimum, where the Hessian is positive definite. Before the first step
+// only where Newton's model held near a minimum, where the Hessian is positive
+// definite: after a unit step accepted at once that left more than half of
+// E - E_lb (E_lb the energy's infimum). A unit step that took E more than
+// halfway down to E_lb was made far from the minimum: there the exponential
+// energies' Newton steps lower log E by about 1 each (E - E_lb falls by a
+// factor of about e), and their Hessian is rarely positive definite (on
+// camelhead's exp-SD the exact tries and the lowered shares failed to factor
+// 23 times in 114 iterations). Above a minimum E* > E_lb the gap halves at most
+// log2((E - E_lb) / (E* - E_lb)) times, so near it every try is made; near an
+// isometric minimum (E* = E_lb), where it may halve at every step, the clamp
+// and the exact Hessian differ by the compressed elements' twist curvature,
+// which vanishes there. Where E_lb is unknown a unit step accepted at once
+// suffices. Before the first step
 // nothing has tested the model, and the run's first assembly is the clamp,
 // which always factors (mu starts at 1 and follows the steps from there): after
 // the exponential energies' warm start the exact Hessian is not positive
@@ -73,6 +84,7 @@
 // the tries that would fail. Only a factorization tells
 // whether the Hessian is positive definite: with multigrid or Jacobi CG
 // (FactorOptions) kExact clamps.
+#include <limits>
 #include <string>
 
 #include "akvf/mesh_objective.h"
@@ -145,6 +157,10 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   void assemble_current(const Eigen::VectorXd& x, const Eigen::VectorXd& gradient, Matrix* matrix) const;
   // kAdaptive's choice at `state` (and remembers the state for the next).
   EigenvalueFilter adaptive_choice(const OptimizationState& state);
+  // kExact: the last step was Newton's unit step accepted at once and left
+  // more than half of E - E_lb, where the model held near the minimum
+  // (module comment).
+  bool model_held_near_minimum(const OptimizationState& state) const;
   // s^T H(x) s with the unfiltered Hessian, the constraints' term included.
   double exact_curvature(const Eigen::VectorXd& x, const Eigen::VectorXd& s) const;
 
@@ -161,8 +177,8 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   bool partial_ = false, partial_failed_ = false;
   double negative_share_ = kLeastNegativeShare;
   int partial_fallbacks_ = 0;
-  Eigen::VectorXd previous_x_, previous_gradient_;
-  double previous_energy_ = 0;
+  Eigen::VectorXd previous_x_, previous_gradient_;  // kAdaptive: at the last assembly
+  double previous_energy_ = std::numeric_limits<double>::quiet_NaN();  // at the last assembly
 };
 
 using NewtonPreconditioner2D = NewtonPreconditioner<2>;

@@ -753,6 +753,24 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
     CHECK(exact.negative_share() == std::min(1.0, 4 * share));
     CHECK(exact.partial_fallbacks() == 2 * failures);
   }
+  SUBCASE("after a unit step that took E more than halfway down to its infimum, nothing nearer the exact Hessian") {
+    akvf::TriMesh mesh = akvf::test::grid_disk(7, 6, 0.2, 3);
+    const akvf::DistortionObjective2D objective = unit_area_objective(&mesh);
+    // Symmetric Dirichlet at a uniform scale s is 2 (s^2 + s^-2); its infimum is 4.
+    const auto scaled = [&](double s) { return Eigen::VectorXd(akvf::stack_uv(mesh.V.leftCols<2>() * s)); };
+    akvf::NewtonPreconditioner2D exact(objective, {}, akvf::default_newton_projection(2),
+                                       akvf::EigenvalueFilter::kExact);
+    Eigen::MatrixXd P;
+    direction_and_matrix(objective, scaled(0.8), &exact, &P, 0);  // the run's first assembly: the clamp
+    CHECK(exact.negative_share() == 1);
+    direction_and_matrix(objective, scaled(0.99), &exact, &P);  // E - 4: 0.41 -> 0.0008
+    CHECK(exact.last_filter() == akvf::EigenvalueFilter::kClamp);
+    CHECK(exact.exact_assemblies() == 0);
+    CHECK(exact.negative_share() == 1);
+    direction_and_matrix(objective, scaled(0.99), &exact, &P);  // a unit step that left all of it
+    CHECK(exact.last_filter() == akvf::EigenvalueFilter::kExact);
+    CHECK(exact.report().find("exact Hessian at 1 of 1 tries") != std::string::npos);
+  }
   SUBCASE("solved by CG, which cannot tell whether the Hessian is definite, the element Hessians are clamped") {
     const akvf::DistortionObjective2D& objective = bumpy_objective;
     const Eigen::VectorXd x = shrunk_map(0.2, 0.8);
