@@ -177,7 +177,7 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   bool partial_ = false, partial_failed_ = false;
   double negative_share_ = kLeastNegativeShare;
   int partial_fallbacks_ = 0;
-  Eigen::VectorXd previous_x_, previous_gradient_;  // kAdaptive: at the last assembly
+  Eigen::VectorXd previous_x_, previous_gradient_;                     // kAdaptive: at the last assembly
   double previous_energy_ = std::numeric_limits<double>::quiet_NaN();  // at the last assembly
 };
 
