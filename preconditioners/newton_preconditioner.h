@@ -59,8 +59,9 @@
 // halfway down to E_lb was made far from the minimum: there the exponential
 // energies' Newton steps lower log E by about 1 each (E - E_lb falls by a
 // factor of about e), and their Hessian is rarely positive definite (on
-// camelhead's exp-SD the exact tries and the lowered shares failed to factor
-// 23 times in 114 iterations). Above a minimum E* > E_lb the gap halves at most
+// camelhead's exp-SD, tries after every unit step cost 23 factorizations that
+// fail in 114 iterations: docs/notes/2026-11-29-exact-tries-far-from-minimum.md).
+// Above a minimum E* > E_lb the gap halves at most
 // log2((E - E_lb) / (E* - E_lb)) times, so near it every try is made; near an
 // isometric minimum (E* = E_lb), where it may halve at every step, the clamp
 // and the exact Hessian differ by the compressed elements' twist curvature,
