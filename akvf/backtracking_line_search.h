@@ -4,6 +4,10 @@
 // and shrink alpha <- rho alpha until the first Wolfe (Armijo) condition
 //   E(x + alpha d) <= E(x) + c1 alpha grad E(x)^T d
 // holds. An inverted element makes E infinite, so no accepted step flips.
+// When alpha_0 is the unit step, each failed trial is followed by one at
+// the same alpha along the path that follows the elements' turns
+// (Objective::rotation_following_term), taken if the straight segment to it
+// is flip-free and it meets the condition (LineSearchSummary::turn).
 #include "akvf/line_search.h"
 
 namespace akvf {

@@ -29,6 +29,9 @@ class SoftConstrainedObjective final : public Objective {
   int count_inverted(const Eigen::VectorXd& x) const override { return base_.count_inverted(x); }
   std::string first_bad_element(const Eigen::VectorXd& x) const override { return base_.first_bad_element(x); }
   double lower_bound() const override { return base_.lower_bound(); }
+  bool rotation_following_term(const Eigen::VectorXd& x, const Eigen::VectorXd& d, Eigen::VectorXd* a) const override {
+    return base_.rotation_following_term(x, d, a);
+  }
 
   double constraint_distance(const Eigen::VectorXd& x) const override;
 
@@ -58,6 +61,12 @@ class FixedVerticesObjective final : public Objective {
   int count_inverted(const Eigen::VectorXd& x) const override { return base_.count_inverted(x); }
   std::string first_bad_element(const Eigen::VectorXd& x) const override { return base_.first_bad_element(x); }
   double lower_bound() const override { return base_.lower_bound(); }
+  // The base's term, 0 on the fixed coordinates (which never move).
+  bool rotation_following_term(const Eigen::VectorXd& x, const Eigen::VectorXd& d, Eigen::VectorXd* a) const override {
+    if (!base_.rotation_following_term(x, d, a)) return false;
+    *a = a->cwiseProduct(free_mask_);
+    return true;
+  }
   // 0: the fixed vertices sit at their targets from the start and never move.
   double constraint_distance(const Eigen::VectorXd&) const override { return 0; }
 

@@ -37,7 +37,19 @@ struct LineSearchSummary {
   int evaluations = 0;  // energy evaluations
   double seconds = 0;
   std::string message;  // why it failed
+  // The rotation-following term a (Objective::rotation_following_term) when
+  // the accepted point is x + step d + (step^2 / 2) a; empty for a straight
+  // step.
+  Eigen::VectorXd turn;
 };
+
+// The point a search accepted: x + step d, plus (step^2 / 2) turn if any.
+Eigen::VectorXd accepted_point(const Eigen::VectorXd& x, const Eigen::VectorXd& direction,
+                               const LineSearchSummary& summary);
+// The point at alpha along x + alpha d + (alpha^2 / 2) turn (turn empty:
+// straight), written into *point.
+void point_along_path(const Eigen::VectorXd& x, const Eigen::VectorXd& direction, const Eigen::VectorXd& turn,
+                      double alpha, Eigen::VectorXd* point);
 
 struct LineSearchInput {
   const Objective& objective;

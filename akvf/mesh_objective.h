@@ -39,6 +39,11 @@ class MeshObjective : public Objective {
   // preconditioner includes it, so a new one gets the constraints without
   // being listed anywhere.
   virtual const Eigen::VectorXd& added_hessian_diagonal() const = 0;
+  // Objective::rotation_following_term from the elements at x: per vertex
+  // a_v = W_v d_v, with W_v the skew part of the velocity gradient of d
+  // (Dd Ds^-1) averaged over the vertex's elements, weighted by their
+  // current measure (rotation_following_path.cpp).
+  bool rotation_following_term(const Eigen::VectorXd& x, const Eigen::VectorXd& d, Eigen::VectorXd* a) const override;
 };
 
 using MeshObjective2D = MeshObjective<2>;

@@ -47,6 +47,15 @@ class Objective {
   // constrained vertex from its target at x (how far the constraints are
   // from met; the trace's constraint_distance column). NaN without them.
   virtual double constraint_distance(const Eigen::VectorXd&) const { return std::numeric_limits<double>::quiet_NaN(); }
+  // The second-order term a of the path x + t d + (t^2 / 2) a that follows
+  // the turns of the elements d makes at x (the energies do not change under
+  // a rotation, but a straight step along one stretches the element by
+  // sqrt(1 + t^2 w^2)); false where the objective has none. The backtracking
+  // line search tries that path where the straight trial fails.
+  virtual bool rotation_following_term(const Eigen::VectorXd& /*x*/, const Eigen::VectorXd& /*d*/,
+                                       Eigen::VectorXd* /*a*/) const {
+    return false;
+  }
 };
 
 }  // namespace akvf

@@ -84,7 +84,7 @@ TEST_CASE("neither line search ever returns a step that inverts a triangle") {
       const auto summary = search.search(objective, x, energy, g, d);
       REQUIRE(summary.success);
       CHECK(summary.step <= 0.8 * summary.max_feasible_step);
-      CHECK(objective.count_inverted(x + summary.step * d) == 0);
+      CHECK(objective.count_inverted(akvf::accepted_point(x, d, summary)) == 0);
       CHECK(summary.energy < energy);
       CHECK(summary.energy <= energy + 1e-5 * summary.step * g.dot(d));  // Armijo
     }

@@ -112,6 +112,7 @@ TEST_CASE("symmetric Dirichlet reaches exactly 4 on a developable mesh") {
   config.optimizer.gradient_tolerance = 1e-7;
   config.optimizer.max_iterations = 500;
   const auto result = run(akvf::bent_bar(31, 6), config, {no_flips_allowed()}).result;
+  CAPTURE(result.message);
   CHECK(result.status == TerminationStatus::kConverged);
   CHECK(result.trace.back().energy - 4.0 <= 1e-8);
   CHECK(result.trace.back().energy >= 4.0 - 1e-12);

@@ -3,9 +3,10 @@
 //   E(x) = E_base(x) + E_B(x),
 // the boundary barrier added to the wrapped distortion, and a feasible step
 // that is also free of boundary contact. Everything else (the inverted
-// count, the bad element, the lower bound) is the wrapped objective's. The
-// preconditioners are built on the wrapped MeshObjective, and
-// preconditioners/contact_preconditioner.h adds the barrier's curvature.
+// count, the bad element, the lower bound, the rotation-following term) is
+// the wrapped objective's. The preconditioners are built on the wrapped
+// MeshObjective, and preconditioners/contact_preconditioner.h adds the
+// barrier's curvature.
 #include <Eigen/Core>
 #include <memory>
 
@@ -34,6 +35,9 @@ class InjectiveObjective final : public Objective {
   std::string first_bad_element(const Eigen::VectorXd& x) const override { return base_.first_bad_element(x); }
   double lower_bound() const override { return base_.lower_bound(); }
   double constraint_distance(const Eigen::VectorXd& x) const override { return base_.constraint_distance(x); }
+  bool rotation_following_term(const Eigen::VectorXd& x, const Eigen::VectorXd& d, Eigen::VectorXd* a) const override {
+    return base_.rotation_following_term(x, d, a);
+  }
 
  private:
   const Objective& base_;

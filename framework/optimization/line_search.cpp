@@ -19,6 +19,19 @@ bool LineSearchSettings::is_valid(std::string* error) const {
   return true;
 }
 
+void point_along_path(const Eigen::VectorXd& x, const Eigen::VectorXd& direction, const Eigen::VectorXd& turn,
+                      double alpha, Eigen::VectorXd* point) {
+  *point = x + alpha * direction;
+  if (turn.size() > 0) *point += (0.5 * alpha * alpha) * turn;
+}
+
+Eigen::VectorXd accepted_point(const Eigen::VectorXd& x, const Eigen::VectorXd& direction,
+                               const LineSearchSummary& summary) {
+  Eigen::VectorXd point;
+  point_along_path(x, direction, summary.turn, summary.step, &point);
+  return point;
+}
+
 LineSearchSummary LineSearch::search(const Objective& objective, const Eigen::VectorXd& x, double energy,
                                      const Eigen::VectorXd& gradient, const Eigen::VectorXd& direction) const {
   const auto start = std::chrono::steady_clock::now();

@@ -163,7 +163,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
       return finish(TerminationStatus::kLineSearchFailed,
                     "line search failed at iteration " + std::to_string(k) + ": " + search.message);
     backtracked = search.step < search.initial_step;
-    Eigen::VectorXd next = start_x + search.step * direction;
+    Eigen::VectorXd next = accepted_point(start_x, direction, search);
     previous.swap(x);
     x.swap(next);
     const double previous_energy = energy;
