@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "akvf/error.h"
 
@@ -36,7 +35,7 @@ LineSearchSummary BacktrackingLineSearch::do_search(const LineSearchInput& in) c
   bool turn_asked = false, has_turn = false;
   auto accept = [&](double energy) { return energy <= in.energy + settings_.c1 * alpha * in.directional_derivative; };
   while (summary.evaluations < settings_.max_evaluations && alpha >= smallest) {
-    point_along_path(in.x, in.direction, Eigen::VectorXd(), alpha, &trial);
+    trial = in.x + alpha * in.direction;
     double energy = in.objective.value(trial);
     ++summary.evaluations;
     // +infinity (an inverted element) never satisfies the condition.
@@ -48,14 +47,16 @@ LineSearchSummary BacktrackingLineSearch::do_search(const LineSearchInput& in) c
       if (has_turn) {
         point_along_path(in.x, in.direction, turn, alpha, &trial);
         if (in.objective.max_feasible_step(in.x, trial - in.x) > 1 && summary.evaluations < settings_.max_evaluations) {
-          energy = in.objective.value(trial);
+          const double curved = in.objective.value(trial);
           ++summary.evaluations;
           // Off the straight line only for a decrease above round-off (the
           // optimizer's stall tolerance): at the minimum to rounding the
           // straight line, the direction's own, keeps going.
-          const bool resolved = in.energy - energy > kRoundOff * std::max(1.0, std::abs(in.energy));
-          if (!resolved) energy = std::numeric_limits<double>::infinity();
-          if (accept(energy)) summary.turn = std::move(turn);
+          const bool resolved = in.energy - curved > kRoundOff * std::max(1.0, std::abs(in.energy));
+          if (resolved && accept(curved)) {
+            energy = curved;
+            summary.turn = std::move(turn);
+          }
         }
       }
     }
