@@ -59,11 +59,14 @@ bool SwitchingPreconditioner::constraints_far(const OptimizationState& state) co
 bool SwitchingPreconditioner::leave_second(const OptimizationState& state) {
   // The first trial min(1, 0.8 alpha_max) was below Newton's unit step and
   // accepted at once: the flip-free bound set it; and the bound is less than
-  // half the step before's: the steps close in on a collapse (module comment).
+  // half the step before's (the steps close in on a collapse) or a small
+  // share of the unit step (the model's minimizer lies far beyond a
+  // collapse) (module comment).
   const double step = state.previous_step;
   const bool bound_limited = step > 0 && step < 1 && !state.previous_backtracked;
   const bool closing_in = state.previous_max_step < rule_.closing_ratio * previous_max_step_;
-  limited_steps_ = bound_limited && closing_in ? limited_steps_ + 1 : 0;
+  const bool model_far = state.previous_max_step < rule_.far_share;
+  limited_steps_ = bound_limited && (closing_in || model_far) ? limited_steps_ + 1 : 0;
   return limited_steps_ >= rule_.patience;
 }
 

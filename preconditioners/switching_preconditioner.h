@@ -100,7 +100,18 @@
 // neighbourhood can. After
 // `patience` such Newton steps in a row the first preconditioner is rebuilt
 // (its assembly pattern anew) and takes over the second's analysis and
-// factor. Each return doubles the patience of the next switch to the
+// factor. A bound-set Newton step counts as well when alpha_max is below
+// `far_share` (1 %) of the unit step, however it compares with the last
+// bound: the model puts its minimizer a hundred times farther than a
+// collapse, and a step of t gains at most 2t - t^2 (2 %) of the decrease it
+// promises, so the projected Hessian misses what limits the step. Newton's
+// steps stayed at 1e-4 to 2e-3 of its direction, neither closing in nor
+// receding fast, on MIPS near its minimum on hilbert_b (MIPS is blind to
+// each triangle's scale: the projected Hessian is nearly singular along
+// those modes, the direction long along them) and on AMIPS far from it on
+// cow_b (E = 5e7); AKVF's steps took 0.2 to 1 of its own there. A share of
+// 1e-3 or 1e-2 changed the same runs alike; 0.1 cut into ARAP's productive
+// Newton phases (docs/design.md). Each return doubles the patience of the next switch to the
 // second, so a run whose Newton phases keep meeting the barrier spends ever
 // less of its iterations there.
 // Whichever preconditioner is not in use is released (its report and
@@ -132,6 +143,9 @@ struct SwitchRule {
   double stall_ratio = 0.85;
   // A bound below this share of the step before's is closing in.
   double closing_ratio = 0.5;
+  // A bound below this share of Newton's unit step puts the model's
+  // minimizer far beyond a collapse.
+  double far_share = 0.01;
   // The distortion part of the energy at x (the mesh objective's value)
   // when the problem adds terms to it (soft constraints): the state's energy
   // minus it is what they carry. Empty: no such terms, or unknown.
@@ -143,7 +157,8 @@ struct SwitchRule {
 
 // Why the run left the phase in use (module comment): AKVF's steps set by
 // the curvature, AKVF stalling under the bound, the constraints still far;
-// Newton's steps closing in on a collapse.
+// Newton's steps held by the bound, closing in on a collapse or far short
+// of the model's minimizer.
 enum class SwitchReason { kCurvatureSet, kStalled, kConstraintsFar, kClosingIn };
 
 class SwitchingPreconditioner final : public Preconditioner {

@@ -562,6 +562,41 @@ TEST_CASE("akvf-newton returns to AKVF after two Newton steps closing in on a co
   CHECK(p.report().find("from iteration 16 identity") != std::string::npos);
 }
 
+// switching_preconditioner.h: Newton steps held by a bound below far_share
+// of the unit step count toward the return whether or not the bound closes
+// in (MIPS on hilbert_b: 0.00087, then 0.00097).
+TEST_CASE("akvf-newton returns to AKVF after two Newton steps held far short of the unit step") {
+  akvf::SwitchRule rule;  // isometric step infinity: every curvature-set step counts
+  struct Step {
+    double step, max_step;
+    bool backtracked;
+  };
+  auto switches_after = [&](const std::vector<Step>& steps) {
+    akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(),
+                                    identity_expecting(akvf::SwitchReason::kCurvatureSet), rule,
+                                    identity_expecting(akvf::SwitchReason::kClosingIn));
+    const Eigen::VectorXd x = Eigen::VectorXd::Zero(4), g = Eigen::VectorXd::Ones(4);
+    int k = 1;
+    const Step curvature{0.25, 100, true};
+    for (const Step& s : std::vector<Step>{{0, 0, false}, curvature, curvature})  // switch at 3
+      p.update({x, g, 1.0, k++, s.step, s.max_step, s.backtracked});
+    for (const Step& s : steps) p.update({x, g, 1.0, k++, s.step, s.max_step, s.backtracked});
+    return p.switches();
+  };
+  auto bound = [](double max_step) { return Step{0.8 * max_step, max_step, false}; };
+  // Receding bounds far below the unit step: back at the second.
+  CHECK(switches_after({bound(0.00087), bound(0.00097)}) == std::vector<int>{3, 5});
+  // Receding bounds above far_share: they stay (MIPS on camelhead).
+  CHECK(switches_after({bound(0.02), bound(0.03), bound(0.05)}) == std::vector<int>{3});
+  // Far below, but backtracked: the curvature set the step.
+  CHECK(switches_after({{0.0004, 0.00097, true}, bound(0.00097), {0.0004, 0.00097, true}}) == std::vector<int>{3});
+  // A share of 1 puts every bound-set step far.
+  rule.far_share = 1;
+  CHECK(switches_after({bound(0.5), bound(0.6)}) == std::vector<int>{3, 5});
+  rule.far_share = 0;
+  CHECK(switches_after({bound(0.00087), bound(0.00097)}) == std::vector<int>{3});
+}
+
 // switching_preconditioner.h: bound-set AKVF steps that each leave more than
 // stall_ratio of the gap E - E_lb switch to Newton after `patience` of them;
 // a bound that keeps more than half the last is not closing in.
