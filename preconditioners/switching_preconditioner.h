@@ -105,15 +105,16 @@
 // bound: the model puts its minimizer a hundred times farther than a
 // collapse, and a step of t gains at most 2t - t^2 (2 %) of the decrease it
 // promises, so the projected Hessian misses what limits the step. Newton's
-// steps stayed at 1e-4 to 2e-3 of its direction, neither closing in nor
+// steps stay at 1e-4 to 2e-3 of its direction, neither closing in nor
 // receding fast, on MIPS near its minimum on hilbert_b (MIPS is blind to
 // each triangle's scale: the projected Hessian is nearly singular along
 // those modes, the direction long along them) and on AMIPS far from it on
-// cow_b (E = 5e7); AKVF's steps took 0.2 to 1 of its own there. A share of
-// 1e-3 or 1e-2 changed the same runs alike; 0.1 cut into ARAP's productive
-// Newton phases (docs/design.md). Each return doubles the patience of the next switch to the
-// second, so a run whose Newton phases keep meeting the barrier spends ever
-// less of its iterations there.
+// cow_b (E = 5e7), where AKVF's steps take 0.2 to 1 of its own. Shares of
+// 1e-3 and 1e-2 give the same runs; 0.1 cuts into ARAP's Newton phases,
+// which gain under the bound (docs/notes/2026-11-29-newton-held-far-short.md).
+// Each return doubles the patience of the next switch to the second, so a
+// run whose Newton phases keep meeting the barrier spends ever less of its
+// iterations there.
 // Whichever preconditioner is not in use is released (its report and
 // statistics are kept): its factor would otherwise stay in memory beside the
 // other's.
