@@ -586,7 +586,7 @@ TEST_CASE("akvf-newton returns to AKVF after two Newton steps held far short of 
   auto bound = [](double max_step) { return Step{0.8 * max_step, max_step, false}; };
   // Receding bounds far below the unit step: back at the second.
   CHECK(switches_after({bound(0.00087), bound(0.00097)}) == std::vector<int>{3, 5});
-  // Receding bounds above far_share: they stay (MIPS on camelhead).
+  // Receding bounds above far_share: they stay.
   CHECK(switches_after({bound(0.02), bound(0.03), bound(0.05)}) == std::vector<int>{3});
   // Far below, but backtracked: the curvature set the step.
   CHECK(switches_after({{0.0004, 0.00097, true}, bound(0.00097), {0.0004, 0.00097, true}}) == std::vector<int>{3});
