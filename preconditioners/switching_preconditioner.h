@@ -104,14 +104,11 @@
 // `far_share` (1 %) of the unit step, however it compares with the last
 // bound: the model puts its minimizer a hundred times farther than a
 // collapse, and a step of t gains at most 2t - t^2 (2 %) of the decrease it
-// promises, so the projected Hessian misses what limits the step. Newton's
-// steps stay at 1e-4 to 2e-3 of its direction, neither closing in nor
-// receding fast, on MIPS near its minimum on hilbert_b (MIPS is blind to
-// each triangle's scale: the projected Hessian is nearly singular along
-// those modes, the direction long along them) and on AMIPS far from it on
-// cow_b (E = 5e7), where AKVF's steps take 0.2 to 1 of its own. Shares of
-// 1e-3 and 1e-2 give the same runs; 0.1 cuts into ARAP's Newton phases,
-// which gain under the bound (docs/notes/2026-11-29-newton-held-far-short.md).
+// promises, so the projected Hessian misses what limits the step (MIPS
+// near its minimum on hilbert_b: MIPS is blind to each triangle's scale,
+// and Newton's direction is long along those nearly singular modes). A
+// share of 0.1 would cut into ARAP's Newton phases, which gain under the
+// bound (docs/notes/2026-11-29-newton-held-far-short.md).
 // Each return doubles the patience of the next switch to the second, so a
 // run whose Newton phases keep meeting the barrier spends ever less of its
 // iterations there.
