@@ -14,6 +14,7 @@
 #include <tbb/parallel_for.h>
 
 #include "akvf/error.h"
+#include "framework/process/huge_page_array.h"
 #include "framework/process/physical_memory.h"
 #include "solvers/fill_reducing_ordering.h"
 #include "solvers/supernodal_factorization.h"
@@ -211,8 +212,9 @@ class CholmodFactor final : public PermutedFactor {
     const std::vector<int>& source = pattern_->source;
     if (factor_->is_super && !by_cholmod) {
       // Not value-initialized: each supernode's block is set when it is
-      // built, so the pages are first touched by the core that builds it.
-      if (!factor_values_) factor_values_.reset(new double[factor_->xsize]);
+      // built, so the pages are first touched by the core that builds it;
+      // on huge pages where the system gives them (huge_page_array.h).
+      if (!factor_values_) factor_values_ = allocate_huge_page_doubles(factor_->xsize);
       const LowerTriangle A{static_cast<int>(factor_->n), pattern_->lower_column_start.data(),
                             pattern_->lower_row.data(), upper_values, source.data()};
       parallel_factorization().factorize(A, factor_values_.get());
@@ -356,8 +358,8 @@ class CholmodFactor final : public PermutedFactor {
   cholmod_dense* workspace_e_ = nullptr;
   std::unique_ptr<SupernodalSolve<Index>> supernodal_solver_;
   std::unique_ptr<SupernodalFactorization<Index>> parallel_factorization_;
-  std::unique_ptr<double[]> factor_values_;  // L by SupernodalFactorization (factor_->xsize entries)
-  std::vector<double> lower_value_;          // the lower triangle's values, for CHOLMOD's factorizations
+  HugePageArray<double> factor_values_;  // L by SupernodalFactorization (factor_->xsize entries)
+  std::vector<double> lower_value_;      // the lower triangle's values, for CHOLMOD's factorizations
   bool own_factored_ = false;
   bool single_ = false;  // L's values rounded to single precision in place (round_to_single)
   double* values() { return own_factored_ ? factor_values_.get() : static_cast<double*>(factor_->x); }

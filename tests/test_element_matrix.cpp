@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "framework/optimization/element_matrix.h"
 #include "tests/test_support.h"
@@ -58,6 +60,15 @@ TEST_CASE("element matrices: the pattern and the sums are those of one triplet p
     const akvf::TriMesh grid = akvf::test::grid_disk(140, 130, 0.2, 3);  // 2 x 139 x 129 > 32768 triangles
     REQUIRE(grid.F.rows() > (1 << 15));
     check_against_reference<2, 3>(grid.F, static_cast<int>(grid.V.rows()));
+  }
+  SUBCASE("triangles in shuffled order, more than one chunk: each chunk's buffer laid out by vertex") {
+    akvf::TriMesh grid = akvf::test::grid_disk(140, 130, 0.2, 3);
+    std::vector<int> order(grid.F.rows());
+    for (int f = 0; f < grid.F.rows(); ++f) order[f] = f;
+    std::shuffle(order.begin(), order.end(), std::mt19937(11));
+    Eigen::MatrixXi shuffled(grid.F.rows(), 3);
+    for (int f = 0; f < grid.F.rows(); ++f) shuffled.row(f) = grid.F.row(order[f]);
+    check_against_reference<2, 3>(shuffled, static_cast<int>(grid.V.rows()));
   }
   SUBCASE("tetrahedra") {
     const akvf::TetMesh cube = akvf::test::tet_grid(6);

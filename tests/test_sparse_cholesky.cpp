@@ -5,8 +5,12 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
+#include <cstdint>
+#include <new>
+
 #include "akvf/error.h"
 #include "framework/optimization/distortion_objective.h"
+#include "framework/process/huge_page_array.h"
 #include "preconditioners/killing_operator_2d.h"
 #include "solvers/sparse_cholesky.h"
 #include "tests/test_support.h"
@@ -345,4 +349,16 @@ TEST_CASE("a factor rounded to single precision solves to its rounding until the
     cholesky.solve(b, &again);
     CHECK(again == exact);
   }
+}
+
+TEST_CASE("the factor's storage is 2 MiB aligned, writable to its end, and an impossible size is refused") {
+  for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{262144}, std::size_t{262145}}) {
+    CAPTURE(n);
+    const akvf::HugePageArray<double> array = akvf::allocate_huge_page_doubles(n);
+    REQUIRE(array != nullptr);
+    CHECK(reinterpret_cast<std::uintptr_t>(array.get()) % (std::uintptr_t{1} << 21) == 0);
+    for (std::size_t i = 0; i < n; ++i) array[i] = static_cast<double>(i);
+    if (n > 0) CHECK(array[n - 1] == static_cast<double>(n - 1));
+  }
+  CHECK_THROWS_AS(akvf::allocate_huge_page_doubles(static_cast<std::size_t>(-1) / 4), std::bad_alloc);
 }
