@@ -317,10 +317,12 @@ typename FactoredPreconditioner<D>::CgOutcome FactoredPreconditioner<D>::project
   // complement of X.
   const auto project = [](const ComponentMotions& motions, Eigen::VectorXd& v) { motions.project_out(&v); };
   const auto A = system().template selfadjointView<Eigen::Upper>();
-  const auto precondition = [&](Eigen::VectorXd r, Eigen::VectorXd* z) {
-    project(null_basis_, r);
-    project(built_null_basis, r);
-    inverse(r, z);
+  Eigen::VectorXd projected;  // the residual projected, kept to be reused
+  const auto precondition = [&](const Eigen::VectorXd& r, Eigen::VectorXd* z) {
+    projected = r;
+    project(null_basis_, projected);
+    project(built_null_basis, projected);
+    inverse(projected, z);
     project(built_null_basis, *z);
     project(null_basis_, *z);
   };
@@ -338,7 +340,7 @@ typename FactoredPreconditioner<D>::CgOutcome FactoredPreconditioner<D>::project
   for (int k = 1; k <= max_iterations; ++k) {
     ++statistics_.cg_iterations;
     outcome.iterations = k;
-    q = A * p;
+    q.noalias() = A * p;
     const double curvature = p.dot(q);
     if (!(curvature > 0)) break;
     const double alpha = rz / curvature;

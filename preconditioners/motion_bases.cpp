@@ -93,9 +93,29 @@ ComponentMotions::ComponentMotions(int dimension,
   }
 }
 
+namespace {
+
+// v -= B (B^T v) with the bits of Eigen's `v -= B * (B.transpose() * v)`,
+// without its temporary vector: B^T v by Eigen, then for each row Eigen's
+// matrix-vector kernel, a sum over B's columns in order from 0, added to
+// the zeroed temporary (the + 0.0: it turns a -0 into +0) and subtracted.
+void subtract_projection(const Eigen::MatrixXd& B, Eigen::VectorXd* v) {
+  const Eigen::VectorXd c = B.transpose() * *v;
+  const Eigen::Index rows = B.rows(), columns = B.cols();
+  const double* b = B.data();
+  double* out = v->data();
+  for (Eigen::Index i = 0; i < rows; ++i) {
+    double sum = 0;
+    for (Eigen::Index j = 0; j < columns; ++j) sum = b[j * rows + i] * c[j] + sum;
+    out[i] -= sum + 0.0;
+  }
+}
+
+}  // namespace
+
 void ComponentMotions::project_out(Eigen::VectorXd* v) const {
   if (!component_vertices_) {
-    if (whole_.cols() > 0) *v -= whole_ * (whole_.transpose() * *v);
+    if (whole_.cols() > 0) subtract_projection(whole_, v);
     return;
   }
   for (std::size_t c = 0; c < blocks_.size(); ++c) {
@@ -104,7 +124,7 @@ void ComponentMotions::project_out(Eigen::VectorXd* v) const {
     for (std::size_t i = 0; i < vertices.size(); ++i)
       part.segment(dimension_ * i, dimension_) =
           v->segment(static_cast<Eigen::Index>(dimension_) * vertices[i], dimension_);
-    part -= blocks_[c] * (blocks_[c].transpose() * part);
+    subtract_projection(blocks_[c], &part);
     for (std::size_t i = 0; i < vertices.size(); ++i)
       v->segment(static_cast<Eigen::Index>(dimension_) * vertices[i], dimension_) =
           part.segment(dimension_ * i, dimension_);
