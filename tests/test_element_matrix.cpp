@@ -61,7 +61,7 @@ TEST_CASE("element matrices: the pattern and the sums are those of one triplet p
     REQUIRE(grid.F.rows() > (1 << 15));
     check_against_reference<2, 3>(grid.F, static_cast<int>(grid.V.rows()));
   }
-  SUBCASE("triangles in shuffled order, more than one chunk: each chunk's buffer laid out by vertex") {
+  SUBCASE("triangles in shuffled order, more than one chunk") {
     akvf::TriMesh grid = akvf::test::grid_disk(140, 130, 0.2, 3);
     std::vector<int> order(grid.F.rows());
     for (int f = 0; f < grid.F.rows(); ++f) order[f] = f;

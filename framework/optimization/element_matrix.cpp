@@ -4,7 +4,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <utility>
 
 #include "framework/mesh/vertex_graph.h"
 
@@ -117,25 +116,13 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
   built->touched.resize(runs[chunks]);
   built->source_offsets.resize(runs[chunks] + 1);
   built->sources.resize(by_entry.size());
-  // Each chunk's local matrices in its buffer by increasing largest vertex,
-  // ties in element order (module comment).
-  built->buffer_place.resize(ne);
-  parallel_for_index(chunks, 1, [&](int c) {
-    const int first = c * kChunkElements, count = std::min(kChunkElements, ne - first);
-    std::vector<std::pair<int, int>> keyed(count);
-    for (int k = 0; k < count; ++k) keyed[k] = {elements.row(first + k).maxCoeff(), k};
-    std::sort(keyed.begin(), keyed.end());
-    for (int k = 0; k < count; ++k) built->buffer_place[first + keyed[k].second] = k;
-  });
   std::vector<int> next_run(runs.begin(), runs.end() - 1), next_slot(slots_before.begin(), slots_before.end() - 1);
   for_each_run([&](int nonzero, int chunk, int first, int last) {
     const int t = next_run[chunk]++;
     built->touched[t] = nonzero;
     built->source_offsets[t] = next_slot[chunk];
-    for (int k = first; k < last; ++k) {
-      const int element = by_entry[k] / kSlots, slot = by_entry[k] % kSlots;
-      built->sources[next_slot[chunk]++] = built->buffer_place[element] * kSlots + slot;
-    }
+    for (int k = first; k < last; ++k)
+      built->sources[next_slot[chunk]++] = static_cast<int>(by_entry[k] - chunk * chunk_slots);
   });
   built->source_offsets[runs[chunks]] = static_cast<int>(by_entry.size());
 
@@ -199,7 +186,7 @@ void ElementMatrix<D, N>::assemble(const LocalFunction& local) {
     parallel_for_index(count, 512, [&](int k) {
       Local M;
       local(first + k, &M);
-      double* out = element_buffer_.data() + static_cast<std::size_t>(kSlots) * pattern.buffer_place[first + k];
+      double* out = element_buffer_.data() + static_cast<std::size_t>(kSlots) * k;
       for (int j = 0; j < kLocalSize; ++j)
         for (int i = 0; i <= j; ++i) *out++ = M(i, j);
     });

@@ -24,12 +24,6 @@
 // see the same additions in the same order as one gather over all elements
 // would, so chunking changes no bit; it keeps the buffer at one chunk (5.5
 // MB for triangles) instead of all elements (1.7 GB at 10 M triangles).
-// Within a chunk the local matrices lie in the buffer by increasing largest
-// vertex, close to the order in which the gather (nonzeros by column, that
-// is by vertex) reads them. Where the elements are not in vertex order
-// (horse_b) that makes an assembly about a third faster (`akvf_benchmarks
-// --benchmark_filter=KillingAssembly`); it moves values, not additions, so
-// again no bit changes.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <functional>
@@ -94,8 +88,7 @@ class ElementMatrix {
     std::vector<int> chunk_touched;     // #chunks + 1
     std::vector<int> touched;           // nonzero index, per (chunk, nonzero) pair
     std::vector<int> source_offsets;    // per pair + 1
-    std::vector<int> sources;           // #E x kSlots slot indices within a chunk's buffer
-    std::vector<int> buffer_place;      // per element, its local matrix's place in its chunk's buffer
+    std::vector<int> sources;           // #E x kSlots slot indices within a chunk
     std::vector<int> diagonal_entries;  // nonzero index of each (i, i)
   };
   // On a shared pattern, without values (the factories above fill upper_).
