@@ -1,13 +1,13 @@
 #pragma once
-// Uninitialized arrays for large working sets that every iteration reads
-// all over (the supernodal factor L), in memory the kernel may back by
-// transparent huge pages: 2 MiB aligned and, on Linux, marked
-// madvise(MADV_HUGEPAGE), which is what Debian's default
-// (transparent_hugepage=madvise) backs with 2 MiB pages. A factorization and
-// its solves visit L's supernodes in elimination-tree order, a page or two
-// at a time; on 4 KiB pages most such visits also miss the TLB, and the
-// first factorization takes a page fault every 4 KiB. Only placement
-// changes: the values, and so the results, are the same bits.
+// Uninitialized arrays for large working sets (the supernodal factor L), in
+// memory the kernel may back by transparent huge pages: 2 MiB aligned and,
+// on Linux, marked madvise(MADV_HUGEPAGE), which is what Debian's default
+// (transparent_hugepage=madvise) backs with 2 MiB pages. A run's first
+// factorization then takes a page fault per 2 MiB of L instead of per 4 KiB:
+// `akvf_benchmarks --benchmark_filter=FirstIteration` on horse_b (L 16 MiB),
+// 42-43 ms against 47-49 ms on 4 KiB pages (2026-11-29, the 2-core VM); the
+// later factorizations and solves, on memory already mapped, measured the
+// same within noise. Only placement changes, never a value.
 #include <cstddef>
 #include <memory>
 
