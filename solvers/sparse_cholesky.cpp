@@ -358,8 +358,8 @@ class CholmodFactor final : public PermutedFactor {
   cholmod_dense* workspace_e_ = nullptr;
   std::unique_ptr<SupernodalSolve<Index>> supernodal_solver_;
   std::unique_ptr<SupernodalFactorization<Index>> parallel_factorization_;
-  HugePageArray<double> factor_values_;  // L by SupernodalFactorization (factor_->xsize entries)
-  std::vector<double> lower_value_;      // the lower triangle's values, for CHOLMOD's factorizations
+  HugePageDoubles factor_values_;    // L by SupernodalFactorization (factor_->xsize entries)
+  std::vector<double> lower_value_;  // the lower triangle's values, for CHOLMOD's factorizations
   bool own_factored_ = false;
   bool single_ = false;  // L's values rounded to single precision in place (round_to_single)
   double* values() { return own_factored_ ? factor_values_.get() : static_cast<double*>(factor_->x); }

@@ -354,7 +354,7 @@ TEST_CASE("a factor rounded to single precision solves to its rounding until the
 TEST_CASE("the factor's storage is 2 MiB aligned, writable to its end, and an impossible size is refused") {
   for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{262144}, std::size_t{262145}}) {
     CAPTURE(n);
-    const akvf::HugePageArray<double> array = akvf::allocate_huge_page_doubles(n);
+    const akvf::HugePageDoubles array = akvf::allocate_huge_page_doubles(n);
     REQUIRE(array != nullptr);
     CHECK(reinterpret_cast<std::uintptr_t>(array.get()) % (std::uintptr_t{1} << 21) == 0);
     for (std::size_t i = 0; i < n; ++i) array[i] = static_cast<double>(i);

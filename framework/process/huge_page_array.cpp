@@ -12,7 +12,7 @@ namespace akvf {
 
 void FreeDeleter::operator()(void* p) const noexcept { std::free(p); }
 
-HugePageArray<double> allocate_huge_page_doubles(std::size_t n) {
+HugePageDoubles allocate_huge_page_doubles(std::size_t n) {
   constexpr std::size_t kHugePage = std::size_t{1} << 21;
   if (n > (static_cast<std::size_t>(-1) - kHugePage) / sizeof(double)) throw std::bad_alloc();
   // aligned_alloc wants a multiple of the alignment.
@@ -22,7 +22,7 @@ HugePageArray<double> allocate_huge_page_doubles(std::size_t n) {
 #if defined(MADV_HUGEPAGE)
   madvise(memory, bytes, MADV_HUGEPAGE);  // advice only: where refused, the pages stay 4 KiB
 #endif
-  return HugePageArray<double>(static_cast<double*>(memory));
+  return HugePageDoubles(static_cast<double*>(memory));
 }
 
 }  // namespace akvf
