@@ -46,10 +46,11 @@ bool use_metis(double amd_flops, double graph_nonzeros) { return amd_flops > 700
 bool start_metis_early(int blocks) { return blocks >= (1 << 17); }
 
 // CHOLMOD's analysis of the graph with `method` (CHOLMOD_AMD, CHOLMOD_METIS,
-// or CHOLMOD_GIVEN with `given`), postordered: the permutation, and the
-// flop count in *flops. Its own cholmod_common: two may run at the same time.
-std::vector<int> block_ordering(const UpperVertexGraph& graph, int method, const std::vector<int>* given,
-                                double* flops) {
+// or CHOLMOD_GIVEN with `given`), postordered: the permutation and its
+// factor's nonzeros and flops. Its own cholmod_common: two may run at the
+// same time. Simplicial: the supernodes of the graph's factor are not used.
+BlockOrdering block_ordering(const UpperVertexGraph& graph, int method, const std::vector<int>* given,
+                             std::string name) {
   struct Workspace {
     cholmod_common common;
     Workspace() { cholmod_start(&common); }
@@ -60,6 +61,7 @@ std::vector<int> block_ordering(const UpperVertexGraph& graph, int method, const
   common.nmethods = 1;
   common.method[0].ordering = method;
   common.postorder = 1;
+  common.supernodal = CHOLMOD_SIMPLICIAL;
   // CHOLMOD reads the pattern only (const_cast: its structs are not const).
   const int blocks = graph.num_vertices();
   cholmod_sparse A{};
@@ -78,10 +80,11 @@ std::vector<int> block_ordering(const UpperVertexGraph& graph, int method, const
   if (common.status < CHOLMOD_OK || !ordering)
     throw NumericalError("CHOLMOD ordering failed (status " + std::to_string(common.status) + ")");
   const int* perm = static_cast<const int*>(ordering->Perm);
-  std::vector<int> permutation(perm, perm + blocks);
-  *flops = common.method[0].fl;
+  BlockOrdering result{std::vector<int>(perm, perm + blocks), std::move(name), true};
+  result.factor_nonzeros = common.method[0].lnz;
+  result.factor_flops = common.method[0].fl;
   cholmod_free_factor(&ordering, &common);
-  return permutation;
+  return result;
 }
 
 }  // namespace
@@ -89,12 +92,11 @@ std::vector<int> block_ordering(const UpperVertexGraph& graph, int method, const
 BlockOrdering fill_reducing_ordering(const UpperVertexGraph& graph, int block_size, bool always_try_metis) {
   const int blocks = graph.num_vertices();
   const double expanded = static_cast<double>(block_size) * block_size * block_size;
-  double amd_flops = 0, metis_flops = 0;
-  BlockOrdering amd{{}, "amd", true}, metis{{}, "metis", true};
-  const auto order_by_amd = [&] { amd.permutation = block_ordering(graph, CHOLMOD_AMD, nullptr, &amd_flops); };
-  const auto order_by_metis = [&] { metis.permutation = block_ordering(graph, CHOLMOD_METIS, nullptr, &metis_flops); };
+  BlockOrdering amd, metis;
+  const auto order_by_amd = [&] { amd = block_ordering(graph, CHOLMOD_AMD, nullptr, "amd"); };
+  const auto order_by_metis = [&] { metis = block_ordering(graph, CHOLMOD_METIS, nullptr, "metis"); };
   const auto metis_wanted = [&] {
-    return always_try_metis || use_metis(expanded * amd_flops, static_cast<double>(graph.row.size()));
+    return always_try_metis || use_metis(expanded * amd.factor_flops, static_cast<double>(graph.row.size()));
   };
   if (!always_try_metis && start_metis_early(blocks)) {
     tbb::parallel_invoke(order_by_amd, order_by_metis);
@@ -102,7 +104,7 @@ BlockOrdering fill_reducing_ordering(const UpperVertexGraph& graph, int block_si
     order_by_amd();
     if (metis_wanted()) order_by_metis();
   }
-  if (metis_wanted() && metis_flops < amd_flops) return metis;  // metis_wanted(): METIS ran
+  if (metis_wanted() && metis.factor_flops < amd.factor_flops) return metis;  // metis_wanted(): METIS ran
   return amd;
 }
 
@@ -110,8 +112,19 @@ BlockOrdering postordered(const UpperVertexGraph& graph, const BlockOrdering& or
   if (static_cast<int>(order.permutation.size()) != graph.num_vertices())
     throw NumericalError("postordered: the order has " + std::to_string(order.permutation.size()) +
                          " blocks, the graph " + std::to_string(graph.num_vertices()));
-  double flops = 0;
-  return {block_ordering(graph, CHOLMOD_GIVEN, &order.permutation, &flops), order.method, true};
+  return block_ordering(graph, CHOLMOD_GIVEN, &order.permutation, order.method);
+}
+
+double expanded_flops_per_entry(const BlockOrdering& ordering, int block_size) {
+  // A column of c blocks in the blocks' factor gives b columns of b c - j
+  // entries, j = 0 .. b - 1; CHOLMOD counts the sums of the columns' entries
+  // and of their squares.
+  if (!(ordering.factor_nonzeros > 0)) return 0;
+  const double b = block_size, blocks = static_cast<double>(ordering.permutation.size());
+  const double nonzeros = b * b * ordering.factor_nonzeros - blocks * b * (b - 1) / 2;
+  const double flops = b * b * b * ordering.factor_flops - b * b * (b - 1) * ordering.factor_nonzeros +
+                       blocks * (b - 1) * b * (2 * b - 1) / 6;
+  return flops / nonzeros;
 }
 
 std::vector<int> restricted_order(const BlockOrdering& ordering, const std::vector<int>& subset) {

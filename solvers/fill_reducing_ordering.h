@@ -24,6 +24,10 @@ struct BlockOrdering {
   // postordered): SparseCholesky::analyze then takes it as it is, so give it
   // only for a matrix on that graph. False: analyze postorders it first.
   bool postordered = false;
+  // The sums over the columns of the graph's Cholesky factor in this order
+  // of their entry counts and of their squares (CHOLMOD's nonzeros and
+  // flops), as CHOLMOD's analysis of the graph found them; 0: not known.
+  double factor_nonzeros = 0, factor_flops = 0;
 };
 
 // The ordering SparseCholesky::analyze computes for a matrix whose blocks of
@@ -36,6 +40,11 @@ BlockOrdering fill_reducing_ordering(const UpperVertexGraph& graph, int block_si
 // the same fill, subtrees contiguous. An ordering fill_reducing_ordering
 // found for this graph comes back unchanged (tested).
 BlockOrdering postordered(const UpperVertexGraph& graph, const BlockOrdering& order);
+
+// CHOLMOD's flops per factor entry (its supernodal switch compares them
+// with 40) for a matrix on the ordering's graph whose blocks of block_size
+// unknowns are all full, from the blocks' factor; 0 where that is not known.
+double expanded_flops_per_entry(const BlockOrdering& ordering, int block_size);
 
 // The order in which `ordering` eliminates the blocks listed in `subset`
 // (distinct blocks of its graph): result[i] is the index into `subset` of

@@ -99,8 +99,10 @@ class PermutedFactor {
  public:
   virtual ~PermutedFactor() = default;
   // Symbolic analysis; false if the factor is too large for this integer
-  // width (CHOLMOD_TOO_LARGE), any other failure throws.
-  virtual bool analyze(const std::shared_ptr<const PermutedPattern>& pattern) = 0;
+  // width (CHOLMOD_TOO_LARGE), any other failure throws. expected_flops_per_entry:
+  // the factor's flops over its nonzeros as the blocks' factor predicts them
+  // (0: unknown); it only decides which analysis is tried first.
+  virtual bool analyze(const std::shared_ptr<const PermutedPattern>& pattern, double expected_flops_per_entry) = 0;
   // A new object holding a copy of this (analyzed, unfactored) analysis.
   virtual std::unique_ptr<PermutedFactor> copy_analysis() const = 0;
   // upper_values: the upper input's nonzeros (PermutedPattern::source
@@ -164,6 +166,7 @@ class CholmodFactor final : public PermutedFactor {
     common_.nmethods = 1;
     common_.method[0].ordering = CHOLMOD_NATURAL;
     common_.postorder = 0;
+    std::copy(std::begin(common_.nrelax), std::end(common_.nrelax), cholmod_limits_);
   }
   ~CholmodFactor() override {
     Api::free_factor(&factor_, &common_);
@@ -174,24 +177,22 @@ class CholmodFactor final : public PermutedFactor {
     Api::finish(&common_);
   }
 
-  bool analyze(const std::shared_ptr<const PermutedPattern>& pattern) override {
+  bool analyze(const std::shared_ptr<const PermutedPattern>& pattern, double expected_flops_per_entry) override {
     set_pattern(pattern);
     cholmod_sparse B = lower(nullptr);
-    if (!analyze_lower(&B)) return false;
-    if (ours_ && !factor_->is_super) {  // below CHOLMOD's supernodal switch
-      std::size_t cholmod_limits[3];
-      std::copy(std::begin(common_.nrelax), std::end(common_.nrelax), cholmod_limits);
-      common_.supernodal = CHOLMOD_SUPERNODAL;
-      std::copy(std::begin(kRelaxedColumnLimits), std::end(kRelaxedColumnLimits), common_.nrelax);
-      if (!analyze_lower(&B)) return false;
-      if (bytes() > relaxed_limit_bytes_) {
-        std::copy(std::begin(cholmod_limits), std::end(cholmod_limits), common_.nrelax);
-        if (!analyze_lower(&B)) return false;
-      }
+    // Where the matrix is expected below CHOLMOD's supernodal switch, our
+    // analysis for it comes first, and it stays when CHOLMOD's counts, which
+    // the supernodal settings do not change, confirm it: one analysis
+    // instead of two. Otherwise, or if they do not, CHOLMOD's choice first.
+    if (ours_ && expected_flops_per_entry > 0 && expected_flops_per_entry < common_.supernodal_switch) {
+      if (!analyze_relaxed(&B)) return false;
+      if (!(common_.lnz > 0 && common_.fl / common_.lnz >= common_.supernodal_switch)) return counted();
+      common_.supernodal = CHOLMOD_AUTO;
+      std::copy(std::begin(cholmod_limits_), std::end(cholmod_limits_), common_.nrelax);
     }
-    nonzeros = common_.lnz;
-    flops = common_.fl;
-    return true;
+    if (!analyze_lower(&B)) return false;
+    if (ours_ && !factor_->is_super && !analyze_relaxed(&B)) return false;
+    return counted();
   }
 
   std::unique_ptr<PermutedFactor> copy_analysis() const override {
@@ -346,8 +347,27 @@ class CholmodFactor final : public PermutedFactor {
     return true;
   }
 
+  // Ours below the supernodal switch: supernodal with the relaxed column
+  // limits, or with CHOLMOD's where that factor would be too large.
+  bool analyze_relaxed(cholmod_sparse* B) {
+    common_.supernodal = CHOLMOD_SUPERNODAL;
+    std::copy(std::begin(kRelaxedColumnLimits), std::end(kRelaxedColumnLimits), common_.nrelax);
+    if (!analyze_lower(B)) return false;
+    if (bytes() <= relaxed_limit_bytes_) return true;
+    std::copy(std::begin(cholmod_limits_), std::end(cholmod_limits_), common_.nrelax);
+    return analyze_lower(B);
+  }
+
+  // The analyzed factor's nonzeros and flops, as CHOLMOD counted them.
+  bool counted() {
+    nonzeros = common_.lnz;
+    flops = common_.fl;
+    return true;
+  }
+
   cholmod_common common_;
-  bool ours_;  // our analysis settings rather than CHOLMOD's (above)
+  bool ours_;                      // our analysis settings rather than CHOLMOD's (above)
+  std::size_t cholmod_limits_[3];  // CHOLMOD's column limits for merging supernodes
   double relaxed_limit_bytes_;
   cholmod_factor* factor_ = nullptr;
   std::shared_ptr<const PermutedPattern> pattern_;
@@ -557,12 +577,13 @@ void SparseCholesky::Impl::analyze_in_order(const Eigen::SparseMatrix<double>& u
   //    indices while the factor's entries fit them and its 64-bit ones
   //    (cholmod_l_*) from 2^31 entries on (the same arithmetic: same bits).
   pattern = permuted_lower(upper, std::move(permutation));
+  const double expected = expanded_flops_per_entry(block_ordering, block_size);
   if (!wide_indices) {
     factor = std::make_unique<CholmodFactor<int>>(cholmod_defaults, relaxed_limit_bytes);
-    if (factor->analyze(pattern)) return;
+    if (factor->analyze(pattern, expected)) return;
   }
   factor = std::make_unique<CholmodFactor<Long>>(cholmod_defaults, relaxed_limit_bytes);
-  if (!factor->analyze(pattern))
+  if (!factor->analyze(pattern, expected))
     throw NumericalError("CHOLMOD symbolic analysis failed: the factor is too large even for 64-bit indices");
 }
 

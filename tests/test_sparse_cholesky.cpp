@@ -9,9 +9,11 @@
 #include <new>
 
 #include "akvf/error.h"
+#include "framework/mesh/vertex_graph.h"
 #include "framework/optimization/distortion_objective.h"
 #include "framework/process/huge_page_array.h"
 #include "preconditioners/killing_operator_2d.h"
+#include "solvers/fill_reducing_ordering.h"
 #include "solvers/sparse_cholesky.h"
 #include "tests/test_support.h"
 
@@ -87,6 +89,48 @@ TEST_CASE("below CHOLMOD's supernodal switch the factor is supernodal, its small
   const double cholmod_limits = factor_bytes(false, 0.99 * relaxed);
   CHECK(relaxed > 1.1 * cholmod_limits);
   CHECK(factor_bytes(false, relaxed) == relaxed);
+}
+
+TEST_CASE("the blocks' factor predicts the supernodal switch exactly, and a wrong prediction changes no bit") {
+  // 20 x 20: below CHOLMOD's switch (40 flops per entry); 70 x 70: above it.
+  for (const int nx : {20, 70}) {
+    CAPTURE(nx);
+    const akvf::TriMesh grid = akvf::test::grid_disk(nx, nx, 0.2, 3);
+    const akvf::ElementMatrix2D K = shifted_killing(nx);
+    const akvf::BlockOrdering order =
+        akvf::fill_reducing_ordering(akvf::upper_vertex_graph(grid.F, static_cast<int>(grid.V.rows())), 2);
+    const double expected = akvf::expanded_flops_per_entry(order, 2);
+    CHECK((expected < 40) == (nx == 20));
+    akvf::BlockOrdering unknown = order, wrong = order;
+    unknown.factor_nonzeros = unknown.factor_flops = 0;
+    // As if every column of the blocks' factor held one block: about one
+    // flop per entry, far below the switch.
+    wrong.factor_flops = wrong.factor_nonzeros;
+    CHECK(akvf::expanded_flops_per_entry(wrong, 2) < 2);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), -1.0, 2.0).array().sin();
+    std::vector<Eigen::VectorXd> solutions;
+    std::vector<double> nonzeros, flops, bytes;
+    for (const akvf::BlockOrdering* given :
+         std::initializer_list<const akvf::BlockOrdering*>{&order, &unknown, &wrong}) {
+      akvf::SparseCholesky cholesky;
+      cholesky.analyze(K.upper(), 2, given);
+      CHECK(cholesky.supernodal());
+      nonzeros.push_back(cholesky.factor_nonzeros());
+      flops.push_back(cholesky.factor_flops());
+      bytes.push_back(cholesky.factor_bytes());
+      cholesky.factorize(K.upper());
+      solutions.emplace_back();
+      cholesky.solve(b, &solutions.back());
+    }
+    // CHOLMOD's own counts of the expanded matrix.
+    CHECK(expected == flops[0] / nonzeros[0]);
+    for (std::size_t i = 1; i < solutions.size(); ++i) {
+      CHECK(nonzeros[i] == nonzeros[0]);
+      CHECK(flops[i] == flops[0]);
+      CHECK(bytes[i] == bytes[0]);  // the same supernodes
+      CHECK(solutions[i] == solutions[0]);
+    }
+  }
 }
 
 TEST_CASE("an indefinite matrix is refused by the simplicial (L D L^T) and the supernodal factorization alike") {
