@@ -130,7 +130,7 @@ namespace {
 // CHOLMOD's where CHOLMOD would factor simplicially: below 40 flops per
 // factor entry (its supernodal switch; hilbert_b's K has 21) it computes
 // L D L^T column by column on one core, because there the supernodes are too
-// small to pay for their overhead. There we analyze again, supernodal, with
+// small to pay for their overhead. There we analyze supernodal instead, with
 // twice CHOLMOD's column limits for merging supernodes (nrelax 8, 32, 96
 // for its 4, 16, 48; the zero-fraction limits zrelax unchanged): fewer,
 // larger dense blocks, some explicit zeros in them, factored by
@@ -143,8 +143,8 @@ namespace {
 // whole runs, which make several solves per factorization (reuse), were
 // within the noise; at 2.5 M faces it bought nothing for 250 MiB more.
 // A relaxed factor that would store more than kRelaxedShare of the
-// machine's memory (a long, thin matrix's, say) is analyzed a third time,
-// with CHOLMOD's limits.
+// machine's memory (a long, thin matrix's, say) is analyzed again, with
+// CHOLMOD's limits.
 constexpr std::size_t kRelaxedColumnLimits[3] = {8, 32, 96};
 constexpr double kRelaxedShare = 1.0 / 16;
 
