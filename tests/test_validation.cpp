@@ -2,6 +2,8 @@
 // its message.
 #include <doctest/doctest.h>
 
+#include <array>
+#include <cmath>
 #include <limits>
 
 #include "akvf/parameterize.h"
@@ -323,6 +325,26 @@ TEST_CASE("repair: a vertex where two fans meet is split, an edge of three faces
   const akvf::DiskMesh opened = akvf::prepare_disk_mesh(fin, "m.obj", true, true);
   CHECK(opened.repair.opened_edges == 1);
   CHECK(opened.num_charts() == 2);
+  // Fins on an edge of a vertex of many faces (the centre of a fan of 40)
+  // and on a rim edge come off too, listed by their ends; of a rim edge's
+  // two fins the one wound against the fan stays on it.
+  TriMesh fan;
+  const int rim = 40;
+  fan.V.resize(rim + 4, 3);
+  fan.V.row(0) << 0, 0, 0;
+  for (int i = 1; i <= rim; ++i) fan.V.row(i) << std::cos(0.157 * i), std::sin(0.157 * i), 0;
+  fan.V.row(rim + 1) << 0.5, 0.5, 1;
+  fan.V.row(rim + 2) << 1, 1, 1;
+  fan.V.row(rim + 3) << 1, 1, -1;
+  fan.F.resize(rim + 3, 3);
+  for (int i = 1; i <= rim; ++i) fan.F.row(i - 1) << 0, i, i % rim + 1;
+  fan.F.row(rim) << 0, 5, rim + 1;
+  fan.F.row(rim + 1) << 11, 10, rim + 2;
+  fan.F.row(rim + 2) << 10, 11, rim + 3;
+  const akvf::DiskMesh fins = akvf::prepare_disk_mesh(fan, "m.obj", true, true);
+  CHECK(fins.repair.opened_edges == 2);
+  CHECK(fins.repair.first_opened == std::vector<std::array<int, 2>>{{0, 5}, {10, 11}});
+  CHECK(fins.num_charts() == 3);
   // A manifold mesh is left as it is.
   const akvf::DiskMesh grid = akvf::prepare_disk_mesh(akvf::test::grid_disk(5, 4), "grid.obj", false, true);
   CHECK_FALSE(grid.repair.any());

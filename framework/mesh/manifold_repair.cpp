@@ -1,7 +1,6 @@
 #include "framework/mesh/manifold_repair.h"
 
 #include <algorithm>
-#include <map>
 #include <numeric>
 
 namespace akvf {
@@ -21,13 +20,39 @@ ManifoldRepair repair_manifold(TriMesh* mesh, std::vector<int>* input_vertex) {
   ManifoldRepair repair;
   const int nf = mesh->num_faces();
   const Eigen::MatrixXi& F = mesh->F;
-  // Each undirected edge's face corners: (face, position of its first end).
-  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> edge_faces;
+  // Each undirected edge's face corners (face, position of its first end),
+  // edges by (smaller end, larger end), an edge's corners in file order:
+  // the face sides counted by their smaller end, then each vertex's few
+  // sorted by their larger end, stably (file order kept within an edge).
+  const int nv = mesh->num_vertices();
+  std::vector<int> side_start(nv + 1, 0);
+  const auto low_end = [&](int f, int k) { return std::min(F(f, k), F(f, (k + 1) % 3)); };
+  const auto high_end = [&](int f, int k) { return std::max(F(f, k), F(f, (k + 1) % 3)); };
   for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int a = F(f, k), b = F(f, (k + 1) % 3);
-      edge_faces[{std::min(a, b), std::max(a, b)}].push_back({f, k});
+    for (int k = 0; k < 3; ++k) ++side_start[low_end(f, k) + 1];
+  for (int v = 0; v < nv; ++v) side_start[v + 1] += side_start[v];
+  std::vector<std::pair<int, int>> sides(3 * static_cast<std::size_t>(nf));
+  {
+    std::vector<int> next(side_start.begin(), side_start.end() - 1);
+    for (int f = 0; f < nf; ++f)
+      for (int k = 0; k < 3; ++k) sides[next[low_end(f, k)]++] = {f, k};
+  }
+  const auto by_high_end = [&](const std::pair<int, int>& x, const std::pair<int, int>& y) {
+    return high_end(x.first, x.second) < high_end(y.first, y.second);
+  };
+  for (int v = 0; v < nv; ++v) {
+    const auto first = sides.begin() + side_start[v], last = sides.begin() + side_start[v + 1];
+    if (last - first > 32) {  // a vertex of many faces (a fan's centre)
+      std::stable_sort(first, last, by_high_end);
+      continue;
     }
+    for (auto i = first + 1; i < last; ++i) {  // by insertion: no buffer to allocate for a vertex's few sides
+      const std::pair<int, int> side = *i;
+      auto j = i;
+      for (; j > first && by_high_end(side, *(j - 1)); --j) *j = *(j - 1);
+      *j = side;
+    }
+  }
   // Corners 3 f + k joined across edges of exactly two faces.
   std::vector<int> parent(3 * static_cast<std::size_t>(nf));
   std::iota(parent.begin(), parent.end(), 0);
@@ -42,24 +67,33 @@ ManifoldRepair repair_manifold(TriMesh* mesh, std::vector<int>* input_vertex) {
       if (a >= 0 && b >= 0) parent[find(parent, a)] = find(parent, b);
     }
   };
-  for (const auto& [edge, faces] : edge_faces) {
-    if (faces.size() == 2) {
+  // Each run of sides with the same ends is one edge's corners.
+  const auto ends_of = [&](const std::pair<int, int>& side) {
+    return std::pair<int, int>{low_end(side.first, side.second), high_end(side.first, side.second)};
+  };
+  for (std::size_t i = 0; i < sides.size();) {
+    const std::pair<int, int> edge = ends_of(sides[i]);
+    std::size_t end = i + 1;
+    while (end < sides.size() && ends_of(sides[end]) == edge) ++end;
+    const std::pair<int, int>* faces = sides.data() + i;
+    const std::size_t count = end - i;
+    i = end;
+    if (count == 2) {
       if (faces[0].first != faces[1].first) join(faces[0].first, faces[1].first, edge);
       continue;
     }
-    if (faces.size() < 2) continue;
+    if (count < 2) continue;
     // Three or more faces: the first two (in file order) that run along the
     // edge in opposite directions stay joined, the others come off.
     ++repair.opened_edges;
     if (repair.first_opened.size() < kListed)
       repair.first_opened.push_back({(*input_vertex)[edge.first], (*input_vertex)[edge.second]});
-    const int first_end = edge.first;  // (a structured binding cannot be captured before C++20)
-    auto forward = [&](const std::pair<int, int>& corner) { return F(corner.first, corner.second) == first_end; };
+    auto forward = [&](const std::pair<int, int>& corner) { return F(corner.first, corner.second) == edge.first; };
     bool joined = false;
-    for (std::size_t i = 0; i < faces.size() && !joined; ++i)
-      for (std::size_t j = i + 1; j < faces.size() && !joined; ++j)
-        if (forward(faces[i]) != forward(faces[j]) && faces[i].first != faces[j].first) {
-          join(faces[i].first, faces[j].first, edge);
+    for (std::size_t a = 0; a < count && !joined; ++a)
+      for (std::size_t b = a + 1; b < count && !joined; ++b)
+        if (forward(faces[a]) != forward(faces[b]) && faces[a].first != faces[b].first) {
+          join(faces[a].first, faces[b].first, edge);
           joined = true;
         }
   }
