@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "framework/mesh/mesh_topology.h"
+
 namespace akvf {
 
 namespace {
@@ -20,39 +22,8 @@ ManifoldRepair repair_manifold(TriMesh* mesh, std::vector<int>* input_vertex) {
   ManifoldRepair repair;
   const int nf = mesh->num_faces();
   const Eigen::MatrixXi& F = mesh->F;
-  // Each undirected edge's face corners (face, position of its first end),
-  // edges by (smaller end, larger end), an edge's corners in file order:
-  // the face sides counted by their smaller end, then each vertex's few
-  // sorted by their larger end, stably (file order kept within an edge).
-  const int nv = mesh->num_vertices();
-  std::vector<int> side_start(nv + 1, 0);
-  const auto low_end = [&](int f, int k) { return std::min(F(f, k), F(f, (k + 1) % 3)); };
-  const auto high_end = [&](int f, int k) { return std::max(F(f, k), F(f, (k + 1) % 3)); };
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) ++side_start[low_end(f, k) + 1];
-  for (int v = 0; v < nv; ++v) side_start[v + 1] += side_start[v];
-  std::vector<std::pair<int, int>> sides(3 * static_cast<std::size_t>(nf));
-  {
-    std::vector<int> next(side_start.begin(), side_start.end() - 1);
-    for (int f = 0; f < nf; ++f)
-      for (int k = 0; k < 3; ++k) sides[next[low_end(f, k)]++] = {f, k};
-  }
-  const auto by_high_end = [&](const std::pair<int, int>& x, const std::pair<int, int>& y) {
-    return high_end(x.first, x.second) < high_end(y.first, y.second);
-  };
-  for (int v = 0; v < nv; ++v) {
-    const auto first = sides.begin() + side_start[v], last = sides.begin() + side_start[v + 1];
-    if (last - first > 32) {  // a vertex of many faces (a fan's centre)
-      std::stable_sort(first, last, by_high_end);
-      continue;
-    }
-    for (auto i = first + 1; i < last; ++i) {  // by insertion: no buffer to allocate for a vertex's few sides
-      const std::pair<int, int> side = *i;
-      auto j = i;
-      for (; j > first && by_high_end(side, *(j - 1)); --j) *j = *(j - 1);
-      *j = side;
-    }
-  }
+  // Each undirected edge's sides, by (smaller end, larger end), in file order.
+  const std::vector<HalfEdge> sides = sorted_half_edges(F, mesh->num_vertices());
   // Corners 3 f + k joined across edges of exactly two faces.
   std::vector<int> parent(3 * static_cast<std::size_t>(nf));
   std::iota(parent.begin(), parent.end(), 0);
@@ -68,18 +39,15 @@ ManifoldRepair repair_manifold(TriMesh* mesh, std::vector<int>* input_vertex) {
     }
   };
   // Each run of sides with the same ends is one edge's corners.
-  const auto ends_of = [&](const std::pair<int, int>& side) {
-    return std::pair<int, int>{low_end(side.first, side.second), high_end(side.first, side.second)};
-  };
   for (std::size_t i = 0; i < sides.size();) {
-    const std::pair<int, int> edge = ends_of(sides[i]);
+    const std::pair<int, int> edge{sides[i].lo, sides[i].hi};
     std::size_t end = i + 1;
-    while (end < sides.size() && ends_of(sides[end]) == edge) ++end;
-    const std::pair<int, int>* faces = sides.data() + i;
+    while (end < sides.size() && sides[end].lo == edge.first && sides[end].hi == edge.second) ++end;
+    const HalfEdge* faces = sides.data() + i;
     const std::size_t count = end - i;
     i = end;
     if (count == 2) {
-      if (faces[0].first != faces[1].first) join(faces[0].first, faces[1].first, edge);
+      if (faces[0].face != faces[1].face) join(faces[0].face, faces[1].face, edge);
       continue;
     }
     if (count < 2) continue;
@@ -88,12 +56,12 @@ ManifoldRepair repair_manifold(TriMesh* mesh, std::vector<int>* input_vertex) {
     ++repair.opened_edges;
     if (repair.first_opened.size() < kListed)
       repair.first_opened.push_back({(*input_vertex)[edge.first], (*input_vertex)[edge.second]});
-    auto forward = [&](const std::pair<int, int>& corner) { return F(corner.first, corner.second) == edge.first; };
+    auto forward = [&](const HalfEdge& side) { return F(side.face, side.corner) == edge.first; };
     bool joined = false;
     for (std::size_t a = 0; a < count && !joined; ++a)
       for (std::size_t b = a + 1; b < count && !joined; ++b)
-        if (forward(faces[a]) != forward(faces[b]) && faces[a].first != faces[b].first) {
-          join(faces[a].first, faces[b].first, edge);
+        if (forward(faces[a]) != forward(faces[b]) && faces[a].face != faces[b].face) {
+          join(faces[a].face, faces[b].face, edge);
           joined = true;
         }
   }

@@ -9,15 +9,8 @@
 
 namespace akvf {
 
-EdgeTopology edge_topology(const Eigen::MatrixXi& F) {
-  struct HalfEdge {
-    int lo, hi, from, face;
-  };
-  // Sorted by (lo, hi, face): counted into one bucket per lo, then each
-  // bucket (the edges at a vertex, a few) sorted by (hi, face).
-  if (F.size() > 0 && F.minCoeff() < 0) throw ValidationError("edge_topology: a face has a negative vertex index");
-  const int nv = F.size() > 0 ? F.maxCoeff() + 1 : 0;
-  std::vector<int> bucket_start(nv + 1, 0);
+std::vector<HalfEdge> sorted_half_edges(const Eigen::MatrixXi& F, int num_vertices) {
+  std::vector<int> bucket_start(num_vertices + 1, 0);
   for (Eigen::Index f = 0; f < F.rows(); ++f)
     for (int k = 0; k < 3; ++k) ++bucket_start[std::min(F(f, k), F(f, (k + 1) % 3)) + 1];
   std::partial_sum(bucket_start.begin(), bucket_start.end(), bucket_start.begin());
@@ -27,12 +20,21 @@ EdgeTopology edge_topology(const Eigen::MatrixXi& F) {
     for (int f = 0; f < F.rows(); ++f)
       for (int k = 0; k < 3; ++k) {
         const int a = F(f, k), b = F(f, (k + 1) % 3);
-        half_edges[next[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), a, f};
+        half_edges[next[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), f, k};
       }
   }
-  for (int v = 0; v < nv; ++v)
+  for (int v = 0; v < num_vertices; ++v)
     std::sort(half_edges.begin() + bucket_start[v], half_edges.begin() + bucket_start[v + 1],
-              [](const HalfEdge& x, const HalfEdge& y) { return std::tie(x.hi, x.face) < std::tie(y.hi, y.face); });
+              [](const HalfEdge& x, const HalfEdge& y) {
+                return std::tie(x.hi, x.face, x.corner) < std::tie(y.hi, y.face, y.corner);
+              });
+  return half_edges;
+}
+
+EdgeTopology edge_topology(const Eigen::MatrixXi& F) {
+  if (F.size() > 0 && F.minCoeff() < 0) throw ValidationError("edge_topology: a face has a negative vertex index");
+  const std::vector<HalfEdge> half_edges = sorted_half_edges(F, F.size() > 0 ? F.maxCoeff() + 1 : 0);
+  const auto from = [&](const HalfEdge& h) { return F(h.face, h.corner); };
   EdgeTopology topology;
   for (std::size_t i = 0; i < half_edges.size();) {
     std::size_t j = i;
@@ -41,9 +43,9 @@ EdgeTopology edge_topology(const Eigen::MatrixXi& F) {
     const std::size_t count = j - i;
     ++topology.num_edges;
     if (count == 1) {
-      topology.boundary_half_edges.emplace_back(h.from, h.from == h.lo ? h.hi : h.lo);
+      topology.boundary_half_edges.emplace_back(from(h), from(h) == h.lo ? h.hi : h.lo);
     } else if (count == 2) {
-      if (half_edges[i].from == half_edges[i + 1].from && topology.misoriented_edge.empty())
+      if (from(half_edges[i]) == from(half_edges[i + 1]) && topology.misoriented_edge.empty())
         topology.misoriented_edge = {h.lo, h.hi, half_edges[i].face, half_edges[i + 1].face};
     } else if (topology.overused_edge.empty()) {
       topology.overused_edge = {h.lo, h.hi, static_cast<int>(count)};

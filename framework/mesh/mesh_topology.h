@@ -25,6 +25,17 @@ struct EdgeTopology {
 
 EdgeTopology edge_topology(const Eigen::MatrixXi& F);
 
+// Face f's side from corner k to corner k + 1, by its ends.
+struct HalfEdge {
+  int lo, hi, face, corner;  // lo = min of the ends, hi = max
+};
+
+// The 3|F| sides sorted by (lo, hi, face, corner): each undirected edge's
+// sides are one run, in file order. Counted into one bucket per lo, then
+// each bucket (the edges at a vertex, a few) sorted. F's indices in
+// [0, num_vertices).
+std::vector<HalfEdge> sorted_half_edges(const Eigen::MatrixXi& F, int num_vertices);
+
 // A key of the undirected edge (a, b) among num_vertices vertices, the same
 // for (b, a).
 inline std::int64_t undirected_edge_key(int a, int b, int num_vertices) {
