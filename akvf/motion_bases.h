@@ -5,6 +5,7 @@
 // or nothing when constraint terms or a shift make P definite. All bases
 // here, for both dimensions, act on interleaved dofs (x0 y0 [z0] x1 ...).
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -43,6 +44,14 @@ class ComponentMotions {
                    const Eigen::VectorXd& x, const std::function<Eigen::MatrixXd(const Eigen::VectorXd&)>& basis_of);
   // v -= B (B^T v): v's component in the motions removed.
   void project_out(Eigen::VectorXd* v) const;
+  // Keeps of each basis the motions that the symmetric PSD matrix C (its
+  // upper triangle, on the same dofs) does not stiffen: those on which
+  // B^T C B has an eigenvalue within the rounding of the sum that forms it
+  // (its m terms' magnitudes times m epsilon), which is what a C invariant
+  // under the motions leaves. A basis that keeps them all is left as it is,
+  // bit for bit. For P + C where the motions span P's null space: the result
+  // spans P + C's.
+  void keep_unstiffened_by(const Eigen::SparseMatrix<double>& upper_C);
 
  private:
   Eigen::MatrixXd whole_;

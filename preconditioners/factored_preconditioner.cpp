@@ -139,6 +139,9 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   null_basis_ = component_vertices_ ? ComponentMotions(D, component_vertices_, state.x,
                                                        [this](const Eigen::VectorXd& part) { return null_space(part); })
                                     : ComponentMotions(null_space(state.x));
+  // The barrier stiffens a dilation, which K_0's null space holds: P + C's
+  // null space is then the rest (P_N (P + C)^-1 g would not descend).
+  if (contact_.nonZeros() > 0) null_basis_.keep_unstiffened_by(contact_);
   const auto assemble_shifted = [&] {
     assemble(state, &matrix_);
     add_shift();

@@ -1,8 +1,10 @@
 #include "akvf/motion_bases.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/QR>
 #include <cmath>
+#include <limits>
 
 #include "akvf/error.h"
 
@@ -112,6 +114,56 @@ void subtract_projection(const Eigen::MatrixXd& B, Eigen::VectorXd* v) {
 }
 
 }  // namespace
+
+void ComponentMotions::keep_unstiffened_by(const Eigen::SparseMatrix<double>& upper_C) {
+  // Each block's rows: the dofs of its component's vertices, in order.
+  const int dimension = component_vertices_ ? dimension_ : 1;
+  const auto blocks = static_cast<int>(component_vertices_ ? blocks_.size() : 1);
+  std::vector<int> block_of(static_cast<std::size_t>(upper_C.rows()), component_vertices_ ? -1 : 0);
+  std::vector<Eigen::Index> row_of(block_of.size());
+  if (component_vertices_) {
+    for (int c = 0; c < blocks; ++c) {
+      const std::vector<int>& vertices = (*component_vertices_)[c];
+      for (std::size_t i = 0; i < vertices.size(); ++i)
+        for (int k = 0; k < dimension; ++k) {
+          const auto dof = static_cast<std::size_t>(dimension) * vertices[i] + k;
+          block_of[dof] = c;
+          row_of[dof] = static_cast<Eigen::Index>(dimension * i + k);
+        }
+    }
+  } else {
+    for (std::size_t dof = 0; dof < row_of.size(); ++dof) row_of[dof] = static_cast<Eigen::Index>(dof);
+  }
+  const auto basis = [&](int c) -> Eigen::MatrixXd& { return component_vertices_ ? blocks_[c] : whole_; };
+  // B^T C B per block, from C's entries (C couples dofs of one component).
+  std::vector<Eigen::MatrixXd> stiffness(blocks);
+  // The sum of the magnitudes of B^T C B's terms, and their number.
+  std::vector<double> magnitude(blocks, 0), terms(blocks, 0);
+  for (int c = 0; c < blocks; ++c) stiffness[c] = Eigen::MatrixXd::Zero(basis(c).cols(), basis(c).cols());
+  for (Eigen::Index j = 0; j < upper_C.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(upper_C, j); it; ++it) {
+      const Eigen::Index i = it.row();
+      const int c = block_of[j];
+      if (c < 0 || block_of[i] != c || basis(c).cols() == 0) continue;
+      const Eigen::MatrixXd& B = basis(c);
+      Eigen::MatrixXd& M = stiffness[c];
+      M.noalias() += it.value() * B.row(row_of[i]).transpose() * B.row(row_of[j]);
+      if (i != j) M.noalias() += it.value() * B.row(row_of[j]).transpose() * B.row(row_of[i]);
+      magnitude[c] += (i != j ? 2 : 1) * std::abs(it.value()) * B.row(row_of[i]).norm() * B.row(row_of[j]).norm();
+      terms[c] += i != j ? 2 : 1;
+    }
+  for (int c = 0; c < blocks; ++c) {
+    if (!(magnitude[c] > 0)) continue;
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(stiffness[c]);
+    const Eigen::VectorXd& values = eigen.eigenvalues();  // increasing
+    Eigen::Index kept = 0;
+    // A sum of m terms is exact to about m epsilon times their magnitudes.
+    const double rounding = terms[c] * std::numeric_limits<double>::epsilon() * magnitude[c];
+    while (kept < values.size() && values[kept] <= rounding) ++kept;
+    if (kept == values.size()) continue;
+    basis(c) = basis(c) * eigen.eigenvectors().leftCols(kept);
+  }
+}
 
 void ComponentMotions::project_out(Eigen::VectorXd* v) const {
   if (!component_vertices_) {
