@@ -117,7 +117,6 @@ void subtract_projection(const Eigen::MatrixXd& B, Eigen::VectorXd* v) {
 
 void ComponentMotions::keep_unstiffened_by(const Eigen::SparseMatrix<double>& upper_C) {
   // Each block's rows: the dofs of its component's vertices, in order.
-  const int dimension = component_vertices_ ? dimension_ : 1;
   const auto blocks = static_cast<int>(component_vertices_ ? blocks_.size() : 1);
   std::vector<int> block_of(static_cast<std::size_t>(upper_C.rows()), component_vertices_ ? -1 : 0);
   std::vector<Eigen::Index> row_of(block_of.size());
@@ -125,10 +124,10 @@ void ComponentMotions::keep_unstiffened_by(const Eigen::SparseMatrix<double>& up
     for (int c = 0; c < blocks; ++c) {
       const std::vector<int>& vertices = (*component_vertices_)[c];
       for (std::size_t i = 0; i < vertices.size(); ++i)
-        for (int k = 0; k < dimension; ++k) {
-          const auto dof = static_cast<std::size_t>(dimension) * vertices[i] + k;
+        for (int k = 0; k < dimension_; ++k) {
+          const auto dof = static_cast<std::size_t>(dimension_) * vertices[i] + k;
           block_of[dof] = c;
-          row_of[dof] = static_cast<Eigen::Index>(dimension * i + k);
+          row_of[dof] = static_cast<Eigen::Index>(dimension_ * i + k);
         }
     }
   } else {
