@@ -285,7 +285,8 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                         "repeated faces (kept in the outputs), opens edges shared "
                         "by three or more faces, splits non-manifold vertices into one copy per fan of faces "
                         "(reported; the UV is then per corner) and reverses faces wound against their "
-                        "neighbours; none refuses such meshes",
+                        "neighbours (with cut auto or seams, cuts a surface no winding makes agree where they "
+                        "disagree); none refuses such meshes",
                         &O::repair)));
     f.push_back(recomputes_start(
         choice_field<O>("injectivity", "injectivity", "injectivity",

@@ -113,7 +113,7 @@ TEST_CASE("repair: a face wound against its neighbours is reversed, its UV corne
   CHECK(akvf::prepare_disk_mesh(mostly, "m.obj", false, true).reoriented_faces == std::vector<int>{0});
 }
 
-TEST_CASE("a Moebius strip is said to be non-orientable") {
+TEST_CASE("a Moebius strip is said to be non-orientable, and cut across where the windings disagree") {
   // A strip of 12 quads around a circle, its ends glued with a half twist.
   const int n = 12;
   TriMesh m;
@@ -133,9 +133,24 @@ TEST_CASE("a Moebius strip is said to be non-orientable") {
     m.F.row(2 * i) << a, c, d;
     m.F.row(2 * i + 1) << a, d, b;
   }
-  CHECK(validation_error(m) ==
+  CHECK(error_message([&] { akvf::prepare_disk_mesh(m, "m.obj", false, true); }) ==
         "m.obj: the surface is non-orientable (like a Moebius strip or a Klein bottle): no choice of face orientations "
-        "agrees across every edge, so it has no UV map as one piece");
+        "agrees across every edge, so it has no UV map as one piece; cut auto cuts it where they disagree (akvf "
+        "param --cut auto)");
+  // With the cut: opened across once, the strip is a disk (one chart, one
+  // boundary loop) with a copy of the cut edge's two ends.
+  const akvf::DiskMesh disk = akvf::prepare_disk_mesh(m, "m.obj", true, true);
+  CHECK(disk.num_charts() == 1);
+  CHECK(disk.boundary_loops.size() == 1);
+  CHECK(disk.mesh.num_vertices() == 2 * n + 2);
+  REQUIRE(!disk.warnings.empty());
+  CHECK(disk.warnings.front().find("non-orientable (like a Moebius strip or a Klein bottle); cut along 1 edge") !=
+        std::string::npos);
+  // Without repair it is refused as before.
+  CHECK(error_message([&] {
+          akvf::prepare_disk_mesh(m, "m.obj", true, false);
+        }).find("repair auto with cut auto cuts it where they disagree (akvf param --repair auto --cut auto)") !=
+        std::string::npos);
 }
 
 TEST_CASE("two fans meeting at a vertex are non-manifold") {

@@ -115,12 +115,9 @@ Json repair_record(const DiskMesh& disk) {
     first_set_aside.push_back(disk.removed_faces[i] + index_base);
   Json welded = Json::array();
   for (const int v : disk.welding.first_welded) welded.push_back(v + index_base);
-  Json record = {{"welded_vertices", disk.welding.welded},
-                 {"first_welded_vertices", welded},
-                 {"opened_edges", repair.opened_edges},
-                 {"split_vertices", repair.split_vertices},
-                 {"added_copies", repair.added_copies},
-                 {"first_opened_edges", opened},
+  Json record = {{"welded_vertices", disk.welding.welded}, {"first_welded_vertices", welded},
+                 {"opened_edges", repair.opened_edges},    {"split_vertices", repair.split_vertices},
+                 {"added_copies", repair.added_copies},    {"first_opened_edges", opened},
                  {"first_split_vertices", split}};
   Json reversed = Json::array();
   for (std::size_t i = 0; i < std::min<std::size_t>(disk.reoriented_faces.size(), 5); ++i) {
@@ -129,6 +126,12 @@ Json repair_record(const DiskMesh& disk) {
   }
   record["reversed_faces"] = disk.reoriented_faces.size();
   record["first_reversed_faces"] = reversed;
+  Json orientation_cuts = Json::array();
+  for (std::size_t i = 0; i < std::min<std::size_t>(disk.orientation_cuts.size(), 5); ++i)
+    orientation_cuts.push_back(
+        {disk.orientation_cuts[i].first + index_base, disk.orientation_cuts[i].second + index_base});
+  record["orientation_cut_edges"] = disk.orientation_cuts.size();
+  record["first_orientation_cut_edges"] = orientation_cuts;
   record["set_aside_faces"] = disk.removed_faces.size();
   record["first_set_aside_faces"] = first_set_aside;
   return record;

@@ -18,7 +18,8 @@ int find(std::vector<int>& parent, int i) {
 
 }  // namespace
 
-ManifoldRepair repair_manifold(TriMesh* mesh, std::vector<int>* input_vertex) {
+ManifoldRepair repair_manifold(TriMesh* mesh, std::vector<int>* input_vertex,
+                               const std::vector<std::pair<int, int>>& open) {
   ManifoldRepair repair;
   const int nf = mesh->num_faces();
   const Eigen::MatrixXi& F = mesh->F;
@@ -47,7 +48,8 @@ ManifoldRepair repair_manifold(TriMesh* mesh, std::vector<int>* input_vertex) {
     const std::size_t count = end - i;
     i = end;
     if (count == 2) {
-      if (faces[0].face != faces[1].face) join(faces[0].face, faces[1].face, edge);
+      if (faces[0].face != faces[1].face && !std::binary_search(open.begin(), open.end(), edge))
+        join(faces[0].face, faces[1].face, edge);
       continue;
     }
     if (count < 2) continue;

@@ -8,6 +8,7 @@
 // (per-corner UV) keep the input's numbering.
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "akvf/mesh.h"
@@ -31,7 +32,10 @@ struct ManifoldRepair {
 // order) that run along it in opposite directions; the corners of a vertex
 // joined through such edges form one fan, and each fan after the first gets
 // a copy of the vertex.
-ManifoldRepair repair_manifold(TriMesh* mesh, std::vector<int>* input_vertex);
+// Edges in `open` ((smaller, larger) vertex pairs, ascending) join no faces:
+// the mesh is cut along them (orientation_with_cuts's cuts).
+ManifoldRepair repair_manifold(TriMesh* mesh, std::vector<int>* input_vertex,
+                               const std::vector<std::pair<int, int>>& open = {});
 
 // The repairs in words, for a warning ("" when none), numbered as the file
 // numbers vertices.

@@ -205,8 +205,21 @@ DiskMesh prepare_disk_mesh(const TriMesh& given, const std::string& name, bool c
                           std::to_string(topology.overused_edge[2]) + " faces" + numbering_note(b) +
                           "; the mesh must be edge-manifold");
   std::vector<char> flip;
-  const bool orientable = topology.misoriented_edge.empty() || consistent_orientation(m.F, &flip);
-  if (repair && orientable && !topology.misoriented_edge.empty()) {
+  bool orientable = topology.misoriented_edge.empty() || consistent_orientation(m.F, &flip);
+  if (repair && cut && !orientable) {
+    // Cut where no winding agrees: the pieces are orientable, then cut into
+    // disks like any other surface.
+    std::vector<std::pair<int, int>> cuts;
+    orientation_with_cuts(m.F, &flip, &cuts);
+    out.reoriented_faces = reverse_faces(flip, &out.mesh.F);
+    const int vertices = m.num_vertices();
+    repair_manifold(&out.mesh, &out.input_vertex, cuts);
+    for (const auto& [u, v] : cuts) out.orientation_cuts.push_back({out.input_vertex[u], out.input_vertex[v]});
+    out.warnings.push_back(orientation_cut_description(out.orientation_cuts, m.num_vertices() - vertices,
+                                                       out.reoriented_faces.size(), name, b));
+    topology = edge_topology(m.F);
+    orientable = true;
+  } else if (repair && orientable && !topology.misoriented_edge.empty()) {
     out.reoriented_faces = reverse_faces(flip, &out.mesh.F);
     out.warnings.push_back(reorientation_description(out.reoriented_faces, out.input_face, name, b));
     topology = edge_topology(m.F);
@@ -214,7 +227,10 @@ DiskMesh prepare_disk_mesh(const TriMesh& given, const std::string& name, bool c
   if (!orientable)
     throw ValidationError(name +
                           ": the surface is non-orientable (like a Moebius strip or a Klein bottle): no choice "
-                          "of face orientations agrees across every edge, so it has no UV map as one piece");
+                          "of face orientations agrees across every edge, so it has no UV map as one piece;" +
+                          (repair ? std::string(" cut auto cuts it where they disagree (akvf param --cut auto)")
+                                  : std::string(" repair auto with cut auto cuts it where they disagree (akvf param "
+                                                "--repair auto --cut auto)")));
   if (!topology.misoriented_edge.empty())
     throw ValidationError(name + ": faces " + face_at_input(topology.misoriented_edge[2]) + " and " +
                           face_at_input(topology.misoriented_edge[3]) + " traverse edge (" +

@@ -35,6 +35,10 @@ struct DiskMesh {
   // Mesh faces whose second and third corners were swapped to agree with
   // their neighbours (repair asked for; face_orientation.h), ascending.
   std::vector<int> reoriented_faces;
+  // A surface no winding makes agree, with cut and repair asked for: the
+  // edges it was cut along where the windings disagree, as input vertex
+  // pairs (face_orientation.h).
+  std::vector<std::pair<int, int>> orientation_cuts;
   Warnings warnings;
 
   int num_charts() const { return static_cast<int>(boundary_loops.size()); }
