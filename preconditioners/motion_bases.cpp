@@ -116,23 +116,25 @@ void subtract_projection(const Eigen::MatrixXd& B, Eigen::VectorXd* v) {
 }  // namespace
 
 void ComponentMotions::keep_unstiffened_by(const Eigen::SparseMatrix<double>& upper_C) {
-  // Each block's rows: the dofs of its component's vertices, in order.
+  // Where a dof is: its block and row there (a block's rows are the dofs of
+  // its component's vertices, in order). Looked up per vertex: a whole
+  // basis's row is the dof itself.
   const auto blocks = static_cast<int>(component_vertices_ ? blocks_.size() : 1);
-  std::vector<int> block_of(static_cast<std::size_t>(upper_C.rows()), component_vertices_ ? -1 : 0);
-  std::vector<Eigen::Index> row_of(block_of.size());
+  std::vector<int> component_of, index_in;
   if (component_vertices_) {
-    for (int c = 0; c < blocks; ++c) {
-      const std::vector<int>& vertices = (*component_vertices_)[c];
-      for (std::size_t i = 0; i < vertices.size(); ++i)
-        for (int k = 0; k < dimension_; ++k) {
-          const auto dof = static_cast<std::size_t>(dimension_) * vertices[i] + k;
-          block_of[dof] = c;
-          row_of[dof] = static_cast<Eigen::Index>(dimension_ * i + k);
-        }
-    }
-  } else {
-    for (std::size_t dof = 0; dof < row_of.size(); ++dof) row_of[dof] = static_cast<Eigen::Index>(dof);
+    const auto vertices = static_cast<std::size_t>(upper_C.rows() / dimension_);
+    component_of.assign(vertices, -1);
+    index_in.resize(vertices);
+    for (int c = 0; c < blocks; ++c)
+      for (std::size_t i = 0; i < (*component_vertices_)[c].size(); ++i) {
+        component_of[(*component_vertices_)[c][i]] = c;
+        index_in[(*component_vertices_)[c][i]] = static_cast<int>(i);
+      }
   }
+  const auto block_of = [&](Eigen::Index dof) { return component_vertices_ ? component_of[dof / dimension_] : 0; };
+  const auto row_of = [&](Eigen::Index dof) {
+    return component_vertices_ ? Eigen::Index{dimension_} * index_in[dof / dimension_] + dof % dimension_ : dof;
+  };
   const auto basis = [&](int c) -> Eigen::MatrixXd& { return component_vertices_ ? blocks_[c] : whole_; };
   // B^T C B per block, from C's entries (C couples dofs of one component).
   std::vector<Eigen::MatrixXd> stiffness(blocks);
@@ -142,13 +144,14 @@ void ComponentMotions::keep_unstiffened_by(const Eigen::SparseMatrix<double>& up
   for (Eigen::Index j = 0; j < upper_C.outerSize(); ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(upper_C, j); it; ++it) {
       const Eigen::Index i = it.row();
-      const int c = block_of[j];
-      if (c < 0 || block_of[i] != c || basis(c).cols() == 0) continue;
+      const int c = block_of(j);
+      if (c < 0 || block_of(i) != c || basis(c).cols() == 0) continue;
       const Eigen::MatrixXd& B = basis(c);
+      const auto bi = B.row(row_of(i)), bj = B.row(row_of(j));
       Eigen::MatrixXd& M = stiffness[c];
-      M.noalias() += it.value() * B.row(row_of[i]).transpose() * B.row(row_of[j]);
-      if (i != j) M.noalias() += it.value() * B.row(row_of[j]).transpose() * B.row(row_of[i]);
-      magnitude[c] += (i != j ? 2 : 1) * std::abs(it.value()) * B.row(row_of[i]).norm() * B.row(row_of[j]).norm();
+      M.noalias() += it.value() * bi.transpose() * bj;
+      if (i != j) M.noalias() += it.value() * bj.transpose() * bi;
+      magnitude[c] += (i != j ? 2 : 1) * std::abs(it.value()) * bi.norm() * bj.norm();
       terms[c] += i != j ? 2 : 1;
     }
   for (int c = 0; c < blocks; ++c) {

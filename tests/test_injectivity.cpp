@@ -217,8 +217,8 @@ TEST_CASE("MIPS held apart by the barrier converges with AKVF and the default: t
   // MIPS's K_0 has the dilation in its null space; the barrier, pressing
   // the strip's turns apart, is not scale invariant and stiffens it, so
   // P + C's null space is the rigid motions alone (ComponentMotions::
-  // keep_unstiffened_by). Projecting the dilation out of (P + C)^-1 g
-  // anyway gave directions that climb.
+  // keep_unstiffened_by); projecting the dilation out of (P + C)^-1 g
+  // would give directions that climb.
   const TriMesh strip = helicoid_strip(1.5, 0.05);
   for (const char* preconditioner : {"akvf", "akvf-newton"}) {
     CAPTURE(preconditioner);
