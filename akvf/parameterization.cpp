@@ -1,5 +1,7 @@
 #include "akvf/internal/parameterization.h"
 
+#include <tbb/task_group.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -50,19 +52,25 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
 // takes 10.3 s instead of 19.3 s.
 constexpr int kCholmodTutteVertices = 100000;
 
-// On those meshes the vertex graph is ordered once, as the optimizer's
-// matrices (2 x 2 blocks per vertex) need it, and the Tutte system (the
+// The vertex graph is ordered once for the optimizer's matrices (2 x 2
+// blocks per vertex: the symbolic analysis of their first factorization
+// takes it as given). From kCholmodTutteVertices on, the Tutte system (the
 // interior vertices) is ordered by its restriction: one ordering of the mesh
-// instead of one for the Tutte system and another for the optimizer (horse_b
-// x64: METIS takes about 7 s of each). Null below.
+// instead of two (horse_b x64: METIS takes about 7 s of each). Below, Eigen
+// orders the Tutte system itself, and the mesh's ordering is found beside
+// the Tutte solve, on a second thread where the arena has one (horse_b: 14
+// ms of ordering beside 30 ms of Tutte solve, which runs on one thread);
+// but not for global injectivity, whose factored matrix P + C has the
+// barrier's entries beside the mesh's: there each analysis orders the graph
+// it factors (milliseconds below kCholmodTutteVertices, seconds above).
+bool tutte_by_cholmod(const TriMesh& mesh) { return mesh.num_vertices() >= kCholmodTutteVertices; }
+
 std::shared_ptr<const BlockOrdering> mesh_vertex_ordering(const TriMesh& mesh) {
-  if (mesh.num_vertices() < kCholmodTutteVertices) return nullptr;
   return std::make_shared<const BlockOrdering>(
       fill_reducing_ordering(upper_vertex_graph(mesh.F, mesh.num_vertices()), 2));
 }
 
 SpdSolver tutte_solver(const std::shared_ptr<const BlockOrdering>& ordering) {
-  if (!ordering) return {};
   return [ordering](const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, const std::vector<int>& vertices,
                     Eigen::MatrixXd* X) {
     const BlockOrdering restricted{restricted_order(*ordering, vertices), ordering->method};
@@ -106,10 +114,26 @@ int shorten_crossing_flaps(const BoundaryContact& contact, const Eigen::MatrixXd
   return static_cast<int>(std::count_if(halvings.begin(), halvings.end(), [](int n) { return n > 0; }));
 }
 
-// setup->x0 = the Tutte map of the charts of `normalized` (+ flaps).
+// setup->x0 = the Tutte map of the charts of `normalized` (+ flaps), and
+// setup->vertex_ordering, the mesh's where it is used (mesh_vertex_ordering).
 void start_at_tutte_map(const ParamConfig& config, const TriMesh& normalized, ParamSetup* setup) {
-  Eigen::MatrixXd UV = tutte_embedding_charts(normalized, setup->disk.boundary_loops, setup->disk.face_chart,
-                                              config.init, &setup->warnings, tutte_solver(setup->vertex_ordering));
+  tbb::task_group beside;
+  SpdSolver solver;  // Eigen's
+  if (tutte_by_cholmod(normalized)) {
+    setup->vertex_ordering = mesh_vertex_ordering(normalized);
+    solver = tutte_solver(setup->vertex_ordering);
+  } else if (!config.global_injectivity) {
+    beside.run([&] { setup->vertex_ordering = mesh_vertex_ordering(normalized); });
+  }
+  Eigen::MatrixXd UV;
+  try {
+    UV = tutte_embedding_charts(normalized, setup->disk.boundary_loops, setup->disk.face_chart, config.init,
+                                &setup->warnings, solver);
+  } catch (...) {
+    beside.wait();
+    throw;
+  }
+  beside.wait();
   if (config.optimize_flaps) {
     const Eigen::MatrixXd tutte = UV;
     setup->flaps_moved = optimize_flaps(normalized, &UV);
@@ -160,7 +184,6 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
     setup.x0 =
         start_from_map(setup, config, config.start_uv, name + ": the texture coordinates", true, &setup.warnings);
   } else {
-    setup.vertex_ordering = mesh_vertex_ordering(normalized);
     start_at_tutte_map(config, normalized, &setup);
   }
   if (!usable_start(*setup.objective, setup.x0) && config.energy != kWarmStartEnergy) warm_start(config, &setup);
