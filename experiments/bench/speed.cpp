@@ -21,7 +21,9 @@
 //
 // The unit: K (Eq. 5, area-scaled) at the initial map in 2D, K (Eq. 9-10) +
 // 1e-4 I at the rest shape in 3D, analyzed once, then the median of 5
-// numeric factorizations: ours (all threads, what the runs use), and
+// numeric factorizations (in 2D before each round of --repeat, each run in
+// its round's unit, and the medians of those shown): ours (all threads,
+// what the runs use), and
 // CHOLMOD alone (its default analysis, simplicial below its supernodal
 // switch, its one-core factorization), the unit issue 14's targets were
 // first set in.
@@ -44,6 +46,7 @@
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -76,42 +79,50 @@ struct Unit {
   double ours = 0, cholmod = 0;  // seconds
 };
 
-// Median seconds of 5 numeric factorizations of `matrix` (analyzed once).
-template <int D>
-double factorization_seconds(const akvf::ElementMatrix<D, D + 1>& matrix, bool by_cholmod) {
-  akvf::SparseCholesky cholesky;
-  cholesky.use_cholmod_alone(by_cholmod);
-  cholesky.analyze(matrix.upper(), D);
-  std::vector<double> seconds;
-  for (int i = 0; i < 5; ++i) {
-    const auto start = Clock::now();
-    cholesky.factorize(matrix.upper());
-    seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+// The unit's matrix, analyzed once by each factorization; measure() times
+// 5 numeric factorizations by each and gives their medians. In 2D it is
+// measured before each round of runs, and each run is divided by its
+// round's unit, so that a stretch of a slower machine slows both.
+class UnitClock {
+ public:
+  UnitClock(const Eigen::SparseMatrix<double>& upper, int block_size) : upper_(upper) {
+    cholmod_.use_cholmod_alone(true);
+    for (akvf::SparseCholesky* cholesky : {&ours_, &cholmod_}) cholesky->analyze(upper_, block_size);
   }
-  return median(seconds);
-}
+  Unit measure() {
+    const akvf::ThreadLimit threads(0);
+    return {median_seconds(&ours_), median_seconds(&cholmod_)};
+  }
 
-template <int D>
-Unit factorization_units(const akvf::ElementMatrix<D, D + 1>& matrix) {
-  return {factorization_seconds<D>(matrix, false), factorization_seconds<D>(matrix, true)};
-}
+ private:
+  double median_seconds(akvf::SparseCholesky* cholesky) {
+    std::vector<double> seconds;
+    for (int i = 0; i < 5; ++i) {
+      const auto start = Clock::now();
+      cholesky->factorize(upper_);
+      seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    return median(seconds);
+  }
+  Eigen::SparseMatrix<double> upper_;
+  akvf::SparseCholesky ours_, cholmod_;
+};
 
-Unit unit_2d(const akvf::TriMesh& mesh) {
+std::unique_ptr<UnitClock> unit_clock_2d(const akvf::TriMesh& mesh) {
   const akvf::ThreadLimit threads(0);
   const akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "mesh", akvf::ParamConfig{});
   const akvf::DistortionObjective2D& objective = *setup.objective;
   akvf::ElementMatrix2D K(objective.elements(), objective.num_vertices());
   akvf::assemble_killing_operator_2d(objective.elements(), setup.x0, objective.rest().area, true, &K);
   K.add_to_diagonal(1e-8 * K.mean_diagonal());
-  return factorization_units<2>(K);
+  return std::make_unique<UnitClock>(K.upper(), 2);
 }
 
 Unit unit_3d(const akvf::TetMesh& mesh) {
-  const akvf::ThreadLimit threads(0);
   akvf::ElementMatrix3D K(mesh.T, mesh.num_vertices());
   akvf::assemble_killing_operator_3d(mesh.T, akvf::stack_rows(mesh.V), &K);
   K.add_to_diagonal(1e-4);
-  return factorization_units<3>(K);
+  return UnitClock(K.upper(), 3).measure();
 }
 
 struct Row {
@@ -123,7 +134,28 @@ struct Row {
   // 2D: iterations and seconds to within 1e-6 of the lowest energy (-1: never).
   int gap_iterations = -1;
   double gap_seconds = -1;
+  // seconds and gap_seconds in units (the medians of the runs' own, in 2D).
+  Unit units{}, gap_units{};
 };
+
+double median_of(const std::vector<Unit>& units, double Unit::*part) {
+  std::vector<double> values;
+  for (const Unit& unit : units) values.push_back(unit.*part);
+  return median(values);
+}
+
+// Seconds in units of `unit`.
+Unit in_units(double seconds, const Unit& unit) { return {seconds / unit.ours, seconds / unit.cholmod}; }
+
+// The median of each run's seconds in its round's units.
+Unit median_units(const std::vector<double>& seconds, const std::vector<Unit>& round_units) {
+  std::vector<double> ours, cholmod;
+  for (std::size_t i = 0; i < seconds.size(); ++i) {
+    ours.push_back(seconds[i] / round_units[i].ours);
+    cholmod.push_back(seconds[i] / round_units[i].cholmod);
+  }
+  return {median(ours), median(cholmod)};
+}
 
 // Where a run that went on to a tighter tolerance would have stopped at
 // `tolerance`: its first row below it (not counting the warm start's), or its
@@ -160,14 +192,14 @@ void print_rows(const std::string& mesh, long elements, const Unit& unit, const 
   }
   for (const Row& r : rows) {
     char line[600];
-    int n = std::snprintf(
-        line, sizeof line, "| %s | %ld | %.1f | %.1f | %s | %d | %.3f | %.1f | %.1f | %.2f | %s | %.10g |",
-        mesh.c_str(), elements, 1e3 * unit.ours, 1e3 * unit.cholmod, r.method.c_str(), r.iterations, r.seconds,
-        r.seconds / unit.ours, r.seconds / unit.cholmod, r.seconds / best, r.status.c_str(), r.energy);
+    int n = std::snprintf(line, sizeof line,
+                          "| %s | %ld | %.1f | %.1f | %s | %d | %.3f | %.1f | %.1f | %.2f | %s | %.10g |", mesh.c_str(),
+                          elements, 1e3 * unit.ours, 1e3 * unit.cholmod, r.method.c_str(), r.iterations, r.seconds,
+                          r.units.ours, r.units.cholmod, r.seconds / best, r.status.c_str(), r.energy);
     if (with_gap) {
       if (r.gap_seconds >= 0)
         std::snprintf(line + n, sizeof line - n, " %d | %.3f | %.1f | %.2f |", r.gap_iterations, r.gap_seconds,
-                      r.gap_seconds / unit.cholmod, r.gap_seconds / best_gap);
+                      r.gap_units.cholmod, r.gap_seconds / best_gap);
       else
         std::snprintf(line + n, sizeof line - n, " - | - | - | - |");
     }
@@ -230,9 +262,9 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
       continue;
     }
     if (mesh.num_faces() < min_faces) continue;
-    Unit unit;
+    std::unique_ptr<UnitClock> unit_clock;
     try {
-      unit = unit_2d(mesh);
+      unit_clock = unit_clock_2d(mesh);
     } catch (const akvf::Error& e) {
       std::cerr << file.filename().string() << ": skipped (" << e.what() << ")\n";
       continue;
@@ -255,7 +287,9 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
     std::vector<std::vector<std::vector<akvf::IterationSummary>>> traces(ours.size());  // per method, per repeat
     std::vector<std::vector<double>> run_seconds(ours.size());
     std::vector<Row> stops(ours.size());
-    for (int i = 0; i < repeat; ++i)
+    std::vector<Unit> round_units;
+    for (int i = 0; i < repeat; ++i) {
+      round_units.push_back(unit_clock->measure());
       for (std::size_t m = 0; m < ours.size(); ++m) {
         akvf::ParameterizeOptions options;
         options.energy = energy;
@@ -274,9 +308,12 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
           if (!row.warm_start) lowest = std::min(lowest, row.energy);
         traces[m].push_back(result.trace);
       }
+    }
+    const Unit unit{median_of(round_units, &Unit::ours), median_of(round_units, &Unit::cholmod)};
     for (std::size_t m = 0; m < ours.size(); ++m) {
       rows.push_back(stops[m]);
       rows.back().seconds = median(run_seconds[m]);
+      rows.back().units = median_units(run_seconds[m], round_units);
     }
     for (std::size_t m = 0; m < rows.size(); ++m) {
       std::vector<double> seconds;
@@ -285,10 +322,15 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
           seconds.push_back(row->seconds);
           rows[m].gap_iterations = row->iteration;
         }
-      if (seconds.size() == traces[m].size()) rows[m].gap_seconds = median(seconds);
+      if (seconds.size() == traces[m].size()) {
+        rows[m].gap_seconds = median(seconds);
+        rows[m].gap_units = median_units(seconds, round_units);
+      }
     }
     for (Row& peer : peers) {
       if (!within(peer.energy, lowest, 1e-6)) peer.gap_iterations = -1, peer.gap_seconds = -1;
+      peer.units = in_units(peer.seconds, unit);
+      peer.gap_units = in_units(peer.gap_seconds, unit);
       rows.push_back(peer);
     }
     print_rows(file.filename().string(), mesh.num_faces(), unit, rows, true);
@@ -367,6 +409,7 @@ void run_3d(const std::filesystem::path& data, const std::vector<std::string>& m
           row.energy = trace_row->energy;
         }
       if (!seconds.empty()) row.seconds = median(seconds);
+      row.units = in_units(row.seconds, unit);
       rows.push_back(row);
     }
     print_rows(c.label, mesh.num_tets(), unit, rows, false);
