@@ -79,9 +79,10 @@ struct ParamSetup {
   Eigen::VectorXd x0;  // initial map, interleaved, area-1 units
   int flaps_moved = 0;
   int flaps_shortened = 0;  // of those, moved only part of the way: the full move crossed the boundary
-  // The fill-reducing ordering of the mesh's vertex graph, when the Tutte
-  // start needed one (large meshes, akvf/parameterization.cpp): the
-  // optimizer's matrices are analyzed with it too. Null otherwise.
+  // The fill-reducing ordering of the mesh's vertex graph, found with the
+  // Tutte start (akvf/parameterization.cpp, mesh_vertex_ordering): the
+  // optimizer's matrices are analyzed with it. Null where the start is not
+  // Tutte's, and below 100 K vertices with global injectivity.
   std::shared_ptr<const BlockOrdering> vertex_ordering;
   // The warm start's run when the energy is infinite at the initial map
   // (empty trace otherwise); x0 is its end point when it succeeded.
