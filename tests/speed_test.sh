@@ -2,7 +2,8 @@
 # akvf_speed's 2D rows on a generated disk (a bumpy 60 x 60 grid): each
 # method's own stop, read from a run that went on to a tighter tolerance, is
 # where `akvf param` with the default tolerance stops (iterations, energy),
-# and every method that converges reaches the "to 1e-6" target.
+# and every method that converges reaches the "to 1e-6" target; --refine-to
+# subdivides a smaller mesh.
 # Usage: speed_test.sh AKVF_SPEED_BINARY AKVF_BINARY
 set -euo pipefail
 speed=$1
@@ -34,4 +35,8 @@ for energy in symmetric-dirichlet arap; do
     [ "$to_target" != - ] || { echo "$energy $method: converged but never within the target"; exit 1; }
   done
 done
+# --refine-to: the grid (6962 faces) subdivided once, to 27848, and labelled so.
+"$speed" --data "$dir" --refine-to 10000 --only 2d --methods default > "$dir/refined.md"
+grep -q '^| grid.obj x4 | 27848 |.*| converged |' "$dir/refined.md" ||
+  { cat "$dir/refined.md"; echo "--refine-to 10000: no converged row for grid.obj x4 with 27848 faces"; exit 1; }
 echo "ok"

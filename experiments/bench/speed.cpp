@@ -2,7 +2,8 @@
 // Cholesky factorization of the rest Killing operator of the same mesh,
 // measured in the same run (the unit cancels the machine's speed).
 //
-//   2D: every disk mesh in DATA/tri with at least 10 000 faces (--min-faces), with one
+//   2D: every disk mesh in DATA/tri with at least 10 000 faces (--min-faces;
+//       --refine-to N first subdivides the smaller ones to N), with one
 //       energy (--energy, symmetric Dirichlet by default); seconds of
 //       optimizer time to the run's own stop (the default gradient tolerance:
 //       1e-3, 1e-4 for arap),
@@ -37,7 +38,7 @@
 // Prints a Markdown table.
 //
 // Usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim[,cgal]] [--energy NAME] [--repeat N]
-//                   [--min-faces N] [--only 2d|3d]
+//                   [--min-faces N] [--refine-to N] [--only 2d|3d]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -59,6 +60,7 @@
 #include "akvf/rest_geometry.h"
 #include "akvf/tet_mesh_io.h"
 #include "akvf/threads.h"
+#include "framework/mesh/mesh_subdivision.h"
 #include "preconditioners/killing_operator_2d.h"
 #include "preconditioners/killing_operator_3d.h"
 #include "solvers/sparse_cholesky.h"
@@ -245,8 +247,19 @@ Row cgal_arap_row(const akvf::TriMesh& mesh, double* lowest) {
 }
 #endif
 
+// The midpoint subdivisions (each triangle into four) that bring `faces`
+// to at least `refine_to` (0: none).
+int refinement_rounds(long long faces, int refine_to) {
+  int rounds = 0;
+  while (faces > 0 && faces < refine_to) {
+    faces *= 4;
+    ++rounds;
+  }
+  return rounds;
+}
+
 void run_2d(const std::filesystem::path& data, const std::vector<std::string>& methods, const std::string& energy,
-            int repeat, int min_faces) {
+            int repeat, int min_faces, int refine_to) {
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(data / "tri")) files.push_back(entry.path());
   std::sort(files.begin(), files.end());
@@ -261,12 +274,17 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
     } catch (const akvf::Error&) {
       continue;
     }
+    std::string label = file.filename().string();
+    if (const int rounds = refinement_rounds(mesh.num_faces(), refine_to); rounds > 0) {
+      mesh = akvf::subdivide_midpoint(mesh, rounds);
+      label += " x" + std::to_string(1 << (2 * rounds));
+    }
     if (mesh.num_faces() < min_faces) continue;
     std::unique_ptr<UnitClock> unit_clock;
     try {
       unit_clock = unit_clock_2d(mesh);
     } catch (const akvf::Error& e) {
-      std::cerr << file.filename().string() << ": skipped (" << e.what() << ")\n";
+      std::cerr << label << ": skipped (" << e.what() << ")\n";
       continue;
     }
     std::vector<Row> rows;
@@ -333,7 +351,7 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
       peer.gap_units = in_units(peer.gap_seconds, unit);
       rows.push_back(peer);
     }
-    print_rows(file.filename().string(), mesh.num_faces(), unit, rows, true);
+    print_rows(label, mesh.num_faces(), unit, rows, true);
   }
 }
 
@@ -422,7 +440,7 @@ int main(int argc, char** argv) {
   std::filesystem::path data = std::getenv("AKVF_DATA_DIR") ? std::getenv("AKVF_DATA_DIR") : "../shared/meshes";
   std::vector<std::string> methods = {"default", "akvf", "newton", "slim"};
   bool methods_given = false;
-  int repeat = 1, min_faces = 10000;
+  int repeat = 1, min_faces = 10000, refine_to = 0;
   std::string only, energy = akvf::ParameterizeOptions{}.energy;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -446,13 +464,17 @@ int main(int argc, char** argv) {
       repeat = std::max(1, std::atoi(value().c_str()));
     } else if (arg == "--min-faces") {
       min_faces = std::atoi(value().c_str());
+    } else if (arg == "--refine-to") {
+      refine_to = std::atoi(value().c_str());
     } else if (arg == "--only") {
       only = value();
     } else {
       std::cerr << "usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim[,cgal]] [--energy NAME] "
-                   "[--repeat N] [--min-faces N] [--only 2d|3d]\n"
+                   "[--repeat N] [--min-faces N] [--refine-to N] [--only 2d|3d]\n"
                    "  --energy NAME  the 2D runs' energy (default symmetric-dirichlet; `akvf list` names them)\n"
                    "  --min-faces N  the 2D meshes of at least N faces (default 10000)\n"
+                   "  --refine-to N  2D meshes of fewer faces midpoint-subdivided (each triangle into four,\n"
+                   "                 the surface unchanged) until they have N, before --min-faces (default 0)\n"
                    "  --repeat N     N runs of each method, taken in turn, and their median time (default 1)\n"
                    "  cgal           CGAL's ARAP parameterizer, 2D with --energy arap only; in the default list\n"
                    "                 then, where this build found CGAL\n";
@@ -485,7 +507,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    if (only != "3d") run_2d(data, methods, energy, repeat, min_faces);
+    if (only != "3d") run_2d(data, methods, energy, repeat, min_faces, refine_to);
     std::vector<std::string> methods_3d;  // CGAL's peer is 2D only
     std::copy_if(methods.begin(), methods.end(), std::back_inserter(methods_3d),
                  [](const std::string& m) { return m != "cgal"; });
