@@ -153,8 +153,9 @@ Unit in_units(double seconds, const Unit& unit) { return {seconds / unit.ours, s
 Unit median_units(const std::vector<double>& seconds, const std::vector<Unit>& round_units) {
   std::vector<double> ours, cholmod;
   for (std::size_t i = 0; i < seconds.size(); ++i) {
-    ours.push_back(seconds[i] / round_units[i].ours);
-    cholmod.push_back(seconds[i] / round_units[i].cholmod);
+    const Unit run = in_units(seconds[i], round_units[i]);
+    ours.push_back(run.ours);
+    cholmod.push_back(run.cholmod);
   }
   return {median(ours), median(cholmod)};
 }
