@@ -17,6 +17,7 @@
 #include "framework/mesh/chart_layout.h"
 #include "framework/mesh/plane_geometry.h"
 #include "framework/mesh/vertex_graph.h"
+#include "framework/optimization/element_matrix.h"
 #include "framework/optimization/injective_objective.h"
 #include "framework/optimization/uniform_scale.h"
 #include "framework/process/interrupt.h"
@@ -59,10 +60,13 @@ constexpr int kCholmodTutteVertices = 100000;
 // instead of two (horse_b x64: METIS takes about 7 s of each). Below, Eigen
 // orders the Tutte system itself, and the mesh's ordering is found beside
 // the Tutte solve, on a second thread where the arena has one (horse_b: 14
-// ms of ordering beside 30 ms of Tutte solve, which runs on one thread);
-// but not for global injectivity, whose factored matrix P + C has the
-// barrier's entries beside the mesh's: there each analysis orders the graph
-// it factors (milliseconds below kCholmodTutteVertices, seconds above).
+// ms of ordering beside 30 ms of Tutte solve, which runs on one thread),
+// and with it the symbolic analysis of the 2 x 2-block pattern every
+// factored preconditioner's matrix has, for the run's first factorization
+// to take (SymbolicAnalysisCache::prepare); but not for global injectivity,
+// whose factored matrix P + C has the barrier's entries beside the mesh's:
+// there each analysis orders the graph it factors (milliseconds below
+// kCholmodTutteVertices, seconds above).
 bool tutte_by_cholmod(const TriMesh& mesh) { return mesh.num_vertices() >= kCholmodTutteVertices; }
 
 std::shared_ptr<const BlockOrdering> mesh_vertex_ordering(const TriMesh& mesh) {
@@ -115,7 +119,8 @@ int shorten_crossing_flaps(const BoundaryContact& contact, const Eigen::MatrixXd
 }
 
 // setup->x0 = the Tutte map of the charts of `normalized` (+ flaps), and
-// setup->vertex_ordering, the mesh's where it is used (mesh_vertex_ordering).
+// setup->vertex_ordering, the mesh's where it is used (mesh_vertex_ordering),
+// with K's analysis in setup->analyses where it is found beside.
 void start_at_tutte_map(const ParamConfig& config, const TriMesh& normalized, ParamSetup* setup) {
   tbb::task_group beside;
   SpdSolver solver;  // Eigen's
@@ -123,7 +128,12 @@ void start_at_tutte_map(const ParamConfig& config, const TriMesh& normalized, Pa
     setup->vertex_ordering = mesh_vertex_ordering(normalized);
     solver = tutte_solver(setup->vertex_ordering);
   } else if (!config.global_injectivity) {
-    beside.run([&] { setup->vertex_ordering = mesh_vertex_ordering(normalized); });
+    if (!setup->analyses) setup->analyses = std::make_shared<SymbolicAnalysisCache>();
+    beside.run([&] {
+      setup->vertex_ordering = mesh_vertex_ordering(normalized);
+      const UpperVertexGraph graph = upper_vertex_graph(normalized.F, normalized.num_vertices());
+      setup->analyses->prepare(block_upper_pattern<2>(graph), 2, setup->vertex_ordering.get());
+    });
   }
   Eigen::MatrixXd UV;
   try {
@@ -171,6 +181,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
   TriMesh normalized = setup.disk.mesh;
   setup.normalization = normalize_to_unit_area(&normalized);
 
+  setup.analyses = config.preconditioner_settings.akvf.factor.analysis_cache;
   setup.objective = std::make_shared<DistortionObjective2D>(normalized.F, rest_triangles(normalized), density,
                                                             normalized.num_vertices());
   setup.objective->set_file_numbering(setup.disk.input_vertex, input.index_base);
@@ -312,6 +323,7 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
   PreconditionerSettings2D settings = config.preconditioner_settings;
   settings.set_linear_solver(available_linear_solver(config.linear_solver));
   settings.share_vertex_ordering(setup.vertex_ordering);
+  if (setup.analyses) settings.share_analyses(setup.analyses);
   settings.akvf_newton_switch.backtracking_factor = config.line_search_settings.rho;
   // The barrier's curvature goes into a factored P (contact_curvature.h),
   // or, for the others, into a low-rank update of theirs.
@@ -450,6 +462,7 @@ void warm_start(const ParamConfig& config, ParamSetup* setup) {
   sd_config.global_injectivity = config.global_injectivity;
   sd_config.optimizer.max_iterations = config.warm_start_max_iterations;
   ParamSetup sd_setup = *setup;
+  sd_setup.analyses = nullptr;  // the prepared analysis is the run's (statistics.symbolic_analyses)
   sd_setup.objective = std::make_shared<DistortionObjective2D>(setup->objective->elements(), setup->objective->rest(),
                                                                energies_2d().create(kWarmStartEnergy, {}),
                                                                setup->objective->num_vertices());

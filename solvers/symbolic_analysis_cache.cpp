@@ -17,27 +17,60 @@ void SymbolicAnalysisCache::forget(const Eigen::SparseMatrix<double>& upper, int
   std::erase_if(entries_, [&](const Entry& entry) { return entry.matches(upper, block_size); });
 }
 
-bool SymbolicAnalysisCache::analyze(const Eigen::SparseMatrix<double>& upper, int block_size,
-                                    SparseCholesky* cholesky, const BlockOrdering* order) {
+bool SymbolicAnalysisCache::kept(const Eigen::SparseMatrix<double>& upper, int block_size) const {
+  return std::any_of(entries_.begin(), entries_.end(),
+                     [&](const Entry& entry) { return entry.matches(upper, block_size); });
+}
+
+bool SymbolicAnalysisCache::holds(const Eigen::SparseMatrix<double>& upper, int block_size) const {
   const std::lock_guard<std::mutex> lock(mutex_);
-  const int* start = upper.outerIndexPtr();
-  const int* row = upper.innerIndexPtr();
-  const Eigen::Index n = upper.outerSize();
-  for (const Entry& entry : entries_) {
+  return kept(upper, block_size);
+}
+
+namespace {
+
+// An entry for the pattern of `upper`, with an empty analysis.
+template <class Entry>
+Entry entry_of(const Eigen::SparseMatrix<double>& upper, int block_size) {
+  Entry entry;
+  entry.column_start.assign(upper.outerIndexPtr(), upper.outerIndexPtr() + upper.outerSize() + 1);
+  entry.row.assign(upper.innerIndexPtr(), upper.innerIndexPtr() + upper.nonZeros());
+  entry.block_size = block_size;
+  entry.analysis = std::make_unique<SparseCholesky>();
+  return entry;
+}
+
+}  // namespace
+
+bool SymbolicAnalysisCache::analyze(const Eigen::SparseMatrix<double>& upper, int block_size, SparseCholesky* cholesky,
+                                    const BlockOrdering* order) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  for (Entry& entry : entries_) {
     if (entry.matches(upper, block_size)) {
       cholesky->copy_analysis(*entry.analysis);
-      return false;
+      const bool first = !entry.taken;
+      entry.taken = true;
+      return first;
     }
   }
   cholesky->analyze(upper, block_size, order);
-  Entry entry;
-  entry.column_start.assign(start, start + n + 1);
-  entry.row.assign(row, row + upper.nonZeros());
-  entry.block_size = block_size;
-  entry.analysis = std::make_unique<SparseCholesky>();
-  entry.analysis->copy_analysis(*cholesky);
-  entries_.push_back(std::move(entry));
+  entries_.push_back(entry_of<Entry>(upper, block_size));
+  entries_.back().analysis->copy_analysis(*cholesky);
   return true;
+}
+
+void SymbolicAnalysisCache::prepare(const Eigen::SparseMatrix<double>& upper, int block_size,
+                                    const BlockOrdering* order) {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (kept(upper, block_size)) return;
+  }
+  // Computed without the lock: a solve may take another entry meanwhile.
+  Entry entry = entry_of<Entry>(upper, block_size);
+  entry.analysis->analyze(upper, block_size, order);
+  entry.taken = false;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (!kept(upper, block_size)) entries_.push_back(std::move(entry));
 }
 
 }  // namespace akvf

@@ -5,6 +5,9 @@
 // matrix preconditioners of a mesh all have the pattern of its vertex
 // adjacency in D x D blocks. A copied analysis is the one analyze() computes
 // for that pattern, so the factors and every iterate are bitwise the same.
+// An analysis may also be prepared ahead of the solve that needs it, on a
+// core that would otherwise wait (akvf/parameterization.cpp: beside the Tutte
+// solve); the first solve that takes it counts it as its own.
 // Safe to share between threads (a lock guards the entries).
 #include <Eigen/SparseCore>
 #include <memory>
@@ -20,9 +23,14 @@ class SymbolicAnalysisCache {
   // Gives `cholesky` the analysis of the pattern of `upper` with the given
   // block size: a copy of the cached one, or a new one (then cached;
   // `order` as for SparseCholesky::analyze).
-  // Returns true if it was computed.
+  // Returns true if it was computed, here or by prepare() and not taken
+  // before.
   bool analyze(const Eigen::SparseMatrix<double>& upper, int block_size, SparseCholesky* cholesky,
                const BlockOrdering* order = nullptr);
+  // Computes and keeps the analysis analyze() would, unless one is kept.
+  void prepare(const Eigen::SparseMatrix<double>& upper, int block_size, const BlockOrdering* order = nullptr);
+  // Whether an analysis of the pattern of `upper` is kept.
+  bool holds(const Eigen::SparseMatrix<double>& upper, int block_size) const;
   // Drops the analysis of that pattern, if kept (a factor that will not be built).
   void forget(const Eigen::SparseMatrix<double>& upper, int block_size);
 
@@ -32,8 +40,10 @@ class SymbolicAnalysisCache {
     std::vector<int> column_start, row;
     int block_size = 1;
     std::unique_ptr<SparseCholesky> analysis;  // analyzed, never factored
+    bool taken = true;                         // false for a prepared one until analyze() takes it
   };
-  std::mutex mutex_;
+  bool kept(const Eigen::SparseMatrix<double>& upper, int block_size) const;  // under the lock
+  mutable std::mutex mutex_;
   std::vector<Entry> entries_;
 };
 

@@ -335,13 +335,15 @@ TEST_CASE("runs are bitwise deterministic for 1 and 2 threads") {
 
 namespace {
 
-// The run from `setup` with its vertex ordering is the run that orders K
-// itself, iterate for iterate, and analyzes once.
+// The run from `setup` with its vertex ordering (and the analysis prepared
+// with it, if any) is the run that orders and analyzes K itself, iterate for
+// iterate, and analyzes once.
 void check_shared_ordering(akvf::ParamSetup setup, const ParamConfig& config) {
   REQUIRE(setup.vertex_ordering);
   CHECK(setup.vertex_ordering->permutation.size() == static_cast<std::size_t>(setup.objective->num_vertices()));
   const akvf::ParamRun shared = akvf::run_parameterization(setup, config);
   setup.vertex_ordering.reset();  // the preconditioner orders K itself
+  setup.analyses.reset();         // and analyzes it
   const akvf::ParamRun own = akvf::run_parameterization(setup, config);
   CHECK(shared.result.trace.size() == config.optimizer.max_iterations + 1);
   CHECK(shared.result.x == own.result.x);
@@ -351,17 +353,24 @@ void check_shared_ordering(akvf::ParamSetup setup, const ParamConfig& config) {
 }  // namespace
 
 TEST_CASE(
-    "the setup orders the vertex graph once (beside the Tutte solve below 100 K vertices, where global injectivity "
-    "orders its own), and the run with it has the iterates of its own") {
+    "the setup orders the vertex graph once (beside the Tutte solve below 100 K vertices, with K's analysis, where "
+    "global injectivity orders its own), and the run with it has the iterates of its own") {
   ParamConfig config;
   config.optimizer.max_iterations = 2;
   const akvf::TriMesh small = akvf::test::grid_disk(20, 20, 0.2, 3);
-  CHECK_FALSE(akvf::prepare_parameterization(small, "small", config).vertex_ordering);  // global injectivity
+  const akvf::ParamSetup global = akvf::prepare_parameterization(small, "small", config);
+  CHECK_FALSE(global.vertex_ordering);  // global injectivity
+  CHECK_FALSE(global.analyses);
   for (const int threads : {1, 2}) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     ParamConfig local = config;
     local.global_injectivity = false;
-    check_shared_ordering(akvf::prepare_parameterization(small, "small", local), local);
+    const akvf::ParamSetup setup = akvf::prepare_parameterization(small, "small", local);
+    // K's analysis was prepared beside the Tutte solve too, for the run to take.
+    REQUIRE(setup.analyses);
+    const akvf::ElementMatrix2D K(setup.objective->elements(), setup.objective->num_vertices());
+    CHECK(setup.analyses->holds(K.upper(), 2));
+    check_shared_ordering(setup, local);
   }
   const akvf::TriMesh mesh = akvf::test::grid_disk(317, 317, 0.2, 3);  // 100 489 vertices
   check_shared_ordering(akvf::prepare_parameterization(mesh, "grid", config), config);

@@ -5,8 +5,10 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <new>
+#include <utility>
 
 #include "akvf/error.h"
 #include "framework/mesh/vertex_graph.h"
@@ -15,6 +17,7 @@
 #include "preconditioners/killing_operator_2d.h"
 #include "solvers/fill_reducing_ordering.h"
 #include "solvers/sparse_cholesky.h"
+#include "solvers/symbolic_analysis_cache.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -343,6 +346,32 @@ TEST_CASE("a kept analysis is shared, and solving before a factorization is refu
   copy.solve(b, &x_copy);
   again.solve(b, &x_again);
   CHECK(x_copy == x_again);
+}
+
+TEST_CASE(
+    "a prepared analysis is the one analyze() computes, from the vertex graph's pattern, and counts as computed once") {
+  const akvf::TriMesh grid = akvf::test::grid_disk(20, 20, 0.2, 3);
+  const akvf::ElementMatrix2D K = shifted_killing(20);
+  const akvf::UpperVertexGraph graph = akvf::upper_vertex_graph(grid.F, static_cast<int>(grid.V.rows()));
+  const Eigen::SparseMatrix<double> pattern = akvf::block_upper_pattern<2>(graph);
+  REQUIRE(pattern.nonZeros() == K.upper().nonZeros());
+  CHECK(std::equal(pattern.innerIndexPtr(), pattern.innerIndexPtr() + pattern.nonZeros(), K.upper().innerIndexPtr()));
+  const akvf::BlockOrdering order = akvf::fill_reducing_ordering(graph, 2);
+  akvf::SymbolicAnalysisCache cache;
+  cache.prepare(pattern, 2, &order);
+  cache.prepare(pattern, 2, &order);  // kept: not computed again
+  akvf::SparseCholesky first, second, own;
+  CHECK(cache.analyze(K.upper(), 2, &first, &order));  // the prepared one, taken: computed for this solve
+  CHECK_FALSE(cache.analyze(K.upper(), 2, &second, &order));
+  own.analyze(K.upper(), 2, &order);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.upper().rows(), 0.0, 1.0);
+  Eigen::VectorXd x_first, x_second, x_own;
+  for (auto [cholesky, x] : {std::pair{&first, &x_first}, {&second, &x_second}, {&own, &x_own}}) {
+    cholesky->factorize(K.upper());
+    cholesky->solve(b, x);
+  }
+  CHECK(x_first == x_own);
+  CHECK(x_second == x_own);
 }
 
 TEST_CASE("solve_positive_definite solves every column of a positive definite system and declines an indefinite one") {

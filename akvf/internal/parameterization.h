@@ -84,6 +84,11 @@ struct ParamSetup {
   // optimizer's matrices are analyzed with it. Null where the start is not
   // Tutte's, and below 100 K vertices with global injectivity.
   std::shared_ptr<const BlockOrdering> vertex_ordering;
+  // The symbolic analyses of the run's matrices: the API's cache where it
+  // keeps one (Parameterizer), else one made where the setup prepares the
+  // analysis of the mesh's 2 x 2-block pattern beside the Tutte solve (with
+  // vertex_ordering). Null otherwise; run_from_start shares it.
+  std::shared_ptr<SymbolicAnalysisCache> analyses;
   // The warm start's run when the energy is infinite at the initial map
   // (empty trace otherwise); x0 is its end point when it succeeded.
   OptimizerResult warm_start;

@@ -20,6 +20,33 @@ void parallel_for_index(int n, int grain, const Body& body) {
 
 }  // namespace
 
+template <int D>
+Eigen::SparseMatrix<double> block_upper_pattern(const UpperVertexGraph& graph) {
+  const int num_vertices = graph.num_vertices();
+  const int n = D * num_vertices;
+  const auto neighbors_of = [&](int v) { return graph.column_start[v + 1] - graph.column_start[v]; };
+  // Column D v + c holds the D rows of each neighbor u < v, then D v + 0..c.
+  std::vector<int> outer(n + 1, 0);
+  for (int v = 0; v < num_vertices; ++v)
+    for (int c = 0; c < D; ++c)
+      outer[D * v + c + 1] = outer[D * v + c] + (neighbors_of(v) > 0 ? D * (neighbors_of(v) - 1) + c + 1 : 0);
+  Eigen::SparseMatrix<double> upper(n, n);
+  upper.resizeNonZeros(outer[n]);
+  std::copy(outer.begin(), outer.end(), upper.outerIndexPtr());
+  std::fill(upper.valuePtr(), upper.valuePtr() + outer[n], 0.0);
+  int* rows = upper.innerIndexPtr();
+  parallel_for_index(num_vertices, 4096, [&](int v) {
+    for (int c = 0; c < D; ++c) {
+      int* row = rows + outer[D * v + c];
+      for (int k = 0; k < neighbors_of(v); ++k) {
+        const int u = graph.row[graph.column_start[v] + k];
+        for (int r = 0; r < (u < v ? D : c + 1); ++r) *row++ = D * u + r;
+      }
+    }
+  });
+  return upper;
+}
+
 template <int D, int N>
 ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vertices) {
   auto built = std::make_shared<Pattern>();
@@ -31,25 +58,11 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
   // that share an element with it (v itself last), in increasing order.
   UpperVertexGraph graph = upper_vertex_graph(elements, num_vertices);
   const auto neighbors_of = [&](int v) { return graph.column_start[v + 1] - graph.column_start[v]; };
-  // Column D v + c holds the D rows of each neighbor u < v, then D v + 0..c.
-  std::vector<int> outer(n + 1, 0);
-  for (int v = 0; v < num_vertices; ++v)
-    for (int c = 0; c < D; ++c)
-      outer[D * v + c + 1] = outer[D * v + c] + (neighbors_of(v) > 0 ? D * (neighbors_of(v) - 1) + c + 1 : 0);
-  upper_.resize(n, n);
-  upper_.resizeNonZeros(outer[n]);
-  std::copy(outer.begin(), outer.end(), upper_.outerIndexPtr());
-  std::fill(upper_.valuePtr(), upper_.valuePtr() + outer[n], 0.0);
-  int* rows = upper_.innerIndexPtr();
-  parallel_for_index(num_vertices, 4096, [&](int v) {
-    for (int c = 0; c < D; ++c) {
-      int* row = rows + outer[D * v + c];
-      for (int k = 0; k < neighbors_of(v); ++k) {
-        const int u = graph.row[graph.column_start[v] + k];
-        for (int r = 0; r < (u < v ? D : c + 1); ++r) *row++ = D * u + r;
-      }
-    }
-  });
+  {
+    Eigen::SparseMatrix<double> pattern = block_upper_pattern<D>(graph);
+    upper_.swap(pattern);  // no copy (Eigen 3.4's move assignment copies)
+  }
+  const int* outer = upper_.outerIndexPtr();
 
   // Where each local slot (i <= j, in this loop order) lands among the
   // nonzeros: the k-th neighbor's rows start at D k in its column.
@@ -228,6 +241,8 @@ Eigen::SparseMatrix<double> ElementMatrix<D, N>::full() const {
   return upper_ + strict_lower;
 }
 
+template Eigen::SparseMatrix<double> block_upper_pattern<2>(const UpperVertexGraph&);
+template Eigen::SparseMatrix<double> block_upper_pattern<3>(const UpperVertexGraph&);
 template class ElementMatrix<2, 3>;
 template class ElementMatrix<3, 4>;
 

@@ -32,6 +32,14 @@
 
 namespace akvf {
 
+struct UpperVertexGraph;
+
+// The upper triangle of D x D blocks on `graph` (framework/mesh/vertex_graph.h),
+// values zero: the pattern of every ElementMatrix<D, N> on the elements the
+// graph was built from (their symbolic analysis needs no values).
+template <int D>
+Eigen::SparseMatrix<double> block_upper_pattern(const UpperVertexGraph& graph);
+
 template <int D, int N>
 class ElementMatrix {
  public:
