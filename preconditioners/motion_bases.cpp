@@ -149,8 +149,15 @@ void ComponentMotions::keep_unstiffened_by(const Eigen::SparseMatrix<double>& up
       const Eigen::MatrixXd& B = basis(c);
       const auto bi = B.row(row_of(i)), bj = B.row(row_of(j));
       Eigen::MatrixXd& M = stiffness[c];
-      M.noalias() += it.value() * bi.transpose() * bj;
-      if (i != j) M.noalias() += it.value() * bj.transpose() * bi;
+      // M += value bi^T bj (and bj^T bi), entry by entry: a basis has a few
+      // columns, where a dynamic-size outer product costs more than its flops.
+      const double value = it.value();
+      const Eigen::Index n = M.rows();
+      for (Eigen::Index b = 0; b < n; ++b)
+        for (Eigen::Index a = 0; a < n; ++a) M(a, b) += bj(b) * (value * bi(a));
+      if (i != j)
+        for (Eigen::Index b = 0; b < n; ++b)
+          for (Eigen::Index a = 0; a < n; ++a) M(a, b) += bi(b) * (value * bj(a));
       magnitude[c] += (i != j ? 2 : 1) * std::abs(it.value()) * bi.norm() * bj.norm();
       terms[c] += i != j ? 2 : 1;
     }
