@@ -5,6 +5,7 @@
 #include <cholmod.h>  // SuiteSparse_long
 #include <algorithm>
 #include <atomic>
+#include <iterator>
 #include <memory>
 #include <numeric>
 
@@ -12,18 +13,16 @@ namespace akvf {
 
 namespace {
 
-// Splits `roots` (subtree work w) into `groups` groups, heaviest first into
-// the lightest group; returns the heaviest group's work and the assignment.
-double balance(const std::vector<int>& roots, const std::vector<double>& w, int groups, std::vector<int>* group) {
-  std::vector<int> order(roots.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return w[roots[a]] > w[roots[b]]; });
+// Assigns `sorted` (subtree work w, heaviest first) to `groups` groups, each
+// to the lightest group so far; returns the heaviest group's work and the
+// assignment (in the order of `sorted`).
+double balance(const std::vector<int>& sorted, const std::vector<double>& w, int groups, std::vector<int>* group) {
   std::vector<double> load(groups, 0.0);
-  group->assign(roots.size(), 0);
-  for (int i : order) {
+  group->resize(sorted.size());
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
     const int g = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
     (*group)[i] = g;
-    load[g] += w[roots[i]];
+    load[g] += w[sorted[i]];
   }
   return *std::max_element(load.begin(), load.end());
 }
@@ -136,17 +135,24 @@ std::vector<int> split_subtrees(const SupernodalTree& tree, const std::vector<do
   for (int node = 0; node < n_super; ++node)  // children have smaller indices
     if (tree.parent[node] >= 0) subtree[tree.parent[node]] += subtree[node];
 
-  std::vector<int> frontier = tree.roots, best_frontier = tree.roots;
-  std::vector<int> group, best_group;
+  // The frontier, heaviest first (ties in the order the subtrees joined it):
+  // the heaviest is expanded, and its children, sorted alike, merged in
+  // after the subtrees as heavy that were there before them.
+  const auto heavier = [&](int a, int b) { return subtree[a] > subtree[b]; };
+  std::vector<int> frontier = tree.roots, merged, children;
+  std::stable_sort(frontier.begin(), frontier.end(), heavier);
+  std::vector<int> best_frontier = frontier, group, best_group;
   double top_work = 0;
   double best_time = balance(frontier, subtree, groups, &best_group);
   for (int step = 0; step < 256 && !frontier.empty(); ++step) {
-    const auto heaviest =
-        std::max_element(frontier.begin(), frontier.end(), [&](int a, int b) { return subtree[a] < subtree[b]; });
-    const int node = *heaviest;
-    frontier.erase(heaviest);
+    const int node = frontier.front();
     top_work += work[node];
-    frontier.insert(frontier.end(), tree.children[node].begin(), tree.children[node].end());
+    children = tree.children[node];
+    std::stable_sort(children.begin(), children.end(), heavier);
+    merged.clear();
+    std::merge(frontier.begin() + 1, frontier.end(), children.begin(), children.end(), std::back_inserter(merged),
+               heavier);
+    frontier.swap(merged);
     const double time = top_work + balance(frontier, subtree, groups, &group);
     if (time < best_time) {
       best_time = time;

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <new>
+#include <numeric>
+#include <random>
 #include <utility>
 
 #include "akvf/error.h"
@@ -17,6 +19,7 @@
 #include "preconditioners/killing_operator_2d.h"
 #include "solvers/fill_reducing_ordering.h"
 #include "solvers/sparse_cholesky.h"
+#include "solvers/supernodal_tree.h"
 #include "solvers/symbolic_analysis_cache.h"
 #include "tests/test_support.h"
 
@@ -372,6 +375,78 @@ TEST_CASE(
   }
   CHECK(x_first == x_own);
   CHECK(x_second == x_own);
+}
+
+namespace {
+
+// split_subtrees's rule computed plainly: the frontier kept in the order its
+// subtrees joined it, the first heaviest expanded, and each cut's groups
+// filled by a stable sort of the frontier, heaviest first to the lightest.
+std::vector<int> plain_split(const akvf::SupernodalTree& tree, const std::vector<double>& work, int groups) {
+  const int n = static_cast<int>(tree.parent.size());
+  std::vector<double> subtree = work;
+  for (int node = 0; node < n; ++node)
+    if (tree.parent[node] >= 0) subtree[tree.parent[node]] += subtree[node];
+  const auto cut = [&](const std::vector<int>& frontier, std::vector<int>* group) {
+    std::vector<int> order(frontier.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return subtree[frontier[a]] > subtree[frontier[b]]; });
+    std::vector<double> load(groups, 0.0);
+    group->assign(frontier.size(), 0);
+    for (int i : order) {
+      const auto g = std::min_element(load.begin(), load.end()) - load.begin();
+      (*group)[i] = static_cast<int>(g);
+      load[g] += subtree[frontier[i]];
+    }
+    return *std::max_element(load.begin(), load.end());
+  };
+  std::vector<int> frontier = tree.roots, best_frontier = frontier, group, best_group;
+  double top = 0, best = cut(frontier, &best_group);
+  for (int step = 0; step < 256 && !frontier.empty(); ++step) {
+    const auto heaviest =
+        std::max_element(frontier.begin(), frontier.end(), [&](int a, int b) { return subtree[a] < subtree[b]; });
+    const int node = *heaviest;
+    frontier.erase(heaviest);
+    top += work[node];
+    frontier.insert(frontier.end(), tree.children[node].begin(), tree.children[node].end());
+    if (const double time = top + cut(frontier, &group); time < best) {
+      best = time;
+      best_frontier = frontier;
+      best_group = group;
+    }
+  }
+  std::vector<int> owner(n, akvf::kTop);
+  for (std::size_t i = 0; i < best_frontier.size(); ++i) owner[best_frontier[i]] = best_group[i];
+  for (int node = n - 1; node >= 0; --node)
+    if (owner[node] == akvf::kTop && tree.parent[node] >= 0 && owner[tree.parent[node]] != akvf::kTop)
+      owner[node] = owner[tree.parent[node]];
+  return owner;
+}
+
+}  // namespace
+
+TEST_CASE("the solve's split of the elimination tree follows its rule, ties included, on random forests") {
+  std::mt19937 random(5);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int n = 1 + static_cast<int>(random() % 600);
+    akvf::SupernodalTree tree;
+    tree.parent.assign(n, -1);
+    tree.children.resize(n);
+    for (int node = 0; node < n; ++node) {  // a parent has a larger index; a few roots
+      if (node + 1 < n && random() % 50 != 0) {
+        tree.parent[node] = node + 1 + static_cast<int>(random() % std::min(n - node - 1, 20));
+        tree.children[tree.parent[node]].push_back(node);
+      } else {
+        tree.roots.push_back(node);
+      }
+    }
+    // Few distinct weights, so that many subtrees tie.
+    std::vector<double> work(n);
+    for (double& w : work) w = static_cast<double>(random() % 4);
+    for (const int groups : {2, 3, 8})
+      CHECK(akvf::split_subtrees(tree, work, groups) == plain_split(tree, work, groups));
+  }
 }
 
 TEST_CASE("solve_positive_definite solves every column of a positive definite system and declines an indefinite one") {
