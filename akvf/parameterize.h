@@ -134,7 +134,9 @@ ParameterizeResult parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi&
 // start map, and solve again. Each solve builds its preconditioner anew, so
 // it gives the bits parameterize() gives for the same options and start; the
 // symbolic analysis of the sparse factorizations is computed by the first
-// solve and copied by the later ones (statistics.preconditioner.symbolic_analyses).
+// solve (with local injectivity at construction, beside the Tutte solve, and
+// counted by the first solve) and copied by the later ones
+// (statistics.preconditioner.symbolic_analyses).
 class Parameterizer {
  public:
   //   V  #V by 3, F  #F by 3 (0-based). Throws as parameterize() does.
