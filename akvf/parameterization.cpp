@@ -291,7 +291,8 @@ void rebuild_problem(const ParamConfig& config, ParamSetup* setup, bool tutte_st
   objective->set_file_numbering(setup->disk.input_vertex, normalized.index_base);
   setup->objective = std::move(objective);
   setup->boundary_contact = boundary_contact_of(normalized, setup->disk.boundary_loops);
-  setup->vertex_ordering = nullptr;  // of the old vertices
+  setup->vertex_ordering = nullptr;                                             // of the old vertices
+  setup->analyses = config.preconditioner_settings.akvf.factor.analysis_cache;  // no old mesh's analysis kept
   setup->warm_start = {};
   if (tutte_start) start_at_tutte_map(config, normalized, setup);
 }
