@@ -69,9 +69,8 @@ constexpr int kCholmodTutteVertices = 100000;
 // kCholmodTutteVertices, seconds above).
 bool tutte_by_cholmod(const TriMesh& mesh) { return mesh.num_vertices() >= kCholmodTutteVertices; }
 
-std::shared_ptr<const BlockOrdering> mesh_vertex_ordering(const TriMesh& mesh) {
-  return std::make_shared<const BlockOrdering>(
-      fill_reducing_ordering(upper_vertex_graph(mesh.F, mesh.num_vertices()), 2));
+std::shared_ptr<const BlockOrdering> mesh_vertex_ordering(const UpperVertexGraph& graph) {
+  return std::make_shared<const BlockOrdering>(fill_reducing_ordering(graph, 2));
 }
 
 SpdSolver tutte_solver(const std::shared_ptr<const BlockOrdering>& ordering) {
@@ -125,13 +124,13 @@ void start_at_tutte_map(const ParamConfig& config, const TriMesh& normalized, Pa
   tbb::task_group beside;
   SpdSolver solver;  // Eigen's
   if (tutte_by_cholmod(normalized)) {
-    setup->vertex_ordering = mesh_vertex_ordering(normalized);
+    setup->vertex_ordering = mesh_vertex_ordering(upper_vertex_graph(normalized.F, normalized.num_vertices()));
     solver = tutte_solver(setup->vertex_ordering);
   } else if (!config.global_injectivity) {
     if (!setup->analyses) setup->analyses = std::make_shared<SymbolicAnalysisCache>();
     beside.run([&] {
-      setup->vertex_ordering = mesh_vertex_ordering(normalized);
       const UpperVertexGraph graph = upper_vertex_graph(normalized.F, normalized.num_vertices());
+      setup->vertex_ordering = mesh_vertex_ordering(graph);
       setup->analyses->prepare(block_upper_pattern<2>(graph), 2, setup->vertex_ordering.get());
     });
   }

@@ -358,6 +358,8 @@ TEST_CASE(
   const akvf::UpperVertexGraph graph = akvf::upper_vertex_graph(grid.F, static_cast<int>(grid.V.rows()));
   const Eigen::SparseMatrix<double> pattern = akvf::block_upper_pattern<2>(graph);
   REQUIRE(pattern.nonZeros() == K.upper().nonZeros());
+  CHECK(std::equal(pattern.outerIndexPtr(), pattern.outerIndexPtr() + pattern.outerSize() + 1,
+                   K.upper().outerIndexPtr()));
   CHECK(std::equal(pattern.innerIndexPtr(), pattern.innerIndexPtr() + pattern.nonZeros(), K.upper().innerIndexPtr()));
   const akvf::BlockOrdering order = akvf::fill_reducing_ordering(graph, 2);
   akvf::SymbolicAnalysisCache cache;
