@@ -43,8 +43,7 @@ void SlimPreconditioner<D>::proxy_weights(const SingularValueDerivative<D>& dens
   // The singular values of the nearest element where D is minimal: a
   // rotation, or for a scale-invariant density the similarity of the
   // geometric mean (libigl's SLIM does the same for its conformal energy).
-  const double target =
-      density.minimal_at_similarities() ? std::pow(std::abs(sigma.prod()), 1.0 / D) : 1.0;
+  const double target = density.minimal_at_similarities() ? std::pow(std::abs(sigma.prod()), 1.0 / D) : 1.0;
   const Vector dD = density.singular_value_gradient(sigma);
   Vector w2;
   for (int i = 0; i < D; ++i) {
@@ -58,6 +57,16 @@ void SlimPreconditioner<D>::proxy_weights(const SingularValueDerivative<D>& dens
       w2[i] = density.singular_value_gradient(shifted)[i] / (2 * h);
     } else {
       w2[i] = dD[i] / (2 * gap);
+    }
+    // No positive weight gives the gradient: the proxy's curvature along
+    // sigma_i, 2 w_i^2, is the energy's there (a central difference of
+    // dD/dsigma_i) instead, so that the element keeps its stiffness.
+    if (!(w2[i] > 0)) {
+      const double h = 1e-6 * std::abs(sigma[i]);
+      Vector up = sigma, down = sigma;
+      up[i] += h;
+      down[i] -= h;
+      w2[i] = (density.singular_value_gradient(up)[i] - density.singular_value_gradient(down)[i]) / (4 * h);
     }
     w2[i] = std::max(w2[i], 1e-8);
   }

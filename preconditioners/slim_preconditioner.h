@@ -14,9 +14,11 @@
 // so the proxy minimizer x* satisfies P (x* - x) = -grad E(x): SLIM's
 // search direction x* - x is -P^-1 grad E, a preconditioned gradient.
 // Needs an energy that exposes its singular-value derivative
-// (SingularValueDerivative<D>). Weights are clamped below at 1e-8 where
-// w_i^2 <= 0 (possible for AMIPS, and for MIPS in 3D); there the
-// gradient property holds only approximately, as in SLIM's own code. In 3D
+// (SingularValueDerivative<D>). Where w_i^2 <= 0 (possible for AMIPS, for
+// MIPS in 3D and for user energies, and by rounding where sigma_i is within
+// rounding of its target) no weight gives the gradient; there 2 w_i^2 is the
+// energy's second derivative along sigma_i instead (at least 2e-8), and the
+// gradient property holds only approximately. In 3D
 // deformation SLIM's soft constraints enter through
 // FactorOptions::extra_diagonal, as in SLIM's own solve.
 #include "akvf/mesh_objective.h"

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -433,6 +434,22 @@ TEST_CASE("the SLIM proxy's gradient equals the energy's gradient at the current
       CHECK(R.determinant() == doctest::Approx(density == &mips ? J.determinant() : 1.0));
     }
   }
+}
+
+TEST_CASE("where no positive SLIM weight gives the gradient, the proxy takes the energy's curvature along sigma") {
+  // D = (sigma_1 - 2)^2 + (sigma_2 - 2)^2 pulled towards a rotation: at
+  // sigma = (3, 1.5) the first weight is (dD/dsigma_1) / (2 (sigma_1 - 1)) =
+  // 0.5, the second's ratio is -1 / 1: there half of D's second derivative, 1.
+  struct ShiftedArap final : akvf::SingularValueDerivative<2> {
+    Vector singular_value_gradient(const Vector& sigma) const override { return 2 * (sigma.array() - 2).matrix(); }
+  };
+  const Eigen::Matrix2d rotation = Eigen::Rotation2Dd(0.4).toRotationMatrix();
+  const Eigen::Matrix2d J = rotation * Eigen::Vector2d(3, 1.5).asDiagonal();
+  Eigen::Matrix2d WtW, R;
+  akvf::SlimPreconditioner2D::proxy_weights(ShiftedArap{}, J, &WtW, &R);
+  const Eigen::Matrix2d expected = rotation * Eigen::Vector2d(0.5, 1).asDiagonal() * rotation.transpose();
+  CHECK((WtW - expected).norm() <= 1e-6);
+  CHECK((R - rotation).norm() <= 1e-12);
 }
 
 TEST_CASE("SLIM refuses an energy without a singular-value derivative") {
