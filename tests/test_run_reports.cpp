@@ -161,6 +161,12 @@ TEST_CASE("a run at its iteration limit says how fast it was converging") {
         "reached 100 iterations; the least gradient norm of iterations 81-90 was 1, of 91-100 1 (tolerance 1e-06): it "
         "did not fall");
   CHECK(akvf::iteration_limit_message({}, 1e-6, 0) == "reached 0 iterations");
+  // With no gradient target (--grad-tol 0, a fixed budget) there is no
+  // estimate to give.
+  for (akvf::IterationSummary& row : result.trace) row.grad_norm = std::pow(0.5, row.iteration / 10.0);
+  CHECK(akvf::iteration_limit_message(result.trace, 0, 100) ==
+        "reached 100 iterations; the least gradient norm of iterations 81-90 was 0.00195312, of 91-100 0.000976562 "
+        "(tolerance 0)");
 }
 
 TEST_CASE("a manifest cannot read outside --data-dir unless it says so") {
