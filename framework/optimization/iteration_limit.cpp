@@ -31,7 +31,7 @@ std::string iteration_limit_message(const std::vector<IterationSummary>& trace, 
   message += "; the least gradient norm of iterations " + span(block, 2 * block) + " was " + number_text(from) +
              ", of " + span(0, block) + " " + number_text(to) + " (tolerance " + number_text(gradient_tolerance) + ")";
   if (!(to < from) || !(to > 0)) return message + ": it did not fall";
-  if (!(gradient_tolerance > 0)) return message;  // no gradient target (a fixed budget)
+  if (!(gradient_tolerance > 0)) return message;    // no gradient target (a fixed budget)
   const double rate = std::log(to / from) / block;  // per iteration, < 0
   const double more = std::max(std::log(gradient_tolerance / to) / rate, 1.0);
   // Two significant digits: the rate is a rough one.
