@@ -5,7 +5,7 @@
 // marked madvise(MADV_HUGEPAGE), which is what Debian's default
 // (transparent_hugepage=madvise) backs with 2 MiB pages. Their first use
 // then takes a page fault per 2 MiB instead of per 4 KiB (measured:
-// docs/notes/2026-11-30-slim-curvature-weight.md). Memory from the heap
+// docs/notes/2026-11-30-page-faults.md). Memory from the heap
 // would not do: where the heap already maps 4 KiB pages the advice changes
 // nothing. Arrays under 1 MiB come from the heap. Only placement changes,
 // never a value.
