@@ -15,10 +15,11 @@
 // search direction x* - x is -P^-1 grad E, a preconditioned gradient.
 // Needs an energy that exposes its singular-value derivative
 // (SingularValueDerivative<D>). Where w_i^2 <= 0 (possible for AMIPS, for
-// MIPS in 3D and for user energies, and by rounding where sigma_i is within
-// rounding of its target) no weight gives the gradient; there 2 w_i^2 is the
-// energy's second derivative along sigma_i instead (at least 2e-8), and the
-// gradient property holds only approximately. In 3D
+// MIPS in 3D, for ARAP near its collapse barrier, where det J < 1e-3 pulls
+// sigma_1 > 1 further up, and for user energies) no weight gives the
+// gradient; there 2 w_i^2 is the energy's second derivative along sigma_i
+// instead (at least 2e-8), and the gradient property holds only
+// approximately. In 3D
 // deformation SLIM's soft constraints enter through
 // FactorOptions::extra_diagonal, as in SLIM's own solve.
 #include "akvf/mesh_objective.h"
