@@ -4,7 +4,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <utility>
 
 #include "framework/mesh/vertex_graph.h"
 
@@ -153,21 +152,8 @@ template <int D, int N>
 ElementMatrix<D, N>::ElementMatrix(ElementMatrix&& other) noexcept
     : pattern_(std::move(other.pattern_)),
       element_buffer_(std::move(other.element_buffer_)),
-      element_buffer_size_(std::exchange(other.element_buffer_size_, 0)),
       mean_diagonal_(other.mean_diagonal_) {
   upper_.swap(other.upper_);
-}
-
-template <int D, int N>
-ElementMatrix<D, N>::ElementMatrix(const ElementMatrix& other)
-    : pattern_(other.pattern_), upper_(other.upper_), mean_diagonal_(other.mean_diagonal_) {}
-
-template <int D, int N>
-ElementMatrix<D, N>& ElementMatrix<D, N>::operator=(const ElementMatrix& other) {
-  pattern_ = other.pattern_;
-  upper_ = other.upper_;
-  mean_diagonal_ = other.mean_diagonal_;
-  return *this;
 }
 
 template <int D, int N>
@@ -175,7 +161,6 @@ ElementMatrix<D, N>& ElementMatrix<D, N>::operator=(ElementMatrix&& other) noexc
   pattern_ = std::move(other.pattern_);
   upper_.swap(other.upper_);
   element_buffer_.swap(other.element_buffer_);
-  std::swap(element_buffer_size_, other.element_buffer_size_);
   mean_diagonal_ = other.mean_diagonal_;
   return *this;
 }
@@ -192,8 +177,6 @@ template <int D, int N>
 ElementMatrix<D, N> ElementMatrix<D, N>::taking_storage_of(ElementMatrix* donor) {
   ElementMatrix matrix(donor->pattern_);
   matrix.upper_.swap(donor->upper_);
-  matrix.element_buffer_ = std::move(donor->element_buffer_);
-  matrix.element_buffer_size_ = std::exchange(donor->element_buffer_size_, 0);
   std::fill(matrix.upper_.valuePtr(), matrix.upper_.valuePtr() + matrix.upper_.nonZeros(), 0.0);
   return matrix;
 }
@@ -208,11 +191,7 @@ template <int D, int N>
 void ElementMatrix<D, N>::assemble(const LocalFunction& local) {
   const Pattern& pattern = *pattern_;
   const int chunks = static_cast<int>(pattern.chunk_touched.size()) - 1;
-  const std::size_t buffer_size = static_cast<std::size_t>(kSlots) * std::min(pattern.num_elements, kChunkElements);
-  if (element_buffer_size_ < buffer_size) {
-    element_buffer_ = allocate_huge_page_doubles(buffer_size);
-    element_buffer_size_ = buffer_size;
-  }
+  element_buffer_.resize(static_cast<std::size_t>(kSlots) * std::min(pattern.num_elements, kChunkElements));
   double* values = upper_.valuePtr();
   std::fill(values, values + upper_.nonZeros(), 0.0);
   for (int c = 0; c < chunks; ++c) {
@@ -220,7 +199,7 @@ void ElementMatrix<D, N>::assemble(const LocalFunction& local) {
     parallel_for_index(count, 512, [&](int k) {
       Local M;
       local(first + k, &M);
-      double* out = element_buffer_.get() + static_cast<std::size_t>(kSlots) * k;
+      double* out = element_buffer_.data() + static_cast<std::size_t>(kSlots) * k;
       for (int j = 0; j < kLocalSize; ++j)
         for (int i = 0; i <= j; ++i) *out++ = M(i, j);
     });

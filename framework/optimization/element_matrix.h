@@ -30,8 +30,6 @@
 #include <memory>
 #include <vector>
 
-#include "framework/process/huge_page_array.h"
-
 namespace akvf {
 
 struct UpperVertexGraph;
@@ -64,9 +62,8 @@ class ElementMatrix {
   // these swap the storage.
   ElementMatrix(ElementMatrix&& other) noexcept;
   ElementMatrix& operator=(ElementMatrix&& other) noexcept;
-  // A copy has the values and the pattern, not the scratch buffer.
-  ElementMatrix(const ElementMatrix& other);
-  ElementMatrix& operator=(const ElementMatrix& other);
+  ElementMatrix(const ElementMatrix&) = default;
+  ElementMatrix& operator=(const ElementMatrix&) = default;
   // Whether `other` is on the same sparsity pattern (shared, or of the same
   // size and number of nonzeros); true for a donor of taking_storage_of.
   bool same_pattern(const ElementMatrix& other) const;
@@ -107,10 +104,7 @@ class ElementMatrix {
 
   std::shared_ptr<const Pattern> pattern_;
   Eigen::SparseMatrix<double> upper_;
-  // One chunk's local values (allocated by the first assemble(); on huge
-  // pages, huge_page_array.h).
-  HugePageDoubles element_buffer_;
-  std::size_t element_buffer_size_ = 0;
+  std::vector<double> element_buffer_;  // one chunk's local values (sized by assemble())
   double mean_diagonal_ = 0;
 };
 
