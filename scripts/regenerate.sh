@@ -7,7 +7,7 @@
 # per energy and in 3D, the thread benchmarks, CGAL's ARAP, the seams and
 # xatlas tables, global injectivity's cost, Figure 8's and cube_4k's tables.
 # Each step's output and seconds go to OUT/<step>.md and OUT/steps.tsv.
-# About 75 minutes on the 2-core development VM (Figure 6 alone 33); run it
+# 75-120 minutes on the 2-core development VM (Figure 6 alone 33-61); run it
 # with nothing else on the machine, since every table has timings.
 # Usage: bash scripts/regenerate.sh [OUT]   (after scripts/build.sh; needs
 # node and npm for xatlas, ../shared/meshes or $AKVF_DATA_DIR)
