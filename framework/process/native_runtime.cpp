@@ -25,7 +25,7 @@ void configure_native_runtime(char** argv) {
   }
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   const std::string wanted = tunables_with_huge_page_malloc(tunables);
-  if (!tunables || wanted != tunables) {
+  if (wanted != (tunables ? tunables : "")) {
     setenv("GLIBC_TUNABLES", wanted.c_str(), 1);
     changed = true;
   }
