@@ -10,24 +10,42 @@ void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, double di
                              ElementMatrix2D::Local* local) {
   const Eigen::Vector2d e1 = p[1] - p[0], e2 = p[2] - p[0];
   const double area = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
-  local->setZero();
+  // Eq. (5)'s block B_k = K_ab of corner k (a = k, b = k + 1, r = k + 2,
+  // mod 3), entry by entry: s (e'_i e_j / (4 A) - cot(theta) [i = j]).
+  double B[3][2][2];
   for (int k = 0; k < 3; ++k) {
     const int a = k, b = (k + 1) % 3, r = (k + 2) % 3;
-    const Eigen::Vector2d e = p[a] - p[r], e_prime = p[b] - p[r];
-    const double cot_theta = e.dot(e_prime) / (2 * area);
-    // Eq. (5): the block K_pq for p = corner a, q = corner b.
-    const Eigen::Matrix2d block =
-        scale * (e_prime * e.transpose() / (4 * area) - cot_theta * Eigen::Matrix2d::Identity());
-    local->block<2, 2>(2 * a, 2 * b) = block;
-    local->block<2, 2>(2 * b, 2 * a) = block.transpose();
-    local->block<2, 2>(2 * a, 2 * a) -= block;              // K_pp = -sum_r K_pr
-    local->block<2, 2>(2 * b, 2 * b) -= block.transpose();  // K_qq gets K_qp = K_pq^T
+    const double ex = p[a].x() - p[r].x(), ey = p[a].y() - p[r].y();
+    const double fx = p[b].x() - p[r].x(), fy = p[b].y() - p[r].y();  // e'
+    const double cot_theta = (ex * fx + ey * fy) / (2 * area);
+    B[k][0][0] = scale * (fx * ex / (4 * area) - cot_theta);
+    B[k][0][1] = scale * (fx * ey / (4 * area));
+    B[k][1][0] = scale * (fy * ex / (4 * area));
+    B[k][1][1] = scale * (fy * ey / (4 * area) - cot_theta);
   }
+  // The upper triangle (all ElementMatrix reads): K_01 = B_0, K_12 = B_1,
+  // K_02 = B_2^T, and K_pp = -sum_r K_pr in the order of the corners' loop:
+  // K_00 = -B_0 - B_2^T, K_11 = -B_0^T - B_1, K_22 = -B_1^T - B_2.
+  ElementMatrix2D::Local& K = *local;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      K(i, 2 + j) = B[0][i][j];
+      K(2 + i, 4 + j) = B[1][i][j];
+      K(i, 4 + j) = B[2][j][i];
+    }
+  for (int i = 0; i < 2; ++i)
+    for (int j = i; j < 2; ++j) {
+      K(i, j) = (0 - B[0][i][j]) - B[2][j][i];
+      K(2 + i, 2 + j) = (0 - B[0][j][i]) - B[1][i][j];
+      K(4 + i, 4 + j) = (0 - B[1][j][i]) - B[2][i][j];
+    }
   if (divergence_weight != 1) {  // (beta - 1) (div v)^2 over the face
     Eigen::Matrix2d Ds;
     Ds << e1, e2;
-    const Eigen::Matrix<double, 6, 1> b = divergence_row<2>(Ds.inverse());
-    *local += ((divergence_weight - 1) * scale * area) * b * b.transpose();
+    const Eigen::Matrix<double, 6, 1> b = ((divergence_weight - 1) * scale * area) * divergence_row<2>(Ds.inverse());
+    const Eigen::Matrix<double, 6, 1> d = divergence_row<2>(Ds.inverse());
+    for (int j = 0; j < 6; ++j)
+      for (int i = 0; i <= j; ++i) K(i, j) += d[j] * b[i];
   }
 }
 

@@ -21,8 +21,9 @@ namespace akvf {
 // departure from a conformal motion, and its null space is the similarities
 // (energy_scale.h, rest_divergence_weight, says which energy wants which).
 
-// The 6x6 local matrix of Eq. (5) for one face with UV corners p[0..2]
-// (counter-clockwise), face scale s_f and divergence weight beta.
+// The upper triangle (what ElementMatrix reads) of the 6x6 local matrix of
+// Eq. (5) for one face with UV corners p[0..2] (counter-clockwise), face
+// scale s_f and divergence weight beta.
 void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, double divergence_weight,
                              ElementMatrix2D::Local* local);
 

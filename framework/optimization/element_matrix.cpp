@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 
@@ -90,84 +91,83 @@ ElementMatrix<D, N>::ElementMatrix(const Eigen::MatrixXi& elements, int num_vert
       }
   });
   graph = {};
-  // Invert it: for each nonzero, its contributing slots in increasing order
-  // (so each sum has a fixed order whatever the thread count) ...
-  const int nnz = static_cast<int>(upper_.nonZeros());
-  std::vector<int> offsets(nnz + 1, 0);
-  for (int e : slot_entry) ++offsets[e + 1];
-  for (int i = 0; i < nnz; ++i) offsets[i + 1] += offsets[i];
-  std::vector<int> by_entry(slot_entry.size());
-  {
-    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
-    for (int s = 0; s < static_cast<int>(slot_entry.size()); ++s) by_entry[fill[slot_entry[s]]++] = s;
-  }
-  std::vector<int>().swap(slot_entry);
-  // ... then regroup each nonzero's run of slots in one chunk by chunk,
-  // keeping the nonzeros and the slots in increasing order within a chunk.
-  const long chunk_slots = static_cast<long>(kChunkElements) * kSlots;
-  const int chunks = (ne + kChunkElements - 1) / kChunkElements;
-  const auto for_each_run = [&](auto&& visit) {  // visit(nonzero, chunk, first, last) over by_entry
-    for (int i = 0; i < nnz; ++i)
-      for (int k = offsets[i]; k < offsets[i + 1];) {
-        const int chunk = static_cast<int>(by_entry[k] / chunk_slots);
-        int end = k;
-        while (end < offsets[i + 1] && by_entry[end] / chunk_slots == chunk) ++end;
-        visit(i, chunk, k, end);
-        k = end;
-      }
-  };
-  std::vector<int> runs(chunks + 1, 0), slots_before(chunks + 1, 0);
-  for_each_run([&](int, int chunk, int first, int last) {
-    ++runs[chunk + 1];
-    slots_before[chunk + 1] += last - first;
-  });
-  for (int c = 0; c < chunks; ++c) {
-    runs[c + 1] += runs[c];
-    slots_before[c + 1] += slots_before[c];
-  }
-  built->chunk_touched = runs;
-  built->touched.resize(runs[chunks]);
-  built->source_offsets.resize(runs[chunks] + 1);
-  built->sources.resize(by_entry.size());
-  std::vector<int> next_run(runs.begin(), runs.end() - 1), next_slot(slots_before.begin(), slots_before.end() - 1);
-  for_each_run([&](int nonzero, int chunk, int first, int last) {
-    const int t = next_run[chunk]++;
-    built->touched[t] = nonzero;
-    built->source_offsets[t] = next_slot[chunk];
-    for (int k = first; k < last; ++k)
-      built->sources[next_slot[chunk]++] = static_cast<int>(by_entry[k] - chunk * chunk_slots);
-  });
-  built->source_offsets[runs[chunks]] = static_cast<int>(by_entry.size());
+  built->entries = std::move(slot_entry);
+  // The slots adding to each vertex's columns (the larger dof's vertex).
+  built->additions_before.assign(num_vertices + 1, 0);
+  for (int e = 0; e < ne; ++e)
+    for (int b = 0; b < N; ++b)
+      for (int a = 0; a <= b; ++a)
+        built->additions_before[std::max(elements(e, a), elements(e, b)) + 1] += a == b ? D * (D + 1) / 2 : D * D;
+  for (int v = 0; v < num_vertices; ++v) built->additions_before[v + 1] += built->additions_before[v];
+  built->nonzeros = static_cast<int>(upper_.nonZeros());
 
   built->diagonal_entries.resize(n);
   // Rows are sorted within a column, so the diagonal is the last upper entry.
   for (int i = 0; i < n; ++i) built->diagonal_entries[i] = upper_.outerIndexPtr()[i + 1] - 1;
   pattern_ = std::move(built);
+  parts_ = split_nonzeros(*pattern_, upper_.outerIndexPtr(), tbb::this_task_arena::max_concurrency());
 }
 
 template <int D, int N>
-ElementMatrix<D, N>::ElementMatrix(std::shared_ptr<const Pattern> pattern) : pattern_(std::move(pattern)) {}
+std::shared_ptr<const typename ElementMatrix<D, N>::Parts> ElementMatrix<D, N>::split_nonzeros(const Pattern& pattern,
+                                                                                               const int* outer,
+                                                                                               int count) {
+  auto parts = std::make_shared<Parts>();
+  // Bounds at the first columns of vertices that give each part about as
+  // many additions (slots) as the others.
+  const std::vector<long>& before = pattern.additions_before;
+  const int num_vertices = static_cast<int>(before.size()) - 1;
+  parts->bounds.assign(count + 1, pattern.nonzeros);
+  parts->bounds[0] = 0;
+  for (int p = 1; p < count; ++p) {
+    const long share = before.back() * p / count;
+    const int v = static_cast<int>(std::lower_bound(before.begin(), before.end(), share) - before.begin());
+    parts->bounds[p] = std::max(parts->bounds[p - 1], v < num_vertices ? outer[D * v] : pattern.nonzeros);
+  }
+  // Each element goes to the parts from its lowest nonzero's to its
+  // highest's, marked (~e) where some of its slots lie outside the part.
+  const auto part_of = [&](int entry) {
+    return static_cast<int>(std::upper_bound(parts->bounds.begin() + 1, parts->bounds.end() - 1, entry) -
+                            (parts->bounds.begin() + 1));
+  };
+  const auto for_each_part = [&](int e, auto&& visit) {
+    const int* entry = pattern.entries.data() + static_cast<std::size_t>(kSlots) * e;
+    const auto [low, high] = std::minmax_element(entry, entry + kSlots);
+    const int first = part_of(*low), last = part_of(*high);
+    for (int p = first; p <= last; ++p) visit(p, first == last ? e : ~e);
+  };
+  parts->offsets.assign(count + 1, 0);
+  for (int e = 0; e < pattern.num_elements; ++e) for_each_part(e, [&](int p, int) { ++parts->offsets[p + 1]; });
+  for (int p = 0; p < count; ++p) parts->offsets[p + 1] += parts->offsets[p];
+  parts->items.resize(parts->offsets[count]);
+  std::vector<int> next(parts->offsets.begin(), parts->offsets.end() - 1);
+  for (int e = 0; e < pattern.num_elements; ++e)
+    for_each_part(e, [&](int p, int item) { parts->items[next[p]++] = item; });
+  return parts;
+}
+
+template <int D, int N>
+ElementMatrix<D, N>::ElementMatrix(std::shared_ptr<const Pattern> pattern, std::shared_ptr<const Parts> parts)
+    : pattern_(std::move(pattern)), parts_(std::move(parts)) {}
 
 template <int D, int N>
 ElementMatrix<D, N>::ElementMatrix(ElementMatrix&& other) noexcept
-    : pattern_(std::move(other.pattern_)),
-      element_buffer_(std::move(other.element_buffer_)),
-      mean_diagonal_(other.mean_diagonal_) {
+    : pattern_(std::move(other.pattern_)), parts_(std::move(other.parts_)), mean_diagonal_(other.mean_diagonal_) {
   upper_.swap(other.upper_);
 }
 
 template <int D, int N>
 ElementMatrix<D, N>& ElementMatrix<D, N>::operator=(ElementMatrix&& other) noexcept {
   pattern_ = std::move(other.pattern_);
+  parts_ = std::move(other.parts_);
   upper_.swap(other.upper_);
-  element_buffer_.swap(other.element_buffer_);
   mean_diagonal_ = other.mean_diagonal_;
   return *this;
 }
 
 template <int D, int N>
 ElementMatrix<D, N> ElementMatrix<D, N>::with_pattern_of(const ElementMatrix& other) {
-  ElementMatrix matrix(other.pattern_);
+  ElementMatrix matrix(other.pattern_, other.parts_);
   matrix.upper_ = other.upper_;
   std::fill(matrix.upper_.valuePtr(), matrix.upper_.valuePtr() + matrix.upper_.nonZeros(), 0.0);
   return matrix;
@@ -175,7 +175,7 @@ ElementMatrix<D, N> ElementMatrix<D, N>::with_pattern_of(const ElementMatrix& ot
 
 template <int D, int N>
 ElementMatrix<D, N> ElementMatrix<D, N>::taking_storage_of(ElementMatrix* donor) {
-  ElementMatrix matrix(donor->pattern_);
+  ElementMatrix matrix(donor->pattern_, donor->parts_);
   matrix.upper_.swap(donor->upper_);
   std::fill(matrix.upper_.valuePtr(), matrix.upper_.valuePtr() + matrix.upper_.nonZeros(), 0.0);
   return matrix;
@@ -190,28 +190,29 @@ bool ElementMatrix<D, N>::same_pattern(const ElementMatrix& other) const {
 template <int D, int N>
 void ElementMatrix<D, N>::assemble(const LocalFunction& local) {
   const Pattern& pattern = *pattern_;
-  const int chunks = static_cast<int>(pattern.chunk_touched.size()) - 1;
-  element_buffer_.resize(static_cast<std::size_t>(kSlots) * std::min(pattern.num_elements, kChunkElements));
+  const int count = tbb::this_task_arena::max_concurrency();
+  if (static_cast<int>(parts_->bounds.size()) != count + 1)
+    parts_ = split_nonzeros(pattern, upper_.outerIndexPtr(), count);
+  const Parts& parts = *parts_;
   double* values = upper_.valuePtr();
-  std::fill(values, values + upper_.nonZeros(), 0.0);
-  for (int c = 0; c < chunks; ++c) {
-    const int first = c * kChunkElements, count = std::min(kChunkElements, pattern.num_elements - first);
-    parallel_for_index(count, 512, [&](int k) {
-      Local M;
-      local(first + k, &M);
-      double* out = element_buffer_.data() + static_cast<std::size_t>(kSlots) * k;
-      for (int j = 0; j < kLocalSize; ++j)
-        for (int i = 0; i <= j; ++i) *out++ = M(i, j);
-    });
-    const int begin = pattern.chunk_touched[c];
-    parallel_for_index(pattern.chunk_touched[c + 1] - begin, 4096, [&](int k) {
-      const int t = begin + k;
-      double sum = values[pattern.touched[t]];
-      for (int i = pattern.source_offsets[t]; i < pattern.source_offsets[t + 1]; ++i)
-        sum += element_buffer_[pattern.sources[i]];
-      values[pattern.touched[t]] = sum;
-    });
-  }
+  parallel_for_index(count, 1, [&](int p) {
+    const int low = parts.bounds[p], high = parts.bounds[p + 1];
+    std::fill(values + low, values + high, 0.0);
+    Local M;
+    for (int k = parts.offsets[p]; k < parts.offsets[p + 1]; ++k) {
+      const int item = parts.items[k], e = item >= 0 ? item : ~item;
+      local(e, &M);
+      const int* entry = pattern.entries.data() + static_cast<std::size_t>(kSlots) * e;
+      if (item >= 0) {
+        for (int j = 0; j < kLocalSize; ++j)
+          for (int i = 0; i <= j; ++i) values[*entry++] += M(i, j);
+      } else {
+        for (int j = 0; j < kLocalSize; ++j)
+          for (int i = 0; i <= j; ++i, ++entry)
+            if (*entry >= low && *entry < high) values[*entry] += M(i, j);
+      }
+    }
+  });
   double trace = 0;
   for (int e : pattern.diagonal_entries) trace += values[e];
   mean_diagonal_ = trace / static_cast<double>(pattern.diagonal_entries.size());

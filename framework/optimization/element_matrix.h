@@ -12,18 +12,19 @@
 // which took 3.4 GB at 10 M triangles), and may be shared by another
 // matrix on the same elements (with_pattern_of; taking_storage_of, with the
 // values' storage too: akvf-newton's Newton phase takes AKVF's at the switch
-// instead of building or copying it). Each local
-// matrix's upper triangle, D N (D N + 1) / 2 numbers, goes to the global upper triangle;
-// assemble() computes the local matrices in parallel and gathers every
-// nonzero from its contributions in a fixed order (increasing element), so
-// the result is bitwise identical for any thread count.
+// instead of building or copying it). Each local matrix's upper triangle,
+// D N (D N + 1) / 2 numbers, goes to the global upper triangle, each number
+// added to its nonzero in increasing element order, so the result is
+// bitwise identical for any thread count.
 //
-// Memory. The elements are assembled in chunks of kChunkElements: the local
-// matrices of one chunk are computed into a buffer, and each nonzero the
-// chunk touches adds the chunk's contributions to its running sum. The sums
-// see the same additions in the same order as one gather over all elements
-// would, so chunking changes no bit; it keeps the buffer at one chunk (5.5
-// MB for triangles) instead of all elements (1.7 GB at 10 M triangles).
+// Threads. The nonzeros are split into as many contiguous ranges as the
+// arena has threads, each with about the same number of additions; a
+// thread visits, in increasing order, the elements with a slot in its
+// range, computes their local matrices and adds the slots that land there.
+// An element whose vertices' columns fall in two ranges is computed twice,
+// by two threads (a few along the ranges' borders when the vertex order
+// follows the surface; up to N times in a random order). No buffer of
+// local matrices is kept: each is used where it is computed.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <functional>
@@ -68,6 +69,7 @@ class ElementMatrix {
   // size and number of nonzeros); true for a donor of taking_storage_of.
   bool same_pattern(const ElementMatrix& other) const;
 
+  // On the calling arena's threads.
   void assemble(const LocalFunction& local);
   // upper() += shift I (Tikhonov regularization).
   void add_to_diagonal(double shift);
@@ -85,26 +87,33 @@ class ElementMatrix {
 
  private:
   static constexpr int kSlots = kLocalSize * (kLocalSize + 1) / 2;
-  static constexpr int kChunkElements = 1 << 15;
-  // What depends on the elements only. The elements of chunk c are
-  // [c kChunkElements, (c + 1) kChunkElements); the nonzeros it touches are
-  // touched[chunk_touched[c] .. chunk_touched[c + 1]), in increasing order,
-  // and touched nonzero t sums element_buffer_[sources[source_offsets[t] ..
-  // source_offsets[t + 1])] (slots within the chunk, in increasing order).
+  // What depends on the elements only: the nonzero each local slot adds to
+  // (element e's slots, in the loop order of assemble(), are
+  // entries[kSlots e .. kSlots (e + 1))).
   struct Pattern {
     int num_elements = 0;
-    std::vector<int> chunk_touched;     // #chunks + 1
-    std::vector<int> touched;           // nonzero index, per (chunk, nonzero) pair
-    std::vector<int> source_offsets;    // per pair + 1
-    std::vector<int> sources;           // #E x kSlots slot indices within a chunk
-    std::vector<int> diagonal_entries;  // nonzero index of each (i, i)
+    int nonzeros = 0;
+    std::vector<int> entries;            // #E x kSlots nonzero indices
+    std::vector<long> additions_before;  // per vertex + 1: the slots adding to earlier vertices' columns
+    std::vector<int> diagonal_entries;   // nonzero index of each (i, i)
+  };
+  // The nonzeros split into contiguous ranges, one per thread of the arena:
+  // part p owns [bounds[p], bounds[p + 1]) and visits, in increasing order,
+  // the elements with a slot there, items[offsets[p] .. offsets[p + 1]):
+  // e where all of e's slots are in the range, ~e where only some are.
+  struct Parts {
+    std::vector<int> bounds;
+    std::vector<int> offsets;
+    std::vector<int> items;
   };
   // On a shared pattern, without values (the factories above fill upper_).
-  explicit ElementMatrix(std::shared_ptr<const Pattern> pattern);
+  ElementMatrix(std::shared_ptr<const Pattern> pattern, std::shared_ptr<const Parts> parts);
+  // `count` parts of about the same number of additions; outer: upper_'s column starts.
+  static std::shared_ptr<const Parts> split_nonzeros(const Pattern& pattern, const int* outer, int count);
 
   std::shared_ptr<const Pattern> pattern_;
+  std::shared_ptr<const Parts> parts_;  // for the arena's number of threads at the last assemble()
   Eigen::SparseMatrix<double> upper_;
-  std::vector<double> element_buffer_;  // one chunk's local values (sized by assemble())
   double mean_diagonal_ = 0;
 };
 
