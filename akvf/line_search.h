@@ -41,6 +41,9 @@ struct LineSearchSummary {
   // the accepted point is x + step d + (step^2 / 2) a; empty for a straight
   // step.
   Eigen::VectorXd turn;
+  // grad E at the accepted point where the search evaluated it there with
+  // the energy (Objective::value_and_gradient); empty otherwise.
+  Eigen::VectorXd gradient;
 };
 
 // The point a search accepted: x + step d, plus (step^2 / 2) turn if any.

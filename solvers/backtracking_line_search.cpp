@@ -34,9 +34,13 @@ LineSearchSummary BacktrackingLineSearch::do_search(const LineSearchInput& in) c
   Eigen::VectorXd turn;
   bool turn_asked = false, has_turn = false;
   auto accept = [&](double energy) { return energy <= in.energy + settings_.c1 * alpha * in.directional_derivative; };
+  // The first trial is usually accepted, and the optimizer then needs the
+  // gradient there: it is evaluated with the energy.
+  Eigen::VectorXd gradient;
   while (summary.evaluations < settings_.max_evaluations && alpha >= smallest) {
     trial = in.x + alpha * in.direction;
-    double energy = in.objective.value(trial);
+    const bool first = summary.evaluations == 0;
+    double energy = first ? in.objective.value_and_gradient(trial, &gradient) : in.objective.value(trial);
     ++summary.evaluations;
     // +infinity (an inverted element) never satisfies the condition.
     if (!accept(energy) && model_step_first) {
@@ -64,6 +68,7 @@ LineSearchSummary BacktrackingLineSearch::do_search(const LineSearchInput& in) c
       summary.success = true;
       summary.step = alpha;
       summary.energy = energy;
+      if (first && summary.turn.size() == 0) summary.gradient = std::move(gradient);
       return summary;
     }
     alpha *= settings_.rho;

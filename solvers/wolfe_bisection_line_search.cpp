@@ -33,6 +33,7 @@ LineSearchSummary WolfeBisectionLineSearch::do_search(const LineSearchInput& in)
     } else {
       best_alpha = alpha;
       best_energy = energy;
+      summary.gradient = gradient;
       if (gradient.dot(in.direction) >= c2_ * in.directional_derivative) break;  // both conditions hold
       lo = alpha;                                                                // too short
       if (alpha >= hi_bound) break;  // cannot go further without nearing a flip
@@ -44,6 +45,7 @@ LineSearchSummary WolfeBisectionLineSearch::do_search(const LineSearchInput& in)
     summary.step = best_alpha;
     summary.energy = best_energy;
   } else {
+    summary.gradient.resize(0);
     summary.message = "no step satisfied the sufficient-decrease condition after " +
                       std::to_string(summary.evaluations) + " evaluations (alpha_max " +
                       std::to_string(in.max_feasible_step) + ")";

@@ -53,6 +53,7 @@ LineSearchSummary LineSearch::search(const Objective& objective, const Eigen::Ve
     if (!summary.success) {
       summary.step = 0;
       summary.energy = energy;
+      summary.gradient.resize(0);
     }
   }
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

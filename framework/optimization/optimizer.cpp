@@ -167,7 +167,12 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     previous.swap(x);
     x.swap(next);
     const double previous_energy = energy;
-    energy = objective.value_and_gradient(x, &gradient);
+    if (search.gradient.size() == x.size()) {
+      energy = search.energy;
+      gradient = search.gradient;
+    } else {
+      energy = objective.value_and_gradient(x, &gradient);
+    }
 
     row = IterationSummary{};
     row.iteration = k;
