@@ -42,10 +42,10 @@ void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, double di
   if (divergence_weight != 1) {  // (beta - 1) (div v)^2 over the face
     Eigen::Matrix2d Ds;
     Ds << e1, e2;
-    const Eigen::Matrix<double, 6, 1> b = ((divergence_weight - 1) * scale * area) * divergence_row<2>(Ds.inverse());
     const Eigen::Matrix<double, 6, 1> d = divergence_row<2>(Ds.inverse());
+    const Eigen::Matrix<double, 6, 1> b = ((divergence_weight - 1) * scale * area) * d;
     for (int j = 0; j < 6; ++j)
-      for (int i = 0; i <= j; ++i) K(i, j) += d[j] * b[i];
+      for (int i = 0; i <= j; ++i) K(i, j) += d[j] * b[i];  // (b d^T)(i, j), as Eigen's outer product rounds it
   }
 }
 

@@ -68,7 +68,7 @@ TEST_CASE("neither line search ever returns a step that inverts a triangle") {
     const akvf::LineSearch& search = *line_search;
     std::mt19937 rng(23);
     std::normal_distribution<double> n;
-    int tested = 0;
+    int tested = 0, handed_over = 0;
     for (int trial = 0; trial < 20; ++trial) {
       const akvf::TriMesh mesh = akvf::test::grid_disk(8, 8, 0.3, trial + 1);
       const auto objective = make_objective(mesh);
@@ -87,8 +87,26 @@ TEST_CASE("neither line search ever returns a step that inverts a triangle") {
       CHECK(objective.count_inverted(akvf::accepted_point(x, d, summary)) == 0);
       CHECK(summary.energy < energy);
       CHECK(summary.energy <= energy + 1e-5 * summary.step * g.dot(d));  // Armijo
+      // The gradient handed to the optimizer is the accepted point's, to the
+      // bit, here and after a short step along -g, whose first trial (the
+      // unit step) is accepted.
+      const Eigen::VectorXd short_d = (-1e-4 / g.norm()) * g;
+      const auto short_summary = search.search(objective, x, energy, g, short_d);
+      REQUIRE(short_summary.success);
+      if (line_search == &backtracking) CHECK(short_summary.evaluations == 1);
+      CHECK(short_summary.gradient.size() == x.size());
+      const auto check_handed_over = [&](const Eigen::VectorXd& direction, const akvf::LineSearchSummary& result) {
+        if (result.gradient.size() == 0) return;
+        Eigen::VectorXd at_point;
+        CHECK(objective.value_and_gradient(akvf::accepted_point(x, direction, result), &at_point) == result.energy);
+        CHECK(at_point == result.gradient);
+        ++handed_over;
+      };
+      check_handed_over(d, summary);
+      check_handed_over(short_d, short_summary);
     }
     CHECK(tested >= 15);
+    CHECK(handed_over > 0);
   }
 }
 
