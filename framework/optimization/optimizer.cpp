@@ -158,7 +158,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
       return finish(TerminationStatus::kNumericalFailure,
                     "the preconditioner returned a non-finite direction at iteration " + std::to_string(k) + " (" +
                         first_non_finite_entry(direction, "entry") + "); the last finite iterate is kept");
-    const LineSearchSummary search = line_search.search(objective, start_x, start_energy, start_gradient, direction);
+    LineSearchSummary search = line_search.search(objective, start_x, start_energy, start_gradient, direction);
     if (!search.success)
       return finish(TerminationStatus::kLineSearchFailed,
                     "line search failed at iteration " + std::to_string(k) + ": " + search.message);
@@ -169,7 +169,7 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     const double previous_energy = energy;
     if (search.gradient.size() == x.size()) {
       energy = search.energy;
-      gradient = search.gradient;
+      gradient.swap(search.gradient);
     } else {
       energy = objective.value_and_gradient(x, &gradient);
     }
