@@ -26,13 +26,20 @@ namespace {
 const FactorOptions& newton_phase_options(const PreconditionerSettings2D& settings) { return settings.newton_phase; }
 const FactorOptions& newton_phase_options(const PreconditionerSettings3D& settings) { return settings.newton; }
 
-// The switch rule's view of AKVF (energy_scale.h, switching_preconditioner.h).
-// In 2D K is unscaled: its Newton step at an isometry is 1/c. In 3D AKVF
-// scales K by s_k, the energy's curvature along its last step
-// (akvf_preconditioner_3d.h, s_1 = c): that step is 1.
+// The default's AKVF phase: in 2D it factors c K (akvf_preconditioner_2d.h),
+// in 3D AKVF scales K by s_k, the energy's curvature along its last step
+// (akvf_preconditioner_3d.h, s_1 = c), so that in both its Newton step at
+// an isometry, the switch rule's unit (energy_scale.h,
+// switching_preconditioner.h), is 1.
+AkvfOptions2D far_phase(AkvfOptions2D options) {
+  options.energy_scaling = true;
+  return options;
+}
+AkvfOptions3D far_phase(AkvfOptions3D options) { return options; }
+
 SwitchRule akvf_switch_rule(const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
   SwitchRule rule = settings.akvf_newton_switch;
-  rule.isometric_step = isometric_newton_step(objective.density(), objective.rest().total_area);
+  rule.isometric_step = 1.0;
   rule.energy_lower_bound = objective.lower_bound();
   return rule;
 }
@@ -77,7 +84,7 @@ std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objecti
   FactorOptions newton = newton_phase_options(settings);
   newton.reuse_check_from = 1;
   const EigenvalueFilter filter = settings.newton_phase_filter;
-  auto akvf_options = settings.akvf;
+  auto akvf_options = far_phase(settings.akvf);
   akvf_options.factor.reuse_check_from = 1;
   akvf_options.factor.reuse_min_flops_per_entry = kReuseMinFlopsPerEntry;
   // The far phase: its reuses may precondition in single precision.
@@ -258,10 +265,17 @@ double acceleration_eta(Acceleration mode, bool momentum_by_default) {
   return mode == Acceleration::kOn || (mode == Acceleration::kAuto && momentum_by_default) ? kAqpEta : 0;
 }
 
+LineSearchSettings line_search_settings(LineSearchSettings settings, double acceleration_eta) {
+  if (acceleration_eta > 0) settings.fit_parabola = false;
+  return settings;
+}
+
 LineSearchRegistry& mutable_line_searches() {
   static LineSearchRegistry registry = [] {
     LineSearchRegistry r("line search");
-    r.add("backtracking", "Armijo backtracking from min(1, 0.8 alpha_max), flip-free (Sec. 5.3)",
+    r.add("backtracking",
+          "Armijo backtracking from min(1, 0.8 alpha_max), flip-free (Sec. 5.3), then the parabola's minimizer where "
+          "the step overshot",
           [](const LineSearchSettings& settings) { return std::make_unique<BacktrackingLineSearch>(settings); });
     r.add("wolfe-bisection",
           "bisection on the weak Wolfe conditions (c2 0.9) inside the flip-free bound, as SLIM's code",

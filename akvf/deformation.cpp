@@ -116,7 +116,8 @@ DeformRun run_deformation(const DeformSetup& setup, const PositionConstraints& i
   const std::vector<IterationCallback> callbacks = at_input_scale(user_callbacks, run.scale);
   DistortionObjective3D energy(mesh.T, setup.rest, density, mesh.num_vertices());
   energy.set_file_numbering(run.prepared.input_vertex, setup.index_base);
-  auto line_search = line_searches().create(config.line_search, config.line_search_settings);
+  auto line_search = line_searches().create(
+      config.line_search, line_search_settings(config.line_search_settings, optimizer.acceleration_eta));
   const Eigen::VectorXd rest = stack_rows(mesh.V);
   if (config.hard_constraints) {
     const FixedVerticesObjective objective(energy, 3, constraints.vertices);

@@ -12,7 +12,11 @@ namespace akvf {
 
 // Parameters shared by the line searches (each uses those that apply).
 struct LineSearchSettings {
-  double c1 = 1e-5;  // sufficient decrease: E(x + a d) <= E(x) + c1 a grad^T d
+  // Sufficient decrease: E(x + a d) <= E(x) + c1 a grad^T d. Backtracking
+  // also takes a point where E is not above E(x) and the slope is at most
+  // (1 - 2 c1) |grad^T d| (approximate Wolfe): the first trial, or the
+  // secant step after it where the decrease left is below round-off.
+  double c1 = 1e-5;
   // Backtracking shrink factor. §5.3 of the paper states 0.9; the SLIM
   // framework the authors' code is built on halves the step, and halving
   // needs about half the iterations here, so 0.5 is
@@ -24,6 +28,10 @@ struct LineSearchSettings {
   // after max_evaluations energy evaluations.
   double min_step_ratio = 1e-12;
   int max_evaluations = 400;
+  // Backtracking: after a straight step that gained less than a quarter of
+  // its linear prediction, also try the minimizer of the parabola through
+  // E(x), grad E . d and that step, and keep the lower point.
+  bool fit_parabola = true;
 
   bool is_valid(std::string* error) const;
 };

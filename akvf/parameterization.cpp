@@ -335,7 +335,8 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
       preconditioners_2d().create(config.preconditioner, *setup.objective, settings);
   if (injective && !takes_contact)
     preconditioner = std::make_unique<ContactPreconditioner>(std::move(preconditioner), setup.boundary_contact);
-  auto line_search = line_searches().create(config.line_search, config.line_search_settings);
+  auto line_search = line_searches().create(
+      config.line_search, line_search_settings(config.line_search_settings, optimizer.acceleration_eta));
   run.preconditioner_name = preconditioner->name();
   run.result = minimize(objective, *preconditioner, *line_search, setup.x0, optimizer, callbacks);
   run.preconditioner_report = preconditioner->report();

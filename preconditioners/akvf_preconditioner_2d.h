@@ -6,6 +6,11 @@
 // It uses K_beta (killing_operator_2d.h) with the energy's beta
 // (energy_scale.h): K itself except for MIPS, whose K_0 has the
 // similarities of x as null space; they are projected out instead.
+// The paper's Algorithm 1 factors K_beta unscaled. The default method's
+// AKVF phase (akvf/catalog.cpp) factors c K_beta instead, c the energy's
+// curvature at the rest isometry over K's (energy_scale.h), so that the
+// direction's unit step, the line search's first trial, is Newton's step
+// at an isometry (for symmetric Dirichlet the unscaled one is 4 times it).
 #include <optional>
 
 #include "akvf/mesh_objective.h"
@@ -25,6 +30,8 @@ struct AkvfOptions2D {
   bool area_scaling = true;
   // beta of K_beta; unset: the energy's (rest_divergence_weight).
   std::optional<double> divergence_weight;
+  // c K_beta instead of K_beta (above).
+  bool energy_scaling = false;
 };
 
 class AkvfPreconditioner2D final : public FactoredPreconditioner2D {
@@ -41,6 +48,7 @@ class AkvfPreconditioner2D final : public FactoredPreconditioner2D {
   const MeshObjective2D& objective_;
   AkvfOptions2D options_;
   double divergence_weight_;  // beta
+  double energy_scale_;       // c, or 1 without energy_scaling
 };
 
 }  // namespace akvf

@@ -27,10 +27,11 @@ namespace akvf {
 void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, double divergence_weight,
                              ElementMatrix2D::Local* local);
 
-// Fills matrix with K_beta(x) (beta = divergence_weight; 1: K(x) of Eq. 5)
-// for the faces F (#F by 3) at the interleaved UV positions x; rest_area
-// (#F, A_hat_f) is used when area_scaling.
+// Fills matrix with c K_beta(x) (beta = divergence_weight; 1: K(x) of Eq. 5;
+// c = energy_scale) for the faces F (#F by 3) at the interleaved UV
+// positions x; rest_area (#F, A_hat_f) is used when area_scaling.
 void assemble_killing_operator_2d(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
-                                  bool area_scaling, ElementMatrix2D* matrix, double divergence_weight = 1);
+                                  bool area_scaling, ElementMatrix2D* matrix, double divergence_weight = 1,
+                                  double energy_scale = 1);
 
 }  // namespace akvf

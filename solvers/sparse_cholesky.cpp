@@ -15,7 +15,6 @@
 
 #include "akvf/error.h"
 #include "framework/process/huge_page_array.h"
-#include "framework/process/physical_memory.h"
 #include "solvers/fill_reducing_ordering.h"
 #include "solvers/supernodal_factorization.h"
 #include "solvers/supernodal_solve.h"
@@ -131,22 +130,13 @@ namespace {
 // factor entry (its supernodal switch; hilbert_b's K has 21) it computes
 // L D L^T column by column on one core, because there the supernodes are too
 // small to pay for their overhead. There we analyze supernodal instead, with
-// twice CHOLMOD's column limits for merging supernodes (nrelax 8, 32, 96
-// for its 4, 16, 48; the zero-fraction limits zrelax unchanged): fewer,
-// larger dense blocks, some explicit zeros in them, factored by
+// CHOLMOD's own limits for merging supernodes, and factor with
 // SupernodalFactorization on every thread. Measured with `akvf_benchmarks
-// --benchmark_filter='^(NumericFactorization|Solve)/'`: hilbert_b 10.4 -> 7.3-7.8 ms, cow_b 2.7 ->
-// 1.4-1.7 ms; supernodal with CHOLMOD's own limits was no faster on hilbert_b (11.1
-// ms), and three or four times its limits were slower than twice.
-// Above the switch CHOLMOD's analysis is kept: the relaxed merging made
-// horse_b's factorization 23 % faster but its solves 7-15 % slower, and
-// whole runs, which make several solves per factorization (reuse), were
-// within the noise; at 2.5 M faces it bought nothing for 250 MiB more.
-// A relaxed factor that would store more than kRelaxedShare of the
-// machine's memory (a long, thin matrix's, say) is analyzed again, with
-// CHOLMOD's limits.
-constexpr std::size_t kRelaxedColumnLimits[3] = {8, 32, 96};
-constexpr double kRelaxedShare = 1.0 / 16;
+// --benchmark_filter='^(NumericFactorization|Solve)/'` on one core:
+// hilbert_b 11.1 ms simplicial (CHOLMOD's), 3.3 ms here; merging up to
+// twice as many columns stored 36 % more of L
+// (explicit zeros) and was 8 % slower on one core, the same on two
+// (docs/notes/2026-11-30-rounding-batch.md).
 
 template <class Index>
 class CholmodFactor final : public PermutedFactor {
@@ -155,18 +145,13 @@ class CholmodFactor final : public PermutedFactor {
  public:
   // cholmod_defaults: CHOLMOD's analysis as it is (the unit of
   // akvf_speed's table); otherwise ours (above).
-  // relaxed_limit_bytes: the largest relaxed factor kept (0: kRelaxedShare
-  // of the memory).
-  CholmodFactor(bool cholmod_defaults, double relaxed_limit_bytes)
-      : ours_(!cholmod_defaults),
-        relaxed_limit_bytes_(relaxed_limit_bytes > 0 ? relaxed_limit_bytes : kRelaxedShare * physical_memory_bytes()) {
+  explicit CholmodFactor(bool cholmod_defaults) : ours_(!cholmod_defaults) {
     Api::start(&common_);
     common_.print = 0;  // errors are reported through exceptions, not stderr
     // The matrix comes permuted and postordered (SparseCholesky::analyze).
     common_.nmethods = 1;
     common_.method[0].ordering = CHOLMOD_NATURAL;
     common_.postorder = 0;
-    std::copy(std::begin(common_.nrelax), std::end(common_.nrelax), cholmod_limits_);
   }
   ~CholmodFactor() override {
     Api::free_factor(&factor_, &common_);
@@ -185,18 +170,17 @@ class CholmodFactor final : public PermutedFactor {
     // the supernodal settings do not change, confirm it: one analysis
     // instead of two. Otherwise, or if they do not, CHOLMOD's choice first.
     if (ours_ && expected_flops_per_entry > 0 && expected_flops_per_entry < common_.supernodal_switch) {
-      if (!analyze_relaxed(&B)) return false;
+      if (!analyze_supernodal(&B)) return false;
       if (!(common_.lnz > 0 && common_.fl / common_.lnz >= common_.supernodal_switch)) return counted();
       common_.supernodal = CHOLMOD_AUTO;
-      std::copy(std::begin(cholmod_limits_), std::end(cholmod_limits_), common_.nrelax);
     }
     if (!analyze_lower(&B)) return false;
-    if (ours_ && !factor_->is_super && !analyze_relaxed(&B)) return false;
+    if (ours_ && !factor_->is_super && !analyze_supernodal(&B)) return false;
     return counted();
   }
 
   std::unique_ptr<PermutedFactor> copy_analysis() const override {
-    auto copy = std::make_unique<CholmodFactor<Index>>(!ours_, relaxed_limit_bytes_);
+    auto copy = std::make_unique<CholmodFactor<Index>>(!ours_);
     copy->pattern_ = pattern_;
     copy->column_start_ = column_start_;
     copy->row_ = row_;
@@ -347,14 +331,9 @@ class CholmodFactor final : public PermutedFactor {
     return true;
   }
 
-  // Ours below the supernodal switch: supernodal with the relaxed column
-  // limits, or with CHOLMOD's where that factor would be too large.
-  bool analyze_relaxed(cholmod_sparse* B) {
+  // Ours below the supernodal switch: supernodal.
+  bool analyze_supernodal(cholmod_sparse* B) {
     common_.supernodal = CHOLMOD_SUPERNODAL;
-    std::copy(std::begin(kRelaxedColumnLimits), std::end(kRelaxedColumnLimits), common_.nrelax);
-    if (!analyze_lower(B)) return false;
-    if (bytes() <= relaxed_limit_bytes_) return true;
-    std::copy(std::begin(cholmod_limits_), std::end(cholmod_limits_), common_.nrelax);
     return analyze_lower(B);
   }
 
@@ -366,9 +345,7 @@ class CholmodFactor final : public PermutedFactor {
   }
 
   cholmod_common common_;
-  bool ours_;                      // our analysis settings rather than CHOLMOD's (above)
-  std::size_t cholmod_limits_[3];  // CHOLMOD's column limits for merging supernodes
-  double relaxed_limit_bytes_;
+  bool ours_;  // our analysis settings rather than CHOLMOD's (above)
   cholmod_factor* factor_ = nullptr;
   std::shared_ptr<const PermutedPattern> pattern_;
   std::shared_ptr<std::vector<Index>> column_start_, row_;  // 64-bit copies (long only)
@@ -394,7 +371,6 @@ struct SparseCholesky::Impl {
   bool wide_indices = false;       // tests: 64-bit indices from the start
   bool by_cholmod = false;         // tests, benchmarks: CHOLMOD's own numeric factorization
   bool cholmod_defaults = false;   // benchmarks: and CHOLMOD's own analysis settings
-  double relaxed_limit_bytes = 0;  // tests: the largest relaxed factor (0: kRelaxedShare of the memory)
   bool always_try_metis = false;   // tests: METIS's ordering besides AMD's at any size
   std::string ordering;            // of the last analysis: "amd" or "metis"
 
@@ -521,7 +497,6 @@ void SparseCholesky::always_try_metis(bool on) { impl_->always_try_metis = on; }
 
 void SparseCholesky::use_cholmod_factorization(bool on) { impl_->by_cholmod = on; }
 
-void SparseCholesky::limit_relaxed_factor(double bytes) { impl_->relaxed_limit_bytes = bytes; }
 
 void SparseCholesky::use_cholmod_alone(bool on) {
   impl_->by_cholmod = on;
@@ -579,10 +554,10 @@ void SparseCholesky::Impl::analyze_in_order(const Eigen::SparseMatrix<double>& u
   pattern = permuted_lower(upper, std::move(permutation));
   const double expected = expanded_flops_per_entry(block_ordering, block_size);
   if (!wide_indices) {
-    factor = std::make_unique<CholmodFactor<int>>(cholmod_defaults, relaxed_limit_bytes);
+    factor = std::make_unique<CholmodFactor<int>>(cholmod_defaults);
     if (factor->analyze(pattern, expected)) return;
   }
-  factor = std::make_unique<CholmodFactor<Long>>(cholmod_defaults, relaxed_limit_bytes);
+  factor = std::make_unique<CholmodFactor<Long>>(cholmod_defaults);
   if (!factor->analyze(pattern, expected))
     throw NumericalError("CHOLMOD symbolic analysis failed: the factor is too large even for 64-bit indices");
 }

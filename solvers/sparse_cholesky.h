@@ -99,11 +99,6 @@ class SparseCholesky {
   // amalgamation, its own numeric factorization (the speed table's unit).
   // Set before analyze().
   void use_cholmod_alone(bool on);
-  // Tests: the largest factor (bytes) kept with our more relaxed merging of
-  // supernodes; a larger one is analyzed again with CHOLMOD's limits
-  // (default: 1/16 of the physical memory, sparse_cholesky.cpp). Set before
-  // analyze().
-  void limit_relaxed_factor(double bytes);
   // The share of a numeric factorization's flops on the elimination tree's
   // longest chain: what no number of threads shortens
   // (solvers/supernodal_tree.h). 1 for a simplicial factor.

@@ -505,15 +505,19 @@ TEST_CASE(
       akvf::AkvfOptions2D options;
       options.divergence_weight = beta;
       akvf::AkvfPreconditioner2D akvf_k(objective, options);
+      options.energy_scaling = true;  // the default method's AKVF phase
+      akvf::AkvfPreconditioner2D scaled_k(objective, options);
       akvf::AkvfOptions2D as_written;
       as_written.divergence_weight = 1;
       akvf::AkvfPreconditioner2D killing(objective, as_written);
       newton.update({x, g, 0.0, 1});
       akvf_k.update({x, g, 0.0, 1});
+      scaled_k.update({x, g, 0.0, 1});
       killing.update({x, g, 0.0, 1});
       const double c = 1 / akvf::isometric_newton_step(*density, objective.rest().total_area);
       const Eigen::MatrixXd H = unshifted(newton);
       CHECK((H - c * unshifted(akvf_k)).norm() <= 1e-8 * H.norm());
+      CHECK((H - unshifted(scaled_k)).norm() <= 1e-8 * H.norm());
       if (conformal) CHECK((H - c * unshifted(killing)).norm() > 0.1 * H.norm());
     }
   }

@@ -182,3 +182,73 @@ TEST_CASE("tet step bound: no step below it inverts a tet, a step just above doe
   }
   CHECK(bounded > 100);
 }
+
+TEST_CASE("backtracking tries the parabola's minimizer after a step that overshot, and keeps the lower point") {
+  const akvf::TriMesh mesh = akvf::test::grid_disk(6, 6);
+  const auto objective = make_objective(mesh);
+  const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(mesh, 0.15, 2));
+  REQUIRE(objective.count_inverted(x) == 0);
+  Eigen::VectorXd g;
+  const double energy = objective.value_and_gradient(x, &g);
+  akvf::LineSearchSettings plain_settings;
+  plain_settings.fit_parabola = false;
+  int untouched = 0, shorter_taken = 0;
+  for (const double length : {1e-3, 1e-2, 0.1, 0.3, 1.0, 3.0, 10.0}) {
+    CAPTURE(length);
+    const Eigen::VectorXd d = -length * g;
+    const auto plain = akvf::BacktrackingLineSearch(plain_settings).search(objective, x, energy, g, d);
+    const auto fitted = akvf::BacktrackingLineSearch().search(objective, x, energy, g, d);
+    REQUIRE(plain.success);
+    REQUIRE(fitted.success);
+    // The share of the linear prediction the plain step gained.
+    const double r = (energy - plain.energy) / (plain.step * -g.dot(d));
+    if (!(r < 0.25)) {
+      CHECK(fitted.step == plain.step);
+      CHECK(fitted.evaluations == plain.evaluations);
+      ++untouched;
+      continue;
+    }
+    CHECK(fitted.evaluations == plain.evaluations + 1);
+    const double shorter = plain.step / (2 * (1 - r));
+    const double at_shorter = objective.value(x + shorter * d);
+    CHECK(fitted.energy == std::min(plain.energy, at_shorter));
+    CHECK(fitted.step == (at_shorter < plain.energy ? shorter : plain.step));
+    if (at_shorter < plain.energy) ++shorter_taken;
+  }
+  // Both cases occur along these directions: short ones gain more than a
+  // quarter of their prediction, long ones are cut by the flip-free bound.
+  CHECK(untouched > 0);
+  CHECK(shorter_taken > 0);
+}
+
+TEST_CASE("at the energy's rounding floor, backtracking takes the secant step that passes approximate Wolfe") {
+  const akvf::TriMesh mesh = akvf::test::grid_disk(6, 6);
+  const auto objective = make_objective(mesh);
+  // The rest map is an isometry, the minimum; 1e-8 away from it E moves by
+  // about 1e-14, below its round-off (1e-13 relative), so values cannot
+  // order the points.
+  const Eigen::VectorXd rest = akvf::stack_uv(mesh.V.leftCols(2));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  Eigen::VectorXd offset(rest.size());
+  for (Eigen::Index i = 0; i < offset.size(); ++i) offset[i] = 1e-8 * unit(rng);
+  const Eigen::VectorXd x = rest + offset;
+  Eigen::VectorXd g;
+  const double energy = objective.value_and_gradient(x, &g);
+  for (const double length : {3.0, 10.0, 30.0}) {
+    CAPTURE(length);
+    // Toward the minimum, overshooting it length times: E rises at alpha = 1.
+    const Eigen::VectorXd d = -length * offset;
+    const auto result = akvf::BacktrackingLineSearch().search(objective, x, energy, g, d);
+    REQUIRE(result.success);
+    CHECK(result.evaluations == 2);
+    Eigen::VectorXd g1;
+    objective.value_and_gradient(x + d, &g1);
+    const double descent = -g.dot(d);
+    CHECK(result.step == descent / (g1.dot(d) + descent));
+    CHECK(result.step == doctest::Approx(1 / length).epsilon(0.05));
+    REQUIRE(result.gradient.size() == g.size());
+    CHECK(result.gradient.dot(d) <= (1 - 2 * akvf::LineSearchSettings().c1) * descent);
+    CHECK(result.gradient.norm() < 0.1 * g.norm());
+  }
+}

@@ -211,7 +211,9 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     stalled_iterations = previous_energy - energy <= options.stall_tolerance * std::max(1.0, std::abs(energy))
                              ? stalled_iterations + 1
                              : 0;
-    if (stalled_iterations >= options.stall_iterations)
+    // A run whose last step reached the gradient tolerance has converged
+    // (the loop's first check), however little the energy moved.
+    if (stalled_iterations >= options.stall_iterations && !(row.grad_norm < options.gradient_tolerance))
       return finish(TerminationStatus::kStalled, "energy decreased by less than " +
                                                      number_text(options.stall_tolerance) + " (relative) for " +
                                                      std::to_string(options.stall_iterations) + " iterations");
