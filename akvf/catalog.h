@@ -57,8 +57,8 @@ double acceleration_eta(Acceleration mode, bool momentum_by_default);
 // The line search settings of a run: with AQP's momentum no parabola is
 // fitted (LineSearchSettings::fit_parabola). Its momentum is the last step,
 // x_k - x_{k-1}, as backtracking alone makes it (Kovalsky et al. 2016); a
-// step shortened to the parabola's minimizer damps it (cow_b, AMIPS with
-// the Laplacian: 3.34 against 37.4 after 100 iterations).
+// step shortened to the parabola's minimizer damps it
+// (docs/notes/2026-11-30-rounding-batch.md).
 LineSearchSettings line_search_settings(LineSearchSettings settings, double acceleration_eta);
 
 using DensityRegistry3D = Registry<DistortionDensity<3>, const EnergySettings&>;
