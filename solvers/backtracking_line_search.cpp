@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "akvf/error.h"
 
@@ -40,6 +41,13 @@ void try_line_minimizer(const LineSearchInput& in, Eigen::VectorXd* trial, LineS
 // points along the line.
 double round_off(double energy) { return kRoundOff * std::max(1.0, std::abs(energy)); }
 
+// g^T d, or NaN where E is not finite or no gradient came with it (an
+// objective may leave it empty at an inverted element).
+double slope_along(double energy, const Eigen::VectorXd& gradient, const Eigen::VectorXd& direction) {
+  return std::isfinite(energy) && gradient.size() == direction.size() ? gradient.dot(direction)
+                                                                      : std::numeric_limits<double>::quiet_NaN();
+}
+
 // Hager and Zhang's approximate Wolfe condition, for E's rounding floor: a
 // slope at alpha of at most (1 - 2 c1) |g^T d| is the sufficient-decrease
 // condition of the parabola through E(x), g^T d and that slope. The
@@ -68,7 +76,7 @@ bool try_secant_at_floor(const LineSearchInput& in, double c1, double alpha, dou
   Eigen::VectorXd gradient;
   const double energy = in.objective.value_and_gradient(*trial, &gradient);
   ++summary->evaluations;
-  if (!approximately_wolfe(in, c1, energy, gradient.dot(in.direction))) return false;
+  if (!approximately_wolfe(in, c1, energy, slope_along(energy, gradient, in.direction))) return false;
   summary->success = true;
   summary->step = secant;
   summary->energy = energy;
@@ -107,10 +115,10 @@ LineSearchSummary BacktrackingLineSearch::do_search(const LineSearchInput& in) c
     const bool first = summary.evaluations == 0;
     double energy = first ? in.objective.value_and_gradient(trial, &gradient) : in.objective.value(trial);
     ++summary.evaluations;
-    const bool floor_accepted =
-        first && !accept(energy) && approximately_wolfe(in, settings_.c1, energy, gradient.dot(in.direction));
+    const double slope = first ? slope_along(energy, gradient, in.direction) : 0;
+    const bool floor_accepted = first && !accept(energy) && approximately_wolfe(in, settings_.c1, energy, slope);
     if (first && !accept(energy) && !floor_accepted && summary.evaluations < settings_.max_evaluations &&
-        try_secant_at_floor(in, settings_.c1, alpha, energy, gradient.dot(in.direction), &trial, &summary))
+        try_secant_at_floor(in, settings_.c1, alpha, energy, slope, &trial, &summary))
       return summary;
     // +infinity (an inverted element) never satisfies the condition.
     if (!accept(energy) && !floor_accepted && model_step_first) {
