@@ -37,6 +37,7 @@ void try_line_minimizer(const LineSearchInput& in, Eigen::VectorXd* trial, LineS
   summary->energy = energy;
   summary->gradient = std::move(gradient);
 }
+
 // E's round-off at E(x): below it, energy values no longer order the
 // points along the line.
 double round_off(double energy) { return kRoundOff * std::max(1.0, std::abs(energy)); }
