@@ -300,8 +300,9 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
     flaps.format = [](const O& o) { return std::string(o.flaps ? "on" : "off"); };
     f.push_back(recomputes_start(flaps));
     f.push_back(recomputes_start(integer_field<O>("warm_start_iters", "warm-start-iters", "N",
-                                                  "iteration limit of the symmetric Dirichlet warm start of "
-                                                  "energies that overflow at the initial map",
+                                                  "iteration limit of the warm start (symmetric Dirichlet, then "
+                                                  "the energy with its exponent halved) of energies that overflow "
+                                                  "at the initial map",
                                                   &O::warm_start_iters, ">= 0", [](int n) { return n >= 0; })));
     return mark_own(OptionScope::kParam, std::move(f), common_begin, common_end);
   }();

@@ -454,31 +454,115 @@ Eigen::VectorXd start_from_map(const ParamSetup& setup, const ParamConfig& confi
 
 namespace {
 
+// The run's energy with other settings, on the setup's mesh.
+std::shared_ptr<DistortionObjective2D> objective_with(const ParamSetup& setup, const std::string& energy,
+                                                      const EnergySettings& settings) {
+  return std::make_shared<DistortionObjective2D>(setup.objective->elements(), setup.objective->rest(),
+                                                 energies_2d().create(energy, settings),
+                                                 setup.objective->num_vertices());
+}
+
+// One stage of the warm start: `energy` with `settings` minimized from x0
+// with the default method (gradient 1e-3, at most `max_iterations`).
+OptimizerResult warm_stage(const ParamConfig& config, const ParamSetup& setup, const std::string& energy,
+                           const EnergySettings& settings, const Eigen::VectorXd& x0, int max_iterations) {
+  ParamConfig stage;
+  stage.energy = energy;
+  stage.energy_settings = settings;
+  stage.global_injectivity = config.global_injectivity;
+  stage.optimizer.max_iterations = max_iterations;
+  ParamSetup stage_setup = setup;
+  stage_setup.analyses = nullptr;  // the prepared analysis is the run's (statistics.symbolic_analyses)
+  stage_setup.objective = objective_with(setup, energy, settings);
+  stage_setup.x0 = x0;
+  return run_from_start(stage_setup, stage, {}).result;
+}
+
+// The stage's rows after the warm start's, numbered on and on its clock
+// (its row 0, the map the last stage ended at, is left out).
+void append_stage(OptimizerResult stage, OptimizerResult* warm) {
+  const IterationSummary& last = warm->trace.back();
+  const int iterations = last.iteration;
+  const double seconds = last.seconds;
+  for (std::size_t i = 1; i < stage.trace.size(); ++i) {
+    IterationSummary row = stage.trace[i];
+    row.iteration += iterations;
+    row.seconds += seconds;
+    warm->trace.push_back(row);
+  }
+  warm->status = stage.status;
+  warm->message = std::move(stage.message);
+  warm->x = std::move(stage.x);
+}
+
+// "12 iterations, status converged, energy ..., gradient norm ...".
+std::string stage_summary(const OptimizerResult& stage) {
+  const IterationSummary& last = stage.trace.back();
+  char text[200];
+  std::snprintf(text, sizeof text, "%d iterations, status %s, energy %.10g, gradient norm %.3e", last.iteration,
+                to_string(stage.status).c_str(), last.energy, last.grad_norm);
+  return text;
+}
+
+// Halvings of the exponent tried for a continuation stage: k / 2^40 is
+// about 1e-12 k.
+constexpr int kMaxExponentHalvings = 40;
+
+// The largest exponent k / 2^j (j >= 1) above `above` at which the run's
+// energy is finite at x, or 0.
+double finite_exponent(const ParamConfig& config, const ParamSetup& setup, const Eigen::VectorXd& x, double above) {
+  double exponent = config.energy_settings.exponent;
+  for (int j = 1; j <= kMaxExponentHalvings; ++j) {
+    exponent /= 2;
+    if (!(exponent > above)) return 0;
+    EnergySettings settings = config.energy_settings;
+    settings.exponent = exponent;
+    if (usable_start(*objective_with(setup, config.energy, settings), x)) return exponent;
+  }
+  return 0;
+}
+
 void warm_start(const ParamConfig& config, ParamSetup* setup) {
   // The exponential energies overflow at the Tutte map's slivers. Start them
-  // instead from the symmetric Dirichlet map reached by AKVF (gradient 1e-3,
-  // its own iteration limit), which is finite for every energy here.
-  ParamConfig sd_config;
-  sd_config.energy = kWarmStartEnergy;
-  sd_config.global_injectivity = config.global_injectivity;
-  sd_config.optimizer.max_iterations = config.warm_start_max_iterations;
-  ParamSetup sd_setup = *setup;
-  sd_setup.analyses = nullptr;  // the prepared analysis is the run's (statistics.symbolic_analyses)
-  sd_setup.objective = std::make_shared<DistortionObjective2D>(setup->objective->elements(), setup->objective->rest(),
-                                                               energies_2d().create(kWarmStartEnergy, {}),
-                                                               setup->objective->num_vertices());
-  OptimizerResult warm = run_from_start(sd_setup, sd_config, {}).result;
-  const IterationSummary& last = warm.trace.back();
-  char reached[200];
-  std::snprintf(reached, sizeof reached, "%d AKVF iterations, status %s, energy %.10g, gradient norm %.3e",
-                last.iteration, to_string(warm.status).c_str(), last.energy, last.grad_norm);
-  const std::string map = warm.status == TerminationStatus::kConverged ? "the symmetric Dirichlet minimizer"
-                                                                       : "the symmetric Dirichlet map reached";
+  // instead from the symmetric Dirichlet map reached by the default method
+  // (gradient 1e-3; the warm start's iterations in all are limited).
+  const int limit = config.warm_start_max_iterations;
+  OptimizerResult warm = warm_stage(config, *setup, kWarmStartEnergy, {}, setup->x0, limit);
+  std::string map = warm.status == TerminationStatus::kConverged ? "the symmetric Dirichlet minimizer"
+                                                                 : "the symmetric Dirichlet map reached";
+  std::string reached = stage_summary(warm);
+  // A sliver that map leaves stretched (symmetric Dirichlet in the hundreds)
+  // is a tiny share of the mean it minimizes, but exp(k f) overflows there.
+  // Continuation in k: the energy with the largest exponent k / 2^j finite
+  // at the map is minimized from it, which pulls the largest f down (the
+  // exponential weighs it most), and again from its minimizer, until k
+  // itself is finite. Each stage's exponent is above the last's.
+  // A stage that stalled (at E's round-off: the exponential's values are
+  // huge where a spike cannot be flattened) has gone as far as its exponent
+  // takes it, and the next starts there.
+  double exponent = 0;
+  std::string exponents;
+  while ((warm.status == TerminationStatus::kConverged || warm.status == TerminationStatus::kStalled) &&
+         warm.trace.back().iteration < limit && !usable_start(*setup->objective, warm.x)) {
+    exponent = finite_exponent(config, *setup, warm.x, exponent);
+    if (exponent == 0) break;
+    EnergySettings settings = config.energy_settings;
+    settings.exponent = exponent;
+    OptimizerResult stage =
+        warm_stage(config, *setup, config.energy, settings, warm.x, limit - warm.trace.back().iteration);
+    char with[40];
+    std::snprintf(with, sizeof with, "%.6g", exponent);
+    exponents += (exponents.empty() ? "" : ", then ") + std::string(with);
+    reached += "; then with exponent " + std::string(with) + ": " + stage_summary(stage);
+    append_stage(std::move(stage), &warm);
+  }
+  if (!exponents.empty()) map += " minimized further with the exponent " + exponents;
   for (IterationSummary& row : warm.trace) row.warm_start = true;
   setup->warm_start = std::move(warm);
   if (!is_normal_termination(setup->warm_start.status) || !usable_start(*setup->objective, setup->warm_start.x)) {
     setup->warnings.push_back(config.energy + " overflows (energy or gradient not finite) at the initial map and at " +
-                              map + " (" + reached + "); the run will stop at once");
+                              map + " (" + reached + "); the run will stop at once" +
+                              (exponents.empty() ? "" : " (a smaller exponent may keep the energy finite)"));
     return;
   }
   setup->x0 = setup->warm_start.x;

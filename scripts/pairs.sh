@@ -56,8 +56,8 @@ table() {
 table "$MESH" "--max-iters 100 --grad-tol 0" ""
 echo
 echo "The exponential energies are infinite at the Tutte map (the slivers' symmetric Dirichlet"
-echo "values overflow exp()), so those runs start from the symmetric Dirichlet minimizer (AKVF,"
-echo "gradient 1e-3; its iterations open the trace and its time is in the seconds); every other"
+echo "values overflow exp()), so those runs start from the symmetric Dirichlet minimizer (the"
+echo "default method, gradient 1e-3; its iterations open the trace and its time is in the seconds); every other"
 echo "run starts from the Tutte map."
 echo "Every pair on every disk mesh of ../shared/meshes/tri (350 runs of 30 iterations) keeps 0"
 echo "inverted triangles at every iterate and ends no higher than it started (a warm-started run:"

@@ -67,6 +67,37 @@ TEST_CASE("the exponential energies' warm start has its own limit, counts its ti
   CHECK(setup.warm_start.trace.back().iteration == 1);
 }
 
+TEST_CASE("an exponential energy that overflows at the symmetric Dirichlet minimizer is reached by halving k") {
+  // A spike the flat map cannot follow: the symmetric Dirichlet minimizer
+  // leaves its triangles stretched, where exp(10 f) overflows and exp(5 f)
+  // does not.
+  akvf::TriMesh mesh = akvf::test::grid_disk(9, 9);
+  mesh.V(40, 2) = 2;
+  ParamConfig config;
+  config.energy = "exp-symmetric-dirichlet";
+  config.energy_settings.exponent = 10;
+  config.optimizer.max_iterations = 3;
+  akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "spike.obj", config);
+  REQUIRE(setup.warnings.size() == 1);
+  CHECK(setup.warnings[0].find("starting from the symmetric Dirichlet minimizer minimized further with the exponent 5 "
+                               "instead (warm start: ") != std::string::npos);
+  const akvf::OptimizerResult result = akvf::run_parameterization(setup, config).result;
+  const std::size_t warm_rows = setup.warm_start.trace.size();
+  REQUIRE(result.trace.size() > warm_rows);
+  for (std::size_t i = 1; i < warm_rows; ++i) CHECK(result.trace[i].iteration == result.trace[i - 1].iteration + 1);
+  for (std::size_t i = warm_rows; i < result.trace.size(); ++i) CHECK(std::isfinite(result.trace[i].energy));
+  CHECK(akvf::is_normal_termination(result.status));
+
+  // At k = 20 every stage stalls short of a finite energy: the run stops at
+  // once and says so.
+  config.energy_settings.exponent = 20;
+  setup = akvf::prepare_parameterization(mesh, "spike.obj", config);
+  REQUIRE(setup.warnings.size() == 1);
+  CHECK(setup.warnings[0].find("minimized further with the exponent 5, then 10 (") != std::string::npos);
+  CHECK(setup.warnings[0].find("the run will stop at once (a smaller exponent may keep the energy finite)") !=
+        std::string::npos);
+}
+
 TEST_CASE(
     "after a warm start the default starts in its Newton phase only where the energy is within e of its infimum") {
   // exp(k D) overflows at the Tutte map's worst triangles for both meshes;
