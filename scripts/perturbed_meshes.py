@@ -2,10 +2,10 @@
 chosen on: writes OUT/tri/ for `akvf_speed --data OUT` and the other
 scripts that read a data folder's tri/.
 
-- NAME_jitter.obj for each disk mesh NAME_b.obj, camelhead.off and
-  hilbert_b.obj of DATA/tri: every vertex moved by a seeded Gaussian of
-  standard deviation a fifth of the mean edge length (rest triangles far
-  from the scan's regular ones);
+- NAME_jitter.obj for each disk mesh NAME_b.obj and for camelhead.off of
+  DATA/tri: every vertex moved by a seeded Gaussian of standard deviation a
+  fifth of the mean edge length (rest triangles far from the scan's regular
+  ones);
 - cone_strip.obj: a strip of 1200 x 6 vertices (11990 faces, diagonals
   chosen at random) laid three times around a cone rising half a unit per
   unit of radius, and a little along its length, so it is nearly
