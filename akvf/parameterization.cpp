@@ -537,13 +537,16 @@ void warm_start(const ParamConfig& config, ParamSetup* setup) {
   // at the map is minimized from it, which pulls the largest f down (the
   // exponential weighs it most), and again from its minimizer, until k
   // itself is finite. Each stage's exponent is above the last's.
-  // A stage that stalled (at E's round-off: the exponential's values are
-  // huge where a spike cannot be flattened) has gone as far as its exponent
-  // takes it, and the next starts there.
+  // A stage that stalled or found no lower point (E's round-off: the
+  // exponential's values are huge where a spike cannot be flattened) has
+  // gone as far as its exponent takes it, and the next starts there.
+  auto went_its_way = [](TerminationStatus status) {
+    return status == TerminationStatus::kConverged || status == TerminationStatus::kStalled ||
+           status == TerminationStatus::kLineSearchFailed;
+  };
   double exponent = 0;
   std::string exponents;
-  while ((warm.status == TerminationStatus::kConverged || warm.status == TerminationStatus::kStalled) &&
-         warm.trace.back().iteration < limit && !usable_start(*setup->objective, warm.x)) {
+  while (went_its_way(warm.status) && warm.trace.back().iteration < limit && !usable_start(*setup->objective, warm.x)) {
     exponent = finite_exponent(config, *setup, warm.x, exponent);
     if (exponent == 0) break;
     EnergySettings settings = config.energy_settings;
@@ -559,7 +562,8 @@ void warm_start(const ParamConfig& config, ParamSetup* setup) {
   if (!exponents.empty()) map += " minimized further with the exponent " + exponents;
   for (IterationSummary& row : warm.trace) row.warm_start = true;
   setup->warm_start = std::move(warm);
-  if (!is_normal_termination(setup->warm_start.status) || !usable_start(*setup->objective, setup->warm_start.x)) {
+  if (setup->warm_start.status == TerminationStatus::kNumericalFailure ||
+      !usable_start(*setup->objective, setup->warm_start.x)) {
     setup->warnings.push_back(config.energy + " overflows (energy or gradient not finite) at the initial map and at " +
                               map + " (" + reached + "); the run will stop at once" +
                               (exponents.empty() ? "" : " (a smaller exponent may keep the energy finite)"));
