@@ -1,5 +1,6 @@
 #include "preconditioners/slim_preconditioner.h"
 
+#include <Eigen/QR>
 #include <Eigen/SVD>
 #include <cmath>
 
@@ -19,7 +20,39 @@ const SingularValueDerivative<D>& singular_value_density(const MeshObjective<D>&
   return *density;
 }
 
+// The orthogonal projector, in vec(J) (column-major), onto the directions
+// (s I + Omega) J, Omega skew: J's image scaled and turned, along which a
+// scale-invariant density is constant.
+template <int D>
+Eigen::Matrix<double, D * D, D * D> similarity_orbit_projector(const Eigen::Matrix<double, D, D>& J) {
+  using Square = Eigen::Matrix<double, D, D>;
+  constexpr int kDirections = 1 + D * (D - 1) / 2;  // the scale and the rotations' generators
+  Eigen::Matrix<double, D * D, kDirections> N;
+  N.col(0) = Eigen::Map<const Eigen::Matrix<double, D * D, 1>>(J.data());
+  int column = 1;
+  for (int a = 0; a < D; ++a)
+    for (int b = a + 1; b < D; ++b) {
+      Square omega = Square::Zero();
+      omega(a, b) = -1;
+      omega(b, a) = 1;
+      const Square turned = omega * J;
+      N.col(column++) = Eigen::Map<const Eigen::Matrix<double, D * D, 1>>(turned.data());
+    }
+  // J is invertible (det J > 0), so the directions are independent.
+  const Eigen::HouseholderQR<decltype(N)> qr(N);
+  const Eigen::Matrix<double, D * D, kDirections> basis =
+      qr.householderQ() * Eigen::Matrix<double, D * D, kDirections>::Identity();
+  return basis * basis.transpose();
+}
+
 }  // namespace
+
+template <int D>
+void SlimPreconditioner<D>::soften_invariant_directions(const Square& J, SquareHessian* H) {
+  const SquareHessian orbit = similarity_orbit_projector<D>(J);
+  const SquareHessian rest = SquareHessian::Identity() - orbit;
+  *H = rest * *H * rest + kInvariantShare * orbit * *H * orbit;
+}
 
 template <int D>
 SlimPreconditioner<D>::SlimPreconditioner(const MeshObjective<D>& objective, FactorOptions options,
@@ -83,6 +116,7 @@ void SlimPreconditioner<D>::assemble(const OptimizationState& state, Matrix* mat
     // Hessian of |W (J - R)|^2 in vec(J) (column-major): I_D (x) 2 W^T W.
     Eigen::Matrix<double, D * D, D* D> H = Eigen::Matrix<double, D * D, D * D>::Zero();
     for (int c = 0; c < D; ++c) H.template block<D, D>(D * c, D * c) = 2 * WtW;
+    if (density_.minimal_at_similarities()) soften_invariant_directions(J, &H);
     typename DistortionDensity<D>::Hessian barrier;
     if (objective_.density().collapse_barrier_hessian(J, &barrier)) H += barrier;
     const auto G = jacobian_map<D>(objective_.rest().Dm_inv[e]);

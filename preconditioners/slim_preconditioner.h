@@ -13,6 +13,23 @@
 //   P = sum_e w_e G_e^T (I_D (x) 2 W_e^T W_e) G_e,
 // so the proxy minimizer x* satisfies P (x* - x) = -grad E(x): SLIM's
 // search direction x* - x is -P^-1 grad E, a preconditioned gradient.
+//
+// A scale-invariant density is constant along the lines J + t (s I + Omega) J
+// (Omega skew: (I + t Omega) is a scaled rotation), so its gradient has no
+// component along them, while the proxy, pulling J towards one fixed
+// similarity, is as stiff along them as across: each step can then move
+// an element's scale and turn only as far as that stiffness lets the
+// anisotropic part pull, and SLIM crawls (MIPS on horse_b: 573 iterations,
+// 1000 without converging on the jittered meshes of
+// scripts/perturbed_meshes.py). For such densities each element's proxy
+// Hessian is restricted to the complement of those directions, keeping
+// kInvariantShare of its curvature along them (soften_invariant_directions):
+// then only anisotropy is resisted, as by the energy itself (MIPS on
+// horse_b: 16 iterations). The share keeps P positive definite: the
+// similarities of the whole map are such directions for every element, so
+// P's curvature there is the share times its usual one, which 1e-6 keeps
+// as far (a factor 1e6) above the factorization's relative shift (1e-12,
+// factored_preconditioner.h) as below the proxy's curvature elsewhere.
 // Needs an energy that exposes its singular-value derivative
 // (SingularValueDerivative<D>). Where w_i^2 <= 0 (possible for AMIPS, for
 // MIPS in 3D, for ARAP near its collapse barrier, where det J < 1e-3 pulls
@@ -31,6 +48,7 @@ template <int D>
 class SlimPreconditioner final : public FactoredPreconditioner<D> {
  public:
   using Square = Eigen::Matrix<double, D, D>;
+  using SquareHessian = Eigen::Matrix<double, D * D, D * D>;  // in vec(J), column-major
 
   // Throws OptionsError if the objective's density has no singular-value derivative.
   explicit SlimPreconditioner(const MeshObjective<D>& objective, FactorOptions options = {},
@@ -40,6 +58,12 @@ class SlimPreconditioner final : public FactoredPreconditioner<D> {
 
   // W_e^T W_e (the squared per-element weight matrix) and R_e at J.
   static void proxy_weights(const SingularValueDerivative<D>& density, const Square& J, Square* WtW, Square* R);
+  // The share of the proxy's curvature kept along a scale-invariant
+  // density's invariant directions (module comment).
+  static constexpr double kInvariantShare = 1e-6;
+  // H restricted to the complement of the directions (s I + Omega) J, plus
+  // kInvariantShare of its block along them.
+  static void soften_invariant_directions(const Square& J, SquareHessian* H);
 
  private:
   using Matrix = typename FactoredPreconditioner<D>::Matrix;

@@ -3,9 +3,11 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
 #include <cmath>
 #include <memory>
 #include <random>
+#include <type_traits>
 
 #include "energies/amips.h"
 #include "energies/arap.h"
@@ -450,6 +452,50 @@ TEST_CASE("where no positive SLIM weight gives the gradient, the proxy takes the
   const Eigen::Matrix2d expected = rotation * Eigen::Vector2d(0.5, 1).asDiagonal() * rotation.transpose();
   CHECK((WtW - expected).norm() <= 1e-6);
   CHECK((R - rotation).norm() <= 1e-12);
+}
+
+TEST_CASE_TEMPLATE(
+    "a scale-invariant density's SLIM proxy keeps a millionth of its curvature along J's similarity orbit", Dim,
+    std::integral_constant<int, 2>, std::integral_constant<int, 3>) {
+  // MIPS is constant along J + t (s I + Omega) J; the softened proxy
+  // Hessian is the original on the complement of those directions, a share
+  // kInvariantShare of it along them, and still positive definite.
+  constexpr int D = Dim::value;
+  using Square = Eigen::Matrix<double, D, D>;
+  using Vector = Eigen::Matrix<double, D * D, 1>;
+  using Hessian = Eigen::Matrix<double, D * D, D * D>;
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 10; ++trial) {
+    const Square J = akvf::test::random_jacobian<D>(rng, 0.3, 3.0);
+    Square WtW, R;
+    akvf::SlimPreconditioner<D>::proxy_weights(std::conditional_t<D == 2, akvf::Mips2D, akvf::Mips3D>{}, J, &WtW, &R);
+    Hessian proxy = Hessian::Zero();
+    for (int c = 0; c < D; ++c) proxy.template block<D, D>(D * c, D * c) = 2 * WtW;
+    Hessian softened = proxy;
+    akvf::SlimPreconditioner<D>::soften_invariant_directions(J, &softened);
+    Square turn = Square::Zero();
+    turn(0, 1) = -1;
+    turn(1, 0) = 1;
+    const Square turned = turn * J;
+    const double share = akvf::SlimPreconditioner<D>::kInvariantShare;
+    for (const Square* direction : {&J, &turned}) {
+      const Vector v = Eigen::Map<const Vector>(direction->data());
+      CHECK(v.dot(softened * v) == doctest::Approx(share * v.dot(proxy * v)).epsilon(1e-9));
+    }
+    // A direction orthogonal to the orbit: U diag(sigma_2, -sigma_1, 0) V^T,
+    // a stretch along the first two singular directions that keeps |J|.
+    const Eigen::JacobiSVD<Square> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Square stretch = Square::Zero();
+    stretch(0, 0) = svd.singularValues()[1];
+    stretch(1, 1) = -svd.singularValues()[0];
+    const Square across = svd.matrixU() * stretch * svd.matrixV().transpose();
+    const Vector u = Eigen::Map<const Vector>(across.data());
+    CHECK(std::abs(u.dot(Eigen::Map<const Vector>(J.data()))) <= 1e-12 * J.squaredNorm());
+    CHECK(std::abs(u.dot(Eigen::Map<const Vector>(turned.data()))) <= 1e-12 * J.squaredNorm());
+    CHECK(u.dot(softened * u) == doctest::Approx(u.dot(proxy * u)).epsilon(1e-9));
+    const Eigen::SelfAdjointEigenSolver<Hessian> eig(softened);
+    CHECK(eig.eigenvalues().minCoeff() > 0);
+  }
 }
 
 TEST_CASE("SLIM refuses an energy without a singular-value derivative") {

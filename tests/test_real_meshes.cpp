@@ -353,20 +353,23 @@ TEST_CASE("ARAP's default gradient tolerance brings SLIM within 1e-3 of the defa
   CHECK(akvf::parameterize(mesh.V, mesh.F, options).grad_norm() > 1e-4);
 }
 
-TEST_CASE("SLIM converges on MIPS, its proxy pulling towards the nearest similarity") {
+TEST_CASE("SLIM converges on MIPS to the default's minimum, its proxy free along each element's similarities") {
   // MIPS is minimal at every similarity; a proxy pulled towards rotations
-  // fights it and does not converge.
+  // fights it and does not converge, and one stiff along the element's
+  // scale and turn crawls (926 iterations, 1.4e-4 above the minimum).
   const std::string dir = akvf::test::data_dir();
   if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
   akvf::ParamConfig config;
   config.energy = "mips";
-  config.preconditioner = "slim";
   config.global_injectivity = false;
   const std::string path = dir + "/tri/camel_b.obj";
   const auto setup = akvf::prepare_parameterization(akvf::read_triangle_mesh(path), path, config);
+  const double lowest = akvf::run_parameterization(setup, config).result.trace.back().energy;
+  config.preconditioner = "slim";
   const auto result = akvf::run_parameterization(setup, config).result;
   CHECK(result.status == akvf::TerminationStatus::kConverged);
-  CHECK(result.trace.back().energy < 2.02);
+  CHECK(result.trace.size() <= 101);
+  CHECK(result.trace.back().energy <= lowest * (1 + 1e-6));
 }
 
 TEST_CASE("L-BFGS with global injectivity: no crossing where its line search alone ran past contacts") {
