@@ -1,6 +1,5 @@
 #include "preconditioners/slim_preconditioner.h"
 
-#include <Eigen/QR>
 #include <Eigen/SVD>
 #include <cmath>
 
@@ -22,13 +21,16 @@ const SingularValueDerivative<D>& singular_value_density(const MeshObjective<D>&
 
 // The orthogonal projector, in vec(J) (column-major), onto the directions
 // (s I + Omega) J, Omega skew: J's image scaled and turned, along which a
-// scale-invariant density is constant.
+// scale-invariant density is constant. J is invertible (det J > 0), so the
+// directions are independent; each is orthogonal to J (tr(J^T Omega J) = 0),
+// and in 3D the turns are made orthonormal by Gram-Schmidt.
 template <int D>
 Eigen::Matrix<double, D * D, D * D> similarity_orbit_projector(const Eigen::Matrix<double, D, D>& J) {
   using Square = Eigen::Matrix<double, D, D>;
+  using Direction = Eigen::Matrix<double, D * D, 1>;
   constexpr int kDirections = 1 + D * (D - 1) / 2;  // the scale and the rotations' generators
-  Eigen::Matrix<double, D * D, kDirections> N;
-  N.col(0) = Eigen::Map<const Eigen::Matrix<double, D * D, 1>>(J.data());
+  Eigen::Matrix<double, D * D, kDirections> basis;
+  basis.col(0) = Eigen::Map<const Direction>(J.data()).normalized();
   int column = 1;
   for (int a = 0; a < D; ++a)
     for (int b = a + 1; b < D; ++b) {
@@ -36,12 +38,10 @@ Eigen::Matrix<double, D * D, D * D> similarity_orbit_projector(const Eigen::Matr
       omega(a, b) = -1;
       omega(b, a) = 1;
       const Square turned = omega * J;
-      N.col(column++) = Eigen::Map<const Eigen::Matrix<double, D * D, 1>>(turned.data());
+      Direction v = Eigen::Map<const Direction>(turned.data());
+      for (int k = 1; k < column; ++k) v -= basis.col(k).dot(v) * basis.col(k);
+      basis.col(column++) = v.normalized();
     }
-  // J is invertible (det J > 0), so the directions are independent.
-  const Eigen::HouseholderQR<decltype(N)> qr(N);
-  const Eigen::Matrix<double, D * D, kDirections> basis =
-      qr.householderQ() * Eigen::Matrix<double, D * D, kDirections>::Identity();
   return basis * basis.transpose();
 }
 
