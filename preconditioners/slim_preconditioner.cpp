@@ -20,10 +20,11 @@ const SingularValueDerivative<D>& singular_value_density(const MeshObjective<D>&
 }
 
 // The orthogonal projector, in vec(J) (column-major), onto the directions
-// (s I + Omega) J, Omega skew: J's image scaled and turned, along which a
-// scale-invariant density is constant. J is invertible (det J > 0), so the
-// directions are independent; each is orthogonal to J (tr(J^T Omega J) = 0),
-// and in 3D the turns are made orthonormal by Gram-Schmidt.
+// (s I + Omega) J, Omega skew: J's image scaled and turned, tangent to the
+// orbit on which a scale-invariant density is constant. J is invertible
+// (det J > 0), so the directions are independent; each turn is orthogonal
+// to J (tr(J^T Omega J) = 0), and in 3D the turns are made orthonormal by
+// Gram-Schmidt.
 template <int D>
 Eigen::Matrix<double, D * D, D * D> similarity_orbit_projector(const Eigen::Matrix<double, D, D>& J) {
   using Square = Eigen::Matrix<double, D, D>;

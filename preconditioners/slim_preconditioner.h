@@ -14,18 +14,20 @@
 // so the proxy minimizer x* satisfies P (x* - x) = -grad E(x): SLIM's
 // search direction x* - x is -P^-1 grad E, a preconditioned gradient.
 //
-// A scale-invariant density is constant along the lines J + t (s I + Omega) J
-// (Omega skew: (I + t Omega) is a scaled rotation), so its gradient has no
-// component along them, while the proxy, pulling J towards one fixed
-// similarity, is as stiff along them as across: each step can then move
+// A scale-invariant density is constant on J's similarity orbit s Q J (Q a
+// rotation), whose tangents at J are (s I + Omega) J, Omega skew: its
+// gradient has no component along them (in 2D, where I + t Omega is a
+// scaled rotation, it is constant along those lines), while the proxy,
+// pulling J towards one fixed
+// similarity, is as stiff along them as across: each step could then move
 // an element's scale and turn only as far as that stiffness lets the
-// anisotropic part pull, and SLIM crawls (MIPS on horse_b: 573 iterations,
-// 1000 without converging on the jittered meshes of
-// scripts/perturbed_meshes.py). For such densities each element's proxy
-// Hessian is restricted to the complement of those directions, keeping
-// kInvariantShare of its curvature along them (soften_invariant_directions):
-// then only anisotropy is resisted, as by the energy itself (MIPS on
-// horse_b: 16 iterations). The share keeps P positive definite: the
+// anisotropic part pull, and SLIM would crawl
+// (docs/notes/2026-12-01-slim-mips-invariant-directions.md). For such
+// densities each element's proxy Hessian is restricted to the complement
+// of those directions, keeping kInvariantShare of its curvature along them
+// (soften_invariant_directions): only anisotropy is resisted, as by the
+// energy itself (MIPS on horse_b: 16 iterations). The share keeps P
+// positive definite: the
 // similarities of the whole map are such directions for every element, so
 // P's curvature there is the share times its usual one, which 1e-6 keeps
 // as far (a factor 1e6) above the factorization's relative shift (1e-12,

@@ -457,9 +457,10 @@ TEST_CASE("where no positive SLIM weight gives the gradient, the proxy takes the
 TEST_CASE_TEMPLATE(
     "a scale-invariant density's SLIM proxy keeps a millionth of its curvature along J's similarity orbit", Dim,
     std::integral_constant<int, 2>, std::integral_constant<int, 3>) {
-  // MIPS is constant along J + t (s I + Omega) J; the softened proxy
-  // Hessian is the original on the complement of those directions, a share
-  // kInvariantShare of it along them, and still positive definite.
+  // MIPS is constant on J's orbit s Q J, whose tangents are (s I + Omega) J;
+  // the softened proxy Hessian is the original on the complement of those
+  // directions, a share kInvariantShare of it along them, and still
+  // positive definite.
   constexpr int D = Dim::value;
   using Square = Eigen::Matrix<double, D, D>;
   using Vector = Eigen::Matrix<double, D * D, 1>;
