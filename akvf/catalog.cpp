@@ -182,7 +182,9 @@ PreconditionerRegistry3D& mutable_preconditioners_3d() {
                                                                rest_shear_curvature(objective.density()) / 2);
           },
           {kMomentumByDefault});
-    r.add("slim", "SLIM: reweighted ARAP proxy plus the constraints' Hessian (Rabinovich et al. 2017)",
+    r.add("slim",
+          "SLIM: reweighted ARAP proxy plus the constraints' Hessian (Rabinovich et al. 2017); for MIPS "
+          "towards the nearest similarity, free along it",
           [](const MeshObjective3D& objective, const PreconditionerSettings3D& settings) {
             return std::make_unique<SlimPreconditioner3D>(objective, settings.slim);
           });
@@ -226,7 +228,9 @@ PreconditionerRegistry2D& mutable_preconditioners_2d() {
             return std::make_unique<LaplacianPreconditioner2D>(objective, settings.laplacian);
           },
           {kMomentumByDefault, kTakesContactCurvature});
-    r.add("slim", "SLIM: reweighted ARAP proxy whose gradient is the energy's (Rabinovich et al. 2017)",
+    r.add("slim",
+          "SLIM: reweighted ARAP proxy whose gradient is the energy's (Rabinovich et al. 2017); for MIPS "
+          "towards the nearest similarity, free along it",
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return std::make_unique<SlimPreconditioner2D>(objective, settings.slim);
           },
