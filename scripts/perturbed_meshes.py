@@ -12,39 +12,19 @@ scripts that read a data folder's tri/.
   developable and its isometric flattening winds about 2.7 times around
   itself (`--injectivity local` lets it overlap).
 
-Usage: /usr/bin/python3 scripts/perturbed_meshes.py DATA OUT
+Usage: PYTHONPATH=build/python /usr/bin/python3 scripts/perturbed_meshes.py DATA OUT
+(after scripts/build.sh: the meshes are read by the akvf module).
 """
 import math
 import os
 import random
 import sys
 
-
-def read_mesh(path):
-    """Vertices and triangles of an OBJ or OFF file (polygons fanned)."""
-    vertices, faces = [], []
-    with open(path) as f:
-        if path.endswith(".off"):
-            tokens = f.read().split()
-            assert tokens[0] == "OFF", path
-            nv, nf = int(tokens[1]), int(tokens[2])
-            at = 4
-            for _ in range(nv):
-                vertices.append([float(t) for t in tokens[at:at + 3]])
-                at += 3
-            for _ in range(nf):
-                n = int(tokens[at])
-                faces.append([int(t) for t in tokens[at + 1:at + 1 + n]])
-                at += 1 + n
-        else:
-            for line in f:
-                t = line.split()
-                if t and t[0] == "v":
-                    vertices.append([float(c) for c in t[1:4]])
-                elif t and t[0] == "f":
-                    faces.append([int(c.split("/")[0]) - 1 for c in t[1:]])
-    triangles = [[p[0], p[i], p[i + 1]] for p in faces for i in range(1, len(p) - 1)]
-    return vertices, triangles
+try:
+    import akvf
+except ImportError as error:
+    sys.exit("perturbed_meshes.py: cannot import the akvf module (%s); build it with bash scripts/build.sh "
+             "and run with PYTHONPATH=build/python /usr/bin/python3" % error)
 
 
 def write_obj(path, vertices, triangles):
@@ -85,7 +65,8 @@ def main():
     rng = random.Random(1)
     names = sorted(n for n in os.listdir(os.path.join(data, "tri")) if n.endswith("_b.obj") or n == "camelhead.off")
     for name in names:
-        vertices, triangles = read_mesh(os.path.join(data, "tri", name))
+        V, F = akvf.read_mesh(os.path.join(data, "tri", name))
+        vertices, triangles = V.tolist(), F.tolist()
         stem = os.path.splitext(name)[0]
         write_obj(os.path.join(out, stem + "_jitter.obj"), jittered(vertices, triangles, rng), triangles)
     write_obj(os.path.join(out, "cone_strip.obj"), *cone_strip(rng))
