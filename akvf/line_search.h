@@ -41,6 +41,9 @@ struct LineSearchSummary {
   double step = 0;               // accepted alpha (0 on failure: x is unchanged)
   double max_feasible_step = 0;  // alpha_max of §5.3
   double initial_step = 0;
+  // The first trial was max_step_fraction * alpha_max, below
+  // max_initial_step (the direction's own step): the bound set it.
+  bool bound_cut_initial_step = false;
   double energy = 0;    // E(x + step d), or E(x) on failure
   int evaluations = 0;  // energy evaluations
   double seconds = 0;

@@ -69,6 +69,11 @@ struct IterationSummary {
   double grad_norm = 0;        // ||grad E||_2 at the new iterate
   double step = 0;             // accepted alpha (0 for row 0)
   double max_step = 0;         // flip-free bound alpha_max
+  // The line search's first trial alpha_0 (0 for row 0 and where the solver
+  // does not say: L-BFGS), and whether the flip-free bound cut it below the
+  // direction's own step (LineSearchSummary::bound_cut_initial_step).
+  double initial_step = 0;
+  bool bound_cut_initial_step = false;
   int ls_evals = 0;            // energy evaluations in the line search
   int flips = 0;               // inverted elements at the new iterate
   double precond_seconds = 0;  // update + apply

@@ -95,6 +95,7 @@ LineSearchSummary BacktrackingLineSearch::do_search(const LineSearchInput& in) c
   LineSearchSummary summary;
   double alpha = std::min(settings_.max_initial_step, settings_.max_step_fraction * in.max_feasible_step);
   summary.initial_step = alpha;
+  summary.bound_cut_initial_step = alpha < settings_.max_initial_step;
   Eigen::VectorXd trial(in.x.size());
   const double smallest = settings_.min_step_ratio * alpha;
   // The rotation-following path (Objective::rotation_following_term), tried

@@ -21,6 +21,7 @@ LineSearchSummary WolfeBisectionLineSearch::do_search(const LineSearchInput& in)
   double lo = 0, hi = hi_bound;
   double alpha = std::min(settings_.max_initial_step, hi_bound);
   summary.initial_step = alpha;
+  summary.bound_cut_initial_step = alpha < settings_.max_initial_step;
   double best_alpha = 0, best_energy = in.energy;  // the last step that satisfied Armijo
   Eigen::VectorXd trial(in.x.size()), gradient;
   const double smallest = settings_.min_step_ratio * alpha;

@@ -33,6 +33,17 @@ std::string trace_text(const akvf::OptimizerResult& result) {
   return out.str();
 }
 
+// 101 rows, iterations 0-100, whose gradient norm halves every 10
+// iterations, from 1 to 2^-10.
+std::vector<akvf::IterationSummary> halving_gradient_trace() {
+  std::vector<akvf::IterationSummary> trace(101);
+  for (int k = 0; k <= 100; ++k) {
+    trace[static_cast<std::size_t>(k)].iteration = k;
+    trace[static_cast<std::size_t>(k)].grad_norm = std::pow(0.5, k / 10.0);
+  }
+  return trace;
+}
+
 }  // namespace
 
 TEST_CASE("the exponential energies' warm start has its own limit, counts its time and opens the trace") {
@@ -170,12 +181,7 @@ TEST_CASE("a run at its iteration limit says how fast it was converging") {
   // least values a half apart, and 1e-6 needs log2(1024e-6) / (1/10) more,
   // 99.3.
   akvf::OptimizerResult result;
-  for (int k = 0; k <= 100; ++k) {
-    akvf::IterationSummary row;
-    row.iteration = k;
-    row.grad_norm = std::pow(0.5, k / 10.0);
-    result.trace.push_back(row);
-  }
+  result.trace = halving_gradient_trace();
   result.status = TerminationStatus::kMaxIterations;
   result.message = akvf::iteration_limit_message(result.trace, 1e-6, 100);
   CHECK(result.message ==
@@ -202,6 +208,82 @@ TEST_CASE("a run at its iteration limit says how fast it was converging") {
   CHECK(akvf::iteration_limit_message(result.trace, 0, 100) ==
         "reached 100 iterations; the least gradient norm of iterations 81-90 was 0.00195312, of 91-100 0.000976562 "
         "(tolerance 0)");
+}
+
+TEST_CASE("a run at its iteration limit says what held its steps") {
+  // 100 iterations; the last tenth (91-100) decides.
+  akvf::OptimizerResult result;
+  result.trace = halving_gradient_trace();
+  const std::string rate =
+      "reached 100 iterations; the least gradient norm of iterations 81-90 was 0.00195312, of 91-100 0.000976562 "
+      "(tolerance 1e-06): about 100 more iterations at that rate";
+  auto set_last_tenth = [&](auto&& set) {
+    for (int k = 91; k <= 100; ++k) set(k, &result.trace[static_cast<std::size_t>(k)]);
+  };
+  // The search took a quarter of its unit first trial (or less, once).
+  set_last_tenth([](int k, akvf::IterationSummary* row) {
+    row->initial_step = 1;
+    row->step = k == 95 ? 0.125 : 0.25;
+  });
+  CHECK(akvf::iteration_limit_message(result.trace, 1e-6, 100) ==
+        rate +
+            "; the line search shortened 10 of the last 10 first trials (to a median 0.25 of them): the "
+            "preconditioner's model is softer than the energy along its directions");
+  // The bound set the first trial, and it was taken.
+  set_last_tenth([](int k, akvf::IterationSummary* row) {
+    row->initial_step = row->step = 0.001 * k;
+    row->bound_cut_initial_step = true;
+  });
+  CHECK(akvf::iteration_limit_message(result.trace, 1e-6, 100) ==
+        rate +
+            "; the flip-free bound cut 10 of the last 10 first trials (to a median step of 0.096): elements near "
+            "collapse hold the steps");
+  // The direction's own step, taken at once.
+  set_last_tenth([](int, akvf::IterationSummary* row) {
+    row->initial_step = row->step = 1;
+    row->bound_cut_initial_step = false;
+  });
+  CHECK(akvf::iteration_limit_message(result.trace, 1e-6, 100) ==
+        rate +
+            "; 10 of the last 10 steps were the direction's own, accepted at once: the preconditioner's model is "
+            "stiffer than the energy in some directions, where the steps fall short");
+  // A Wolfe search took more than its first trial.
+  set_last_tenth([](int, akvf::IterationSummary* row) { row->step = 2; });
+  CHECK(akvf::iteration_limit_message(result.trace, 1e-6, 100) ==
+        rate +
+            "; the line search lengthened 10 of the last 10 first trials: the preconditioner's model is stiffer than "
+            "the energy along its directions");
+  // No kind makes up more than half: the counts.
+  set_last_tenth([](int k, akvf::IterationSummary* row) {
+    row->initial_step = k <= 97 ? 1 : 0.5;
+    row->bound_cut_initial_step = k > 97;
+    row->step = k <= 94 ? 0.5 : row->initial_step;
+  });
+  CHECK(akvf::iteration_limit_message(result.trace, 1e-6, 100) ==
+        rate +
+            "; of the last 10 steps the line search shortened 4, the flip-free bound cut 3, 3 were the "
+            "direction's own");
+  // A solver whose rows do not say what the first trial was (L-BFGS): no clause.
+  set_last_tenth([](int, akvf::IterationSummary* row) { row->initial_step = 0; });
+  CHECK(akvf::iteration_limit_message(result.trace, 1e-6, 100) == rate);
+
+  // A run fills the rows in: plain gradient descent on a bumpy disk.
+  ParamConfig config;
+  config.preconditioner = "identity";
+  config.optimizer.max_iterations = 20;
+  const akvf::TriMesh mesh = akvf::test::bumpy_disk(9, 9);
+  const akvf::OptimizerResult run =
+      akvf::run_parameterization(akvf::prepare_parameterization(mesh, "b.obj", config), config).result;
+  REQUIRE(run.status == TerminationStatus::kMaxIterations);
+  for (std::size_t i = 1; i < run.trace.size(); ++i) {
+    CHECK(run.trace[i].initial_step > 0);
+    CHECK(run.trace[i].initial_step <= 1);
+    CHECK(run.trace[i].bound_cut_initial_step == (run.trace[i].initial_step < 1));
+  }
+  const bool diagnosed = run.message.find("first trials") != std::string::npos ||
+                         run.message.find("were the direction's own") != std::string::npos ||
+                         run.message.find("of the last 10 steps") != std::string::npos;
+  CHECK_MESSAGE(diagnosed, run.message);
 }
 
 TEST_CASE("a manifest cannot read outside --data-dir unless it says so") {

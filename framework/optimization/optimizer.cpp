@@ -180,6 +180,8 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
     row.grad_norm = gradient.norm();
     row.step = search.step;
     row.max_step = search.max_feasible_step;
+    row.initial_step = search.initial_step;
+    row.bound_cut_initial_step = search.bound_cut_initial_step;
     row.ls_evals = search.evaluations;
     row.flips = objective.count_inverted(x);
     row.constraint_distance = objective.constraint_distance(x);
