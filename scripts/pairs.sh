@@ -32,8 +32,12 @@ echo "bound is the energy's (docs/energies.md). One run each: times vary 10-20 %
 echo
 # One table: every method x every energy on $1 with the options $2; each
 # cell the final energy, then $3 (iterations too when set), seconds, status.
+# With $3 set, the runs that reached the iteration limit are listed below it
+# with the command line's "not converged:" line (how the gradient fell and
+# what held the steps).
 table() {
   local mesh=$1 options=$2 iterations=$3
+  local short_runs=()
   printf '| preconditioner |'
   for e in $energies; do printf ' %s |' "$e"; done
   echo
@@ -44,13 +48,22 @@ table() {
     printf '| %s |' "$m"
     for e in $energies; do
       # shellcheck disable=SC2086
-      line=$("$AKVF" param "$mesh" --quiet --energy "$e" --precond "$m" $options --injectivity local 2>/dev/null \
-             | sed -n 's/^status \([a-z-]*\).* after \([0-9]*\) iterations, \([0-9.]*\) s: energy \([^,]*\),.*/\4 \/ \2 it \/ \3 s \/ \1/p') || true
+      out=$("$AKVF" param "$mesh" --quiet --energy "$e" --precond "$m" $options --injectivity local 2>/dev/null) || true
+      line=$(echo "$out" \
+             | sed -n 's/^status \([a-z-]*\).* after \([0-9]*\) iterations, \([0-9.]*\) s: energy \([^,]*\),.*/\4 \/ \2 it \/ \3 s \/ \1/p')
       [ -n "$iterations" ] || line=$(echo "$line" | sed 's| / [0-9]* it||')
       printf ' %s |' "${line:-error}"
+      short=$(echo "$out" | sed -n 's/^not converged: reached [0-9]* iterations; //p')
+      [ -z "$short" ] || short_runs+=("- $m, $e: $short")
     done
     echo
   done
+  if [ -n "$iterations" ] && [ ${#short_runs[@]} -gt 0 ]; then
+    echo
+    echo "At the iteration limit (the command line's \`not converged:\` line):"
+    echo
+    printf '%s\n' "${short_runs[@]}"
+  fi
 }
 
 table "$MESH" "--max-iters 100 --grad-tol 0" ""
