@@ -46,8 +46,7 @@ std::string step_diagnosis(const std::vector<IterationSummary>& rows) {
   if (2 * shortened.size() > known)
     return "; the line search shortened " + of(shortened.size()) + " first trials (to a median " +
            two_digits(median(shortened)) +
-           " of them): the preconditioner's model is softer than the energy along its "
-           "directions";
+           " of them): the preconditioner's model is softer than the energy along its directions";
   if (2 * lengthened > known)
     return "; the line search lengthened " + of(lengthened) +
            " first trials: the preconditioner's model is stiffer than the energy along its directions";
