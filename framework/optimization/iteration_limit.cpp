@@ -10,11 +10,12 @@ namespace akvf {
 
 namespace {
 
-// value to two significant digits: the medians below are rough.
-std::string two_digits(double value) {
+// value to two significant digits by `rounding` (std::round, std::ceil):
+// the rates and medians here are rough.
+std::string two_digits(double value, double (*rounding)(double) = std::round) {
   if (!(value > 0)) return number_text(value);
   const double unit = std::pow(10.0, std::floor(std::log10(value)) - 1);
-  return number_text(std::round(value / unit) * unit);
+  return number_text(rounding(value / unit) * unit);
 }
 
 double median(std::vector<double> values) {
@@ -91,9 +92,7 @@ std::string iteration_limit_message(const std::vector<IterationSummary>& trace, 
   if (!(gradient_tolerance > 0)) return message + step_diagnosis(last_block);  // no gradient target (a fixed budget)
   const double rate = std::log(to / from) / block;                             // per iteration, < 0
   const double more = std::max(std::log(gradient_tolerance / to) / rate, 1.0);
-  // Two significant digits: the rate is a rough one.
-  const double unit = std::pow(10.0, std::max(0.0, std::floor(std::log10(more)) - 1));
-  return message + ": about " + number_text(std::ceil(more / unit) * unit) + " more iterations at that rate" +
+  return message + ": about " + two_digits(std::ceil(more), std::ceil) + " more iterations at that rate" +
          step_diagnosis(last_block);
 }
 
