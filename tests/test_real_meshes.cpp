@@ -220,7 +220,11 @@ TEST_CASE("the paper's Algorithm 1 reaches the reference energies with grad norm
   }
 }
 
-TEST_CASE("newton and akvf agree on the final symmetric Dirichlet energy to 1e-6") {
+// At a gradient of 1e-5 the quadratic model bounds E - E* by |g|^2 / (2
+// lambda_min), below 1e-9 relative here (measured: 3e-10 at most). Near
+// 1e-6 a step lowers E by less than its round-off (horse_b: 1e-14 at 2e-6,
+// E = 4.09), and where AKVF stops there depends on the build's rounding.
+TEST_CASE("newton and akvf agree on the final symmetric Dirichlet energy to 1e-8") {
   const std::string dir = akvf::test::data_dir();
   if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
   for (const std::string name : {"camel_b.obj", "cow_b.obj", "horse_b.obj"}) {
@@ -231,23 +235,15 @@ TEST_CASE("newton and akvf agree on the final symmetric Dirichlet energy to 1e-6
       CAPTURE(method);
       akvf::ParamConfig config;
       config.preconditioner = method;
-      config.optimizer.gradient_tolerance = 1e-6;
+      config.optimizer.gradient_tolerance = 1e-5;
       config.global_injectivity = false;  // the paper's problem
       const std::string path = dir + "/tri/" + name;
       const auto setup = akvf::prepare_parameterization(akvf::read_triangle_mesh(path), path, config);
       const auto result = akvf::run_parameterization(setup, config).result;
-      // The gradient tolerance or E's round-off: a gradient of 1e-6 is near
-      // where E = 4.09 stops changing in its 13th digit, and a build whose
-      // rounding differs (the sanitizer build on some processors: horse_b's
-      // AKVF run at 2.2e-6) may stall there first, with the energy agreement
-      // below still to hold; 1e-5 is a hundredth of the default tolerance.
-      const bool converged = result.status == akvf::TerminationStatus::kConverged;
-      const bool at_round_off =
-          result.status == akvf::TerminationStatus::kStalled && result.trace.back().grad_norm < 1e-5;
-      CHECK_MESSAGE((converged || at_round_off), result.message);
+      CHECK_MESSAGE(result.status == akvf::TerminationStatus::kConverged, result.message);
       energy[i++] = result.trace.back().energy;
     }
-    CHECK(std::abs(energy[0] - energy[1]) <= 1e-6 * energy[0]);
+    CHECK(std::abs(energy[0] - energy[1]) <= 1e-8 * energy[0]);
   }
 }
 
