@@ -76,7 +76,11 @@
 // switch from AKVF's far phase included), the model's minimizer was not
 // acceptable and the exact Hessian is usually indefinite there, so the try
 // would cost a numeric factorization that fails; the fallback (with its mu) is
-// used at once instead. On the SLIM cube the default then reaches the 1e-4 band
+// used at once instead. So it is after a switch from AKVF, whatever its last
+// step (start_on_fallback): that step tested AKVF's model, not Newton's, and
+// after AKVF's unit step the exact Hessian did not factor at MIPS's switch on
+// 4 of 4 disk meshes, nor at ARAP's on 6 of 6 (camelhead's MIPS: the switch
+// iteration's preconditioner 27 ms against 14). On the SLIM cube the default then reaches the 1e-4 band
 // in 6 iterations instead of 7 after its switch (docs/design.md); on the disk
 // meshes of ../shared/meshes/tri the iterations are unchanged. Where the caller
 // knows the Hessian to be far from positive definite (akvf-newton's switch with
@@ -134,6 +138,10 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   // known to be far from positive definite (akvf-newton's switch with the
   // constraints still far: switching_preconditioner.h).
   void start_fallback_at_clamp() { negative_share_ = 1; }
+  // kExact: the first assembly is the fallback, the exact Hessian is tried
+  // from the second on; where the last step was another method's
+  // (akvf-newton's switch), so nothing has tested Newton's model yet.
+  void start_on_fallback() { exact_wait_ = 1; }
   std::string report() const override;
 
   static constexpr double adaptive_tolerance = 0.01;

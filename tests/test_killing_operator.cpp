@@ -708,6 +708,23 @@ TEST_CASE("the exact filter factors the unfiltered Hessian where it is positive 
       CHECK((P_clamped * v - Hv).norm() > 1e-3 * Hv.norm());
     }
   }
+  SUBCASE("started on the fallback (akvf-newton's switch): the exact Hessian is tried from the second assembly") {
+    akvf::TriMesh grid = akvf::test::grid_disk(7, 6, 0.2, 3);
+    const akvf::DistortionObjective2D objective = unit_area_objective(&grid);
+    // Compressed planar: the exact Hessian (with its rotation shift) factors.
+    const Eigen::VectorXd x = akvf::stack_uv(grid.V.leftCols<2>() * 0.99);
+    akvf::NewtonPreconditioner2D exact(objective, {}, akvf::default_newton_projection(2),
+                                       akvf::EigenvalueFilter::kExact);
+    exact.start_on_fallback();
+    Eigen::MatrixXd P;
+    direction_and_matrix(objective, x, &exact, &P);
+    CHECK(exact.last_filter() == akvf::EigenvalueFilter::kClamp);
+    CHECK(exact.last_partly_filtered());
+    CHECK(exact.exact_assemblies() == 0);
+    direction_and_matrix(objective, x, &exact, &P);
+    CHECK(exact.last_filter() == akvf::EigenvalueFilter::kExact);
+    CHECK(exact.report().find("exact Hessian at 1 of 1 tries") != std::string::npos);
+  }
   SUBCASE(
       "a distorted map: the Hessian is indefinite, so is H + 1/4 of its negative part: the clamped one is factored") {
     const akvf::DistortionObjective2D& objective = bumpy_objective;
