@@ -76,13 +76,14 @@
 // switch from AKVF's far phase included), the model's minimizer was not
 // acceptable and the exact Hessian is usually indefinite there, so the try
 // would cost a numeric factorization that fails; the fallback (with its mu) is
-// used at once instead. So it is after a switch from AKVF, whatever its last
-// step (start_on_fallback): that step tested AKVF's model, not Newton's, and
-// after AKVF's unit step the exact Hessian did not factor at MIPS's switch on
-// 4 of 4 disk meshes, nor at ARAP's on 6 of 6 (camelhead's MIPS: the switch
-// iteration's preconditioner 27 ms against 14). On the SLIM cube the default then reaches the 1e-4 band
+// used at once instead. On the SLIM cube the default then reaches the 1e-4 band
 // in 6 iterations instead of 7 after its switch (docs/design.md); on the disk
-// meshes of ../shared/meshes/tri the iterations are unchanged. Where the caller
+// meshes of ../shared/meshes/tri the iterations are unchanged. So it is after
+// a switch from AKVF, whatever its last step (start_on_fallback): that step
+// tested AKVF's model, not Newton's, and after AKVF's unit step the exact
+// Hessian did not factor at MIPS's switch on 4 of 4 disk meshes, nor at
+// ARAP's on 6 of 6 (camelhead's MIPS: the switch iteration's preconditioner
+// took 27 ms against 14 without the try). Where the caller
 // knows the Hessian to be far from positive definite (akvf-newton's switch with
 // the soft constraints still far, switching_preconditioner.h), the first
 // fallback is the clamp instead of mu = 1/16 (start_fallback_at_clamp), saving
