@@ -62,22 +62,27 @@ SwitchRule akvf_switch_rule(const MeshObjective3D& objective, const Precondition
 // do not pay before their start, and no second analysis or factor is kept.
 // Both phases give up a failed factorization reuse after one CG iteration
 // (factored_preconditioner.h, reuse_check_from); the AKVF phase reuses its
-// factor rounded to single precision (reuse_in_single_precision), and only
-// a factor that took at least kReuseMinFlopsPerEntry flops per entry.
+// factor rounded to single precision (reuse_in_single_precision), for at
+// most the CG iterations a factorization costs (reuse_cg_flops_per_entry).
 //
-// The flops per entry: CHOLMOD's own switch between a simplicial and a
-// supernodal factorization (its supernodal_switch, 40). Below it the factor
-// is so sparse that factoring costs a few solves (camel_b, cow_b, tricera_b,
-// hilbert_b: 2.9-4.3 solves; camelhead and horse_b, at 175 and 86 flops per
-// entry, 14 and 7), while a reuse in single precision costs a pass over the
-// factor and, per CG iteration, a solve and a product with K, so it rarely
-// pays there: hilbert_b's symmetric Dirichlet run takes the same 15
-// iterations 8 % sooner without it
-// (docs/notes/2026-11-29-first-assembly-and-reuse.md).
+// What a CG iteration costs: a solve with the single-precision factor, a
+// product with K, the projections and vector updates, about 1.5 solves
+// (horse_b: 0.67, 0.33 and about 0.2 ms against a 0.80 ms solve;
+// `akvf_benchmarks` Solve/single, SymmetricProduct, Solve). A factorization
+// costs a solve per 11-13 of its flops per entry (camelhead at 175 flops
+// per entry 14 solves, horse_b at 86 7-8: NumericFactorization). So a CG
+// iteration costs about 20 flops per entry: horse_b's reuses get 4
+// iterations, camelhead's the 8 of reuse_max_cg, and a factor below 40
+// flops per entry (CHOLMOD's own supernodal switch) none (camel_b, cow_b,
+// tricera_b, hilbert_b; hilbert_b's symmetric Dirichlet run took the same
+// 15 iterations 8 % sooner without its reuses:
+// docs/notes/2026-11-29-first-assembly-and-reuse.md). The far phase's
+// steps move the map by much of its flip-free bound, and its reuses took
+// 5-6 CG iterations on horse_b, more than the factorization they saved.
 // The Newton phase keeps its reuses: the seam rounds start in it, and their
 // globally injective end took other paths without them (cow_bunny_calf's
 // optimizer time 1.86 -> 4.97 s; docs/notes/2026-11-28-divergence-weight.md).
-constexpr double kReuseMinFlopsPerEntry = 40;
+constexpr double kReuseCgFlopsPerEntry = 20;
 
 template <int D, class Akvf, class Settings>
 std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objective, const Settings& settings) {
@@ -86,7 +91,7 @@ std::unique_ptr<Preconditioner> akvf_then_newton(const MeshObjective<D>& objecti
   const EigenvalueFilter filter = settings.newton_phase_filter;
   auto akvf_options = far_phase(settings.akvf);
   akvf_options.factor.reuse_check_from = 1;
-  akvf_options.factor.reuse_min_flops_per_entry = kReuseMinFlopsPerEntry;
+  akvf_options.factor.reuse_cg_flops_per_entry = kReuseCgFlopsPerEntry;
   // The far phase: its reuses may precondition in single precision.
   akvf_options.factor.reuse_in_single_precision = true;
   auto factored = [](Preconditioner& current) -> FactoredPreconditioner<D>& {

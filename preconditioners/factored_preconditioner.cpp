@@ -57,8 +57,8 @@ FactoredPreconditioner<D>::FactoredPreconditioner(const Eigen::MatrixXi& element
   if (options_.cg_max_iterations < 1) throw OptionsError("CG needs at least one iteration");
   if (options_.reuse_max_cg < 1) throw OptionsError("factorization reuse needs at least one CG iteration");
   if (options_.reuse_check_from < 1) throw OptionsError("a reuse attempt can be checked from CG iteration 1 on");
-  if (!(options_.reuse_min_flops_per_entry >= 0))
-    throw OptionsError("the least flops per factor entry for a reuse must be >= 0");
+  if (!(options_.reuse_cg_flops_per_entry >= 0))
+    throw OptionsError("the flops per factor entry of a reuse CG iteration must be >= 0");
   if (!(options_.auto_factor_bytes >= 0)) throw OptionsError("the automatic solver choice's factor limit must be >= 0");
   // Nothing to choose without multigrid, or with the Jacobi CG solve.
   if (options_.linear_solver == LinearSolver::kAuto && (!AlgebraicMultigrid::available() || options_.cg_tolerance > 0))
@@ -173,8 +173,11 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
 }
 
 template <int D>
-bool FactoredPreconditioner<D>::reuse_may_pay() const {
-  return cholesky_.factor_flops() >= options_.reuse_min_flops_per_entry * cholesky_.factor_nonzeros();
+int FactoredPreconditioner<D>::reuse_budget() const {
+  if (options_.reuse_cg_flops_per_entry <= 0) return options_.reuse_max_cg;
+  const double iterations =
+      cholesky_.factor_flops() / (options_.reuse_cg_flops_per_entry * cholesky_.factor_nonzeros());
+  return static_cast<int>(std::min<double>(options_.reuse_max_cg, std::floor(iterations)));
 }
 
 template <int D>
@@ -280,7 +283,7 @@ template <int D>
 bool FactoredPreconditioner<D>::solve_with_previous_factor(const Eigen::VectorXd& g, Eigen::VectorXd* d) {
   if (options_.reuse_in_single_precision) cholesky_.round_factor_to_single();
   const auto inverse = [this](const Eigen::VectorXd& r, Eigen::VectorXd* z) { cholesky_.solve(r, z); };
-  return projected_cg(g, factored_null_basis_, inverse, options_.reuse_tolerance, options_.reuse_max_cg,
+  return projected_cg(g, factored_null_basis_, inverse, options_.reuse_tolerance, reuse_budget(),
                       options_.reuse_check_from, d)
       .converged;
 }

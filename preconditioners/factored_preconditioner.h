@@ -39,10 +39,11 @@
 // when ||P d - g|| <= tau ||g|| within max_cg iterations (a CG iterate is
 // always a descent direction: g^T d = d^T P d > 0), else factor and skip
 // further attempts for 1, 2, 4, ... iterations after consecutive failures.
-// With reuse_min_flops_per_entry, a factor that took fewer flops per entry
-// to compute is never reused (factoring anew costs a few solves there;
-// akvf-newton's AKVF phase sets CHOLMOD's supernodal switch, 40:
-// catalog.cpp).
+// With reuse_cg_flops_per_entry, the cost of one CG iteration in flops per
+// entry of the factor, a reuse gets at most the iterations its factor's
+// flops per entry pay for (floor(flops per entry / that), at most max_cg):
+// past them it costs more than factoring anew. Below two none is tried: the
+// first also pays for preparing the factor (catalog.cpp).
 // An attempt is abandoned as soon as its mean residual contraction, continued
 // to max_cg, would miss tau by more than 3x (that saves most of the cost of
 // a failed attempt; on horse_b it turns 1.05 s into 1.0 s), checked from CG
@@ -119,9 +120,10 @@ struct FactorOptions {
   double reuse_tolerance = 0;        // tau; 0 factors at every update
   int reuse_max_cg = 8;
   int reuse_check_from = 2;  // the first CG iteration at which a reuse may be abandoned (module comment)
-  // Reuse only a factor that took at least this many flops per entry to
-  // compute (module comment); 0: any.
-  double reuse_min_flops_per_entry = 0;
+  // > 0: one reuse CG iteration costs about this many flops per entry of
+  // the factor, and a reuse gets at most the CG iterations a factorization
+  // costs (module comment); 0: reuse_max_cg, whatever the factor.
+  double reuse_cg_flops_per_entry = 0;
   // Reuse with the earlier factor rounded to single precision (module comment).
   bool reuse_in_single_precision = false;
   // > 0: never factor; solve (P + shift) d = g by Jacobi-preconditioned
@@ -175,6 +177,9 @@ class FactoredPreconditioner : public Preconditioner {
   // successor's take_over_factorization.
   Matrix hand_over_matrix() { return Matrix::taking_storage_of(&matrix_); }
   PreconditionerStatistics statistics() const final { return statistics_; }
+  // The CG iterations a reuse of the last factor may take: reuse_max_cg, or
+  // fewer by FactorOptions::reuse_cg_flops_per_entry (module comment).
+  int reuse_budget() const;
 
  protected:
   //   elements  #E by D + 1 (faces or tets)
@@ -224,8 +229,8 @@ class FactoredPreconditioner : public Preconditioner {
   bool fixed_system() const { return is_constant() && !options_.contact_curvature; }
   // Adds the Tikhonov shift and the extra diagonal to the assembled P.
   void add_shift();
-  // The factor's flops per entry reach reuse_min_flops_per_entry (FactorOptions).
-  bool reuse_may_pay() const;
+  // Whether the reuse budget is enough to try one (module comment).
+  bool reuse_may_pay() const { return reuse_budget() >= 2; }
   // Factors the assembled matrix; when it is not positive definite, raises
   // the shift (module comment) and retries.
   void factorize_current();

@@ -310,28 +310,53 @@ TEST_CASE("with factorization reuse the direction solves K(x) d = g to the toler
   CHECK((akvf::rigid_motion_basis_2d(x2).transpose() * d).norm() <= 1e-10 * d.norm());
 }
 
-TEST_CASE("a factor that took fewer flops per entry than reuse_min_flops_per_entry is not reused") {
+TEST_CASE("a reuse takes at most the CG iterations its factor's flops per entry pay for") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(8, 8);
   const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
   const Eigen::VectorXd x1 = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 4) * 0.9);
   const Eigen::VectorXd x2 = x1 + 1e-3 * akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 5));
-  for (const bool sparse_factor_reused : {true, false}) {
-    CAPTURE(sparse_factor_reused);
+  const auto run = [&](double cg_flops_per_entry, double tolerance, int max_cg) {
     akvf::AkvfOptions2D options;
-    options.factor.reuse_tolerance = 0.01;
-    // This small disk's factor takes far fewer than 1e6 flops per entry.
-    options.factor.reuse_min_flops_per_entry = sparse_factor_reused ? 0 : 1e6;
-    akvf::AkvfPreconditioner2D preconditioner(objective, options);
+    options.factor.reuse_tolerance = tolerance;
+    options.factor.reuse_max_cg = max_cg;
+    options.factor.reuse_cg_flops_per_entry = cg_flops_per_entry;
+    auto preconditioner = std::make_unique<akvf::AkvfPreconditioner2D>(objective, options);
     Eigen::VectorXd g, d;
-    direction_after(objective, x1, x2, &preconditioner, &g, &d);
-    CHECK(preconditioner.statistics().factorizations == (sparse_factor_reused ? 1 : 2));
-    CHECK(preconditioner.statistics().reused_solves == (sparse_factor_reused ? 1 : 0));
-    CHECK((preconditioner.statistics().cg_iterations > 0) == sparse_factor_reused);  // no reuse attempted
+    direction_after(objective, x1, x2, preconditioner.get(), &g, &d);
     const Eigen::MatrixXd K = dense_killing(objective.elements(), x2, objective.rest().area, true);
-    CHECK((K * d - g).norm() <= (sparse_factor_reused ? 0.011 : 1e-8) * g.norm());
+    CHECK((K * d - g).norm() <= std::max(1.1 * tolerance, 1e-8) * g.norm());
+    return preconditioner;
+  };
+  // Without a cost: reuse_max_cg; one iteration costing a flop per entry:
+  // the factor's flops per entry (this small disk's are far below 1e6).
+  CHECK(run(0, 0.01, 8)->reuse_budget() == 8);
+  const int flops_per_entry = run(1, 0.01, 1 << 30)->reuse_budget();
+  REQUIRE(flops_per_entry >= 8);
+  REQUIRE(flops_per_entry < 1e6);
+  SUBCASE("a budget below two CG iterations: no reuse is tried") {
+    const auto skipped = run(1e6, 0.01, 8);
+    CHECK(skipped->reuse_budget() == 0);
+    CHECK(skipped->statistics().factorizations == 2);
+    CHECK(skipped->statistics().cg_iterations == 0);
+  }
+  SUBCASE("a reuse that needs more than the budget stops there and factors") {
+    // A budget of two; a tolerance two CG iterations do not reach.
+    const auto capped = run(flops_per_entry / 2.5, 1e-12, 8);
+    CHECK(capped->reuse_budget() == 2);
+    CHECK(capped->statistics().factorizations == 2);
+    CHECK(capped->statistics().reused_solves == 0);
+    CHECK(capped->statistics().cg_iterations >= 1);
+    CHECK(capped->statistics().cg_iterations <= 2);
+    // The same tolerance with reuse_max_cg's eight: more iterations tried.
+    CHECK(run(0, 1e-12, 8)->statistics().cg_iterations > 2);
+  }
+  SUBCASE("within the budget the reuse serves") {
+    const auto reused = run(flops_per_entry / 8.5, 0.01, 8);
+    CHECK(reused->reuse_budget() == 8);
+    CHECK(reused->statistics().reused_solves == 1);
   }
   akvf::FactorOptions invalid;
-  invalid.reuse_min_flops_per_entry = -1;
+  invalid.reuse_cg_flops_per_entry = -1;
   CHECK_THROWS_AS(ReweightedLaplacian(objective, invalid), akvf::OptionsError);
 }
 
