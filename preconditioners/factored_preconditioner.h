@@ -229,8 +229,9 @@ class FactoredPreconditioner : public Preconditioner {
   bool fixed_system() const { return is_constant() && !options_.contact_curvature; }
   // Adds the Tikhonov shift and the extra diagonal to the assembled P.
   void add_shift();
-  // Whether the reuse budget is enough to try one (module comment).
-  bool reuse_may_pay() const { return reuse_budget() >= 2; }
+  // Whether a reuse is tried: always without a cost per CG iteration, else
+  // when its budget holds two iterations (module comment).
+  bool reuse_may_pay() const { return options_.reuse_cg_flops_per_entry <= 0 || reuse_budget() >= 2; }
   // Factors the assembled matrix; when it is not positive definite, raises
   // the shift (module comment) and retries.
   void factorize_current();

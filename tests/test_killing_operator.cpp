@@ -330,6 +330,8 @@ TEST_CASE("a reuse takes at most the CG iterations its factor's flops per entry 
   // Without a cost: reuse_max_cg; one iteration costing a flop per entry:
   // the factor's flops per entry (this small disk's are far below 1e6).
   CHECK(run(0, 0.01, 8)->reuse_budget() == 8);
+  // Without a cost even a one-iteration budget is tried.
+  CHECK(run(0, 0.01, 1)->statistics().cg_iterations == 1);
   const int flops_per_entry = run(1, 0.01, 1 << 30)->reuse_budget();
   REQUIRE(flops_per_entry >= 8);
   REQUIRE(flops_per_entry < 1e6);
