@@ -33,6 +33,13 @@ struct OptimizerOptions {
   // start from y. If E(y) > E(x_k) the step starts from x_k instead, so the
   // energy never increases.
   double acceleration_eta = 0;
+  // Called after each step whose length the flip-free bound set (the line
+  // search's first trial, cut by the bound, accepted), with the new iterate
+  // and its gradient: it may move x to a point of no higher energy with no
+  // inverted element (the optimizer checks) and returns whether it did.
+  // Empty: none. The parameterization's local Newton sweeps
+  // (ParameterizeOptions::local_sweep) are one.
+  std::function<bool(const Eigen::VectorXd& gradient, Eigen::VectorXd* x)> after_bound_set_step;
 
   // True if every option is in range; otherwise *error says which is not.
   bool is_valid(std::string* error) const;

@@ -47,6 +47,7 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.preconditioner_settings.newton_phase = c.preconditioner_settings.newton;
   c.preconditioner_settings.newton_phase.reuse_tolerance = o.newton_reuse.value_or(o.akvf_reuse);
   c.line_search_settings.rho = o.ls_rho;
+  c.local_sweep = o.local_sweep;
   set_eigen_filters(o.eigen_filter, &c.preconditioner_settings);
   c.init_from_file = o.init == InitialMap::kFile;
   c.init = o.init == InitialMap::kCotan ? TutteWeights::kCotangent : TutteWeights::kUniform;

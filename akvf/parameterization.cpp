@@ -19,6 +19,7 @@
 #include "framework/mesh/vertex_graph.h"
 #include "framework/optimization/element_matrix.h"
 #include "framework/optimization/injective_objective.h"
+#include "framework/optimization/local_newton_sweep.h"
 #include "framework/optimization/uniform_scale.h"
 #include "framework/process/interrupt.h"
 #include "preconditioners/contact_preconditioner.h"
@@ -337,6 +338,22 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
     preconditioner = std::make_unique<ContactPreconditioner>(std::move(preconditioner), setup.boundary_contact);
   auto line_search = line_searches().create(
       config.line_search, line_search_settings(config.line_search_settings, optimizer.acceleration_eta));
+  // The sweeps see the distortion only: with the boundary barrier they move
+  // the interior vertices, which the barrier does not involve (and a map
+  // without inverted triangles whose boundary does not cross itself is
+  // injective, so they keep it so).
+  std::optional<LocalNewtonSweep<2>> sweep;
+  if (config.local_sweep > 0) {
+    std::vector<int> boundary;
+    if (injective)
+      for (const std::vector<int>& loop : setup.disk.boundary_loops)
+        boundary.insert(boundary.end(), loop.begin(), loop.end());
+    sweep.emplace(*setup.objective, boundary);
+    optimizer.after_bound_set_step = [&](const Eigen::VectorXd& gradient, Eigen::VectorXd* x) {
+      if (preconditioner->has_element_curvature()) return false;
+      return sweep->sweep(gradient, config.local_sweep, x) > 0;
+    };
+  }
   run.preconditioner_name = preconditioner->name();
   run.result = minimize(objective, *preconditioner, *line_search, setup.x0, optimizer, callbacks);
   run.preconditioner_report = preconditioner->report();

@@ -38,6 +38,8 @@ struct ParameterizeOptions {
   std::optional<double> newton_reuse;              // projected Newton's reuse tolerance; none ("auto"): 0 for
                                                    // newton, akvf_reuse for the Newton phase of akvf-newton
   double ls_rho = 0.5;                             // backtracking shrink factor in (0, 1)
+  double local_sweep = 0;                          // > 0: local Newton sweeps after bound-set steps (the
+                                                   // vertices whose |g_v|^2 passes it times the mean); 0 = off
   InitialMap init = InitialMap::kTutte;            // kFile is the command line's (the API takes
                                                    // Parameterizer::solve(uv0))
   Cut cut = Cut::kNone;                            // kAuto: cut closed / multi-boundary / higher-genus /

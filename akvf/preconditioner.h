@@ -41,6 +41,11 @@ class Preconditioner {
   // A line for reports on the work done so far ("12 factorizations"), or "".
   virtual std::string report() const { return ""; }
   virtual PreconditionerStatistics statistics() const { return {}; }
+  // Whether P carries each element's own curvature (the energy's projected
+  // Hessian, as Newton's), so that its step already takes what a local
+  // Newton step of one vertex would add (ParameterizeOptions::local_sweep
+  // skips the sweep after it).
+  virtual bool has_element_curvature() const { return false; }
 };
 
 }  // namespace akvf

@@ -28,6 +28,7 @@ class ContactPreconditioner final : public Preconditioner {
   void update(const OptimizationState& state) override;
   void apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) override;
   std::string report() const override { return inner_->report(); }
+  bool has_element_curvature() const override { return inner_->has_element_curvature(); }
   PreconditionerStatistics statistics() const override { return inner_->statistics(); }
 
  private:

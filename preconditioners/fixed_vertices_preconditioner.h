@@ -23,6 +23,7 @@ class FixedVerticesPreconditioner final : public Preconditioner {
     result->array() *= free_mask_.array();
   }
   std::string report() const override { return inner_->report(); }
+  bool has_element_curvature() const override { return inner_->has_element_curvature(); }
   PreconditionerStatistics statistics() const override { return inner_->statistics(); }
 
  private:

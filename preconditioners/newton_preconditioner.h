@@ -120,6 +120,7 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   NewtonPreconditioner(const MeshObjective<D>& objective, ElementMatrix<D, D + 1>&& matrix, FactorOptions options,
                        MotionProjection projection, EigenvalueFilter filter);
   std::string name() const override { return "newton"; }
+  bool has_element_curvature() const override { return true; }
   // The filter the last assembly used (kClamp, kAbsolute or kExact), and
   // how many assemblies mirrored.
   EigenvalueFilter last_filter() const { return last_filter_; }

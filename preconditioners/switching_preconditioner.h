@@ -173,6 +173,7 @@ class SwitchingPreconditioner final : public Preconditioner {
   void update(const OptimizationState& state) override;
   void apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) override;
   std::string report() const override;
+  bool has_element_curvature() const override { return current_->has_element_curvature(); }
   PreconditionerStatistics statistics() const override;
   // The iteration at which the second preconditioner first took over, or 0.
   int switch_iteration() const { return switches_.empty() ? 0 : switches_.front(); }

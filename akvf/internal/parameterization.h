@@ -58,6 +58,12 @@ struct ParamConfig {
   // AQP's momentum (OptimizerOptions::acceleration_eta): "auto" turns it on
   // for the laplacian preconditioner only, as AQP pairs them.
   Acceleration acceleration = Acceleration::kAuto;
+  // > 0: after each step the flip-free bound set (of a preconditioner
+  // without the elements' own curvature), one local Newton sweep
+  // (framework/optimization/local_newton_sweep.h) over the vertices whose
+  // squared gradient passes this many times the mean; with global
+  // injectivity the interior ones only.
+  double local_sweep = 0;
   OptimizerOptions optimizer;
   // Iteration limit of the warm start of energies that are infinite at the
   // initial map (symmetric Dirichlet with AKVF to gradient 1e-3 first).

@@ -39,6 +39,7 @@
 //
 // Usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim[,cgal]] [--energy NAME] [--repeat N]
 //                   [--min-faces N] [--refine-to N] [--only 2d|3d]
+// A method M+sweep=X is M with local Newton sweeps (--local-sweep X), 2D only.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -214,6 +215,18 @@ std::string method_name(const std::string& method, const std::string& default_na
   return method == "default" ? default_name : method;
 }
 
+// "METHOD+sweep=X": METHOD with local Newton sweeps (--local-sweep X).
+struct MethodVariant {
+  std::string method;
+  double local_sweep = 0;
+};
+MethodVariant method_variant(const std::string& spec) {
+  const std::string marker = "+sweep=";
+  const std::size_t at = spec.find(marker);
+  if (at == std::string::npos) return {spec, 0};
+  return {spec.substr(0, at), std::stod(spec.substr(at + marker.size()))};
+}
+
 #ifdef AKVF_SPEED_WITH_CGAL
 // CGAL's ARAP parameterizer on the mesh the ARAP runs optimize (cut, scaled
 // to unit area), its map scored by our ARAP energy; lowers `lowest` when its
@@ -312,7 +325,9 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
       for (std::size_t m = 0; m < ours.size(); ++m) {
         akvf::ParameterizeOptions options;
         options.energy = energy;
-        options.preconditioner = method_name(ours[m], options.preconditioner);
+        const MethodVariant variant = method_variant(ours[m]);
+        options.preconditioner = method_name(variant.method, options.preconditioner);
+        options.local_sweep = variant.local_sweep;
         // The flip-free problem the peers (TinyAD, libigl's SLIM) solve; the
         // cost of global injectivity is measured in docs/design.md.
         options.injectivity = akvf::Injectivity::kLocal;
@@ -320,7 +335,9 @@ void run_2d(const std::filesystem::path& data, const std::vector<std::string>& m
         options.grad_tol = 1e-3 * tolerance;
         const akvf::ParameterizeResult result = akvf::parameterize(mesh.V, mesh.F, options);
         const std::string name =
-            ours[m] == "default" ? "default (" + akvf::ParameterizeOptions{}.preconditioner + ")" : ours[m];
+            variant.method == "default"
+                ? "default (" + akvf::ParameterizeOptions{}.preconditioner + ")" + ours[m].substr(variant.method.size())
+                : ours[m];
         stops[m] = own_stop(name, result, tolerance);
         run_seconds[m].push_back(stops[m].seconds);
         for (const auto& row : result.trace)
@@ -478,7 +495,8 @@ int main(int argc, char** argv) {
                    "                 the surface unchanged) until they have N, before --min-faces (default 0)\n"
                    "  --repeat N     N runs of each method, taken in turn, and their median time (default 1)\n"
                    "  cgal           CGAL's ARAP parameterizer, 2D with --energy arap only; in the default list\n"
-                   "                 then, where this build found CGAL\n";
+                   "                 then, where this build found CGAL\n"
+                   "  M+sweep=X      method M with local Newton sweeps (akvf param --local-sweep X), 2D only\n";
       return arg == "--help" || arg == "-h" ? 0 : 2;
     }
   }
@@ -509,9 +527,9 @@ int main(int argc, char** argv) {
   }
   try {
     if (only != "3d") run_2d(data, methods, energy, repeat, min_faces, refine_to);
-    std::vector<std::string> methods_3d;  // CGAL's peer is 2D only
+    std::vector<std::string> methods_3d;  // CGAL's peer and the sweeps are 2D only
     std::copy_if(methods.begin(), methods.end(), std::back_inserter(methods_3d),
-                 [](const std::string& m) { return m != "cgal"; });
+                 [](const std::string& m) { return m != "cgal" && method_variant(m).local_sweep == 0; });
     if (only != "2d") run_3d(data, methods_3d, repeat);
   } catch (const akvf::Error& e) {
     std::cerr << "akvf_speed: " << e.what() << '\n';

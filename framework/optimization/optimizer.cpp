@@ -164,10 +164,15 @@ OptimizerResult minimize(const Objective& objective, Preconditioner& preconditio
                     "line search failed at iteration " + std::to_string(k) + ": " + search.message);
     backtracked = search.step < search.initial_step;
     Eigen::VectorXd next = accepted_point(start_x, direction, search);
+    bool moved_after = false;
+    if (options.after_bound_set_step && search.bound_cut_initial_step && !backtracked) {
+      if (search.gradient.size() != next.size()) search.energy = objective.value_and_gradient(next, &search.gradient);
+      moved_after = options.after_bound_set_step(search.gradient, &next);
+    }
     previous.swap(x);
     x.swap(next);
     const double previous_energy = energy;
-    if (search.gradient.size() == x.size()) {
+    if (search.gradient.size() == x.size() && !moved_after) {
       energy = search.energy;
       gradient.swap(search.gradient);
     } else {
