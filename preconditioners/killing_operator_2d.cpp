@@ -2,7 +2,7 @@
 
 #include <Eigen/LU>
 
-#include "preconditioners/element_derivatives.h"
+#include "framework/optimization/element_derivatives.h"
 
 namespace akvf {
 

@@ -3,7 +3,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/QR>
 
-#include "preconditioners/element_derivatives.h"
+#include "framework/optimization/element_derivatives.h"
 
 namespace akvf {
 

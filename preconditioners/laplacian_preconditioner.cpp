@@ -1,6 +1,6 @@
 #include "preconditioners/laplacian_preconditioner.h"
 
-#include "preconditioners/element_derivatives.h"
+#include "framework/optimization/element_derivatives.h"
 
 namespace akvf {
 

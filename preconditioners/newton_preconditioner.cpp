@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "preconditioners/element_derivatives.h"
+#include "framework/optimization/element_derivatives.h"
 
 namespace akvf {
 

@@ -2,7 +2,7 @@
 // Projected Newton: P(x) = sum_e w_e G_e^T [d^2 D / dvec(J)^2]_+ G_e, the
 // energy's Hessian with every element block projected to PSD (the density's
 // projected_hessian), where G_e maps the element's corner positions to
-// vec(J_e) (element_derivatives.h). The baseline of TinyAD-style
+// vec(J_e) (framework/optimization/element_derivatives.h). The baseline of TinyAD-style
 // second-order solvers; shift, projection and factorization reuse as in
 // factored_preconditioner.h. In 3D deformation the constraint term's Hessian
 // comes in through FactorOptions::extra_diagonal.

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "akvf/error.h"
-#include "preconditioners/element_derivatives.h"
+#include "framework/optimization/element_derivatives.h"
 
 namespace akvf {
 

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <limits>
 
+#include "framework/optimization/element_derivatives.h"
+
 namespace akvf {
 
 namespace {
@@ -72,18 +74,16 @@ bool LocalNewtonSweep<D>::move_vertex(int v, Eigen::VectorXd* x) const {
   const auto& rest = objective_.rest();
   const int first = incidence_start_[v], last = incidence_start_[v + 1];
 
-  // E_v, its gradient and projected Hessian in v's position. With
-  // grad phi_a the rest gradient of corner a's hat function, J changes by
-  // dy grad phi_a^T when v moves by dy.
+  // E_v, its gradient and projected Hessian in v's position. With h the
+  // rest gradient of v's hat function on element e, J_e changes by dy h^T
+  // when v moves by dy.
+  auto hat = [&](int p) { return hat_gradients<D>(rest.Dm_inv[incidence_[p] / (D + 1)])[incidence_[p] % (D + 1)]; };
   double energy = 0;
   Vector gradient = Vector::Zero();
   Matrix hessian = Matrix::Zero();
-  std::vector<Vector> hat(last - first);
   for (int p = first; p < last; ++p) {
-    const int e = incidence_[p] / (D + 1), a = incidence_[p] % (D + 1);
-    const Matrix& Dm_inv = rest.Dm_inv[e];
-    const Vector h = a == 0 ? Vector(-Dm_inv.colwise().sum().transpose()) : Vector(Dm_inv.row(a - 1).transpose());
-    hat[p - first] = h;
+    const int e = incidence_[p] / (D + 1);
+    const Vector h = hat(p);
     const Matrix J = objective_.jacobian(*x, e);
     Matrix dJ;
     energy += weights[e] * density.value_and_gradient(J, &dJ);
@@ -103,9 +103,7 @@ bool LocalNewtonSweep<D>::move_vertex(int v, Eigen::VectorXd* x) const {
   // det J_e is linear along the step: det(J + t step h^T) = det J (1 + t h^T J^-1 step).
   double bound = std::numeric_limits<double>::infinity();
   for (int p = first; p < last; ++p) {
-    const int e = incidence_[p] / (D + 1);
-    const Matrix J = objective_.jacobian(*x, e);
-    const double rate = hat[p - first].dot(J.inverse() * step);
+    const double rate = hat(p).dot(objective_.jacobian(*x, incidence_[p] / (D + 1)).inverse() * step);
     if (rate < 0) bound = std::min(bound, -1 / rate);
   }
   // A step the bound would cut has its model's minimizer past a collapse:

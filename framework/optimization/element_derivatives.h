@@ -1,7 +1,8 @@
 #pragma once
 // Derivatives of an element's Jacobian J = Ds Dm^-1 (§3) with respect to its
 // corner positions, shared by the preconditioners that assemble
-// G^T (something) G per element (projected Newton, SLIM, Laplacian).
+// G^T (something) G per element (projected Newton, SLIM, Laplacian) and by
+// the local Newton sweeps (local_newton_sweep.h).
 #include <Eigen/Core>
 #include <array>
 
