@@ -248,11 +248,12 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                      &O::newton_reuse, "in [0, 1)", [](double t) { return t >= 0 && t < 1; }));
     f.push_back(number_field<O>("ls_rho", "ls-rho", "X", "backtracking shrink factor (the paper's text says 0.9)",
                                 &O::ls_rho, "in (0, 1)", [](double r) { return r > 0 && r < 1; }));
-    f.push_back(number_field<O>("local_sweep", "local-sweep", "X",
-                                "after each AKVF step the flip-free bound set, move each vertex whose squared "
-                                "gradient is above X times the mean by its own projected Newton step, the others held "
-                                "(interior vertices only with --injectivity global; 0 = off)",
-                                &O::local_sweep, ">= 0", [](double x) { return x >= 0; }));
+    f.push_back(auto_number_field<O>("local_sweep", "local-sweep", "X",
+                                     "after each AKVF step the flip-free bound set, move each vertex whose squared "
+                                     "gradient is above X times the mean by its own projected Newton step, the others "
+                                     "held (interior vertices only with --injectivity global; 0 = off); auto: 4 for "
+                                     "akvf-newton, 0 for the others",
+                                     &O::local_sweep, ">= 0", [](double x) { return x >= 0; }));
     f.push_back(recomputes_start(
         choice_field<O>("init", "init", "initialization",
                         "initial map: tutte (uniform weights), cotan, or file (the mesh file's texture "

@@ -38,8 +38,9 @@ struct ParameterizeOptions {
   std::optional<double> newton_reuse;              // projected Newton's reuse tolerance; none ("auto"): 0 for
                                                    // newton, akvf_reuse for the Newton phase of akvf-newton
   double ls_rho = 0.5;                             // backtracking shrink factor in (0, 1)
-  double local_sweep = 0;                          // > 0: local Newton sweeps after bound-set steps (the
-                                                   // vertices whose |g_v|^2 passes it times the mean); 0 = off
+  std::optional<double> local_sweep;               // > 0: local Newton sweeps after bound-set steps (the
+                                                   // vertices whose |g_v|^2 passes it times the mean); 0 = off;
+                                                   // none ("auto"): 4 for akvf-newton, off for the others
   InitialMap init = InitialMap::kTutte;            // kFile is the command line's (the API takes
                                                    // Parameterizer::solve(uv0))
   Cut cut = Cut::kNone;                            // kAuto: cut closed / multi-boundary / higher-genus /

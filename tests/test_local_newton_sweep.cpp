@@ -7,6 +7,7 @@
 
 #include <tbb/task_arena.h>
 
+#include "akvf/internal/options.h"
 #include "akvf/internal/parameterization.h"
 #include "akvf/rest_geometry.h"
 #include "energies/arap.h"
@@ -121,6 +122,20 @@ TEST_CASE("local_sweep runs the sweeps after bound-set steps, with local injecti
   CHECK(injective.result.status == akvf::TerminationStatus::kConverged);
   CHECK(injective.boundary_crossings == 0);
   for (const akvf::IterationSummary& row : injective.result.trace) CHECK(row.flips == 0);
+}
+
+TEST_CASE("local_sweep auto sweeps with the default method only, a number with any method") {
+  akvf::ParameterizeOptions options;
+  CHECK(akvf::param_config(options).local_sweep == 4);
+  for (const char* published : {"akvf", "newton", "slim", "laplacian", "identity"}) {
+    options.preconditioner = published;
+    CHECK(akvf::param_config(options).local_sweep == 0);
+  }
+  options.local_sweep = 2;
+  CHECK(akvf::param_config(options).local_sweep == 2);
+  options.preconditioner = "akvf-newton";
+  options.local_sweep = 0;
+  CHECK(akvf::param_config(options).local_sweep == 0);
 }
 
 TEST_CASE("a local Newton sweep leaves its fixed vertices where they are") {

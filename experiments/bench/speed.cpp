@@ -39,7 +39,7 @@
 //
 // Usage: akvf_speed [--data DIR] [--methods default,akvf,newton,slim[,cgal]] [--energy NAME] [--repeat N]
 //                   [--min-faces N] [--refine-to N] [--only 2d|3d]
-// A method M+sweep=X is M with local Newton sweeps (--local-sweep X), 2D only.
+// A method M+sweep=X is M with --local-sweep X (0: none), 2D only.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -49,6 +49,7 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -215,15 +216,16 @@ std::string method_name(const std::string& method, const std::string& default_na
   return method == "default" ? default_name : method;
 }
 
-// "METHOD+sweep=X": METHOD with local Newton sweeps (--local-sweep X).
+// "METHOD+sweep=X": METHOD with --local-sweep X (0: none); plain METHOD
+// takes the option's default.
 struct MethodVariant {
   std::string method;
-  double local_sweep = 0;
+  std::optional<double> local_sweep;
 };
 MethodVariant method_variant(const std::string& spec) {
   const std::string marker = "+sweep=";
   const std::size_t at = spec.find(marker);
-  if (at == std::string::npos) return {spec, 0};
+  if (at == std::string::npos) return {spec, std::nullopt};
   return {spec.substr(0, at), std::stod(spec.substr(at + marker.size()))};
 }
 
@@ -496,7 +498,7 @@ int main(int argc, char** argv) {
                    "  --repeat N     N runs of each method, taken in turn, and their median time (default 1)\n"
                    "  cgal           CGAL's ARAP parameterizer, 2D with --energy arap only; in the default list\n"
                    "                 then, where this build found CGAL\n"
-                   "  M+sweep=X      method M with local Newton sweeps (akvf param --local-sweep X), 2D only\n";
+                   "  M+sweep=X      method M with akvf param --local-sweep X (0: none; plain M: auto), 2D only\n";
       return arg == "--help" || arg == "-h" ? 0 : 2;
     }
   }
@@ -529,7 +531,7 @@ int main(int argc, char** argv) {
     if (only != "3d") run_2d(data, methods, energy, repeat, min_faces, refine_to);
     std::vector<std::string> methods_3d;  // CGAL's peer and the sweeps are 2D only
     std::copy_if(methods.begin(), methods.end(), std::back_inserter(methods_3d),
-                 [](const std::string& m) { return m != "cgal" && method_variant(m).local_sweep == 0; });
+                 [](const std::string& m) { return m != "cgal" && !method_variant(m).local_sweep; });
     if (only != "2d") run_3d(data, methods_3d, repeat);
   } catch (const akvf::Error& e) {
     std::cerr << "akvf_speed: " << e.what() << '\n';
