@@ -154,9 +154,9 @@ AKVF_FOR_EACH_X86_LEVEL int loop_cholesky(int rows, int columns, double* block) 
         for (int i = j; i < rows; ++i) c[i] -= l[i] * a;
       }
       if (!(c[j] > 0)) return j;
-      const double pivot = std::sqrt(c[j]);
+      const double pivot = std::sqrt(c[j]), inverse = 1 / pivot;
       c[j] = pivot;
-      for (int i = j + 1; i < rows; ++i) c[i] /= pivot;
+      for (int i = j + 1; i < rows; ++i) c[i] *= inverse;
     }
   }
   return -1;
