@@ -141,8 +141,9 @@ void blas_update(int rows, int columns, int k, const double* L, int ld, double* 
 AKVF_FOR_EACH_X86_LEVEL int loop_cholesky(int rows, int columns, double* block) {
   // Left-looking, by panels of four columns: a panel less the earlier
   // columns' parts (one lower_product), then its own columns one by one,
-  // each less the panel's earlier ones and divided by its pivot's square
-  // root. The rows below the diagonal block go along (they are L21's rows).
+  // each less the panel's earlier ones and scaled by the inverse of its
+  // pivot's square root. The rows below the diagonal block go along (they
+  // are L21's rows).
   for (int j0 = 0; j0 < columns; j0 += 4) {
     const int width = std::min(4, columns - j0);
     lower_product<true>(rows - j0, width, j0, block + j0, rows, block + static_cast<std::size_t>(j0) * rows + j0, rows);
