@@ -307,6 +307,15 @@ def test_newton_reuse_takes_auto_or_a_number(disk):
         akvf.parameterize(V, F, newton_reuse=2.0)
 
 
+def test_local_sweep_takes_auto_or_a_number(disk):
+    V, F = disk
+    default = akvf.parameterize(V, F)
+    assert np.array_equal(akvf.parameterize(V, F, local_sweep="auto").uv, default.uv)
+    assert akvf.parameterize(V, F, local_sweep=0).status == "converged"
+    with pytest.raises(akvf.OptionsError, match=r"local_sweep must be auto or >= 0, found -1"):
+        akvf.parameterize(V, F, local_sweep=-1)
+
+
 def test_linear_solver_amg_reaches_the_cholesky_energy(disk):
     V, F = disk
     cholmod = akvf.parameterize(V, F, linear_solver="cholmod", grad_tol=1e-6)
