@@ -230,7 +230,7 @@ PreconditionerRegistry2D& mutable_preconditioners_2d() {
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {
             return akvf_then_newton<2, AkvfPreconditioner2D>(objective, settings);
           },
-          {kTakesContactCurvature});
+          {kSweepsByDefault, kTakesContactCurvature});
     r.add("laplacian",
           "AQP proxy: cotangent Laplacian of the 3D mesh per coordinate, factored once; AQP momentum by default",
           [](const MeshObjective2D& objective, const PreconditionerSettings2D& settings) {

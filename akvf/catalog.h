@@ -49,6 +49,10 @@ void require_method(const std::string& name);
 // default (the Laplacian, as AQP pairs them).
 inline constexpr const char* kMomentumByDefault = "momentum-by-default";
 
+// The registry tag of 2D preconditioners that local Newton sweeps follow by
+// default (--local-sweep auto; the default method, akvf-newton).
+inline constexpr const char* kSweepsByDefault = "sweeps-by-default";
+
 // OptimizerOptions::acceleration_eta for an acceleration mode: kAuto turns
 // AQP's momentum (eta = 100) on for preconditioners tagged
 // kMomentumByDefault, kOn and kOff force it.
