@@ -1,13 +1,22 @@
 #include "preconditioners/contact_curvature.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 
 namespace akvf {
 
+namespace {
+// H with its negative eigenvalues clamped to 0.
+Eigen::Matrix<double, 6, 6> projected(const Eigen::Matrix<double, 6, 6>& H) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(H);
+  return eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
+}
+}  // namespace
+
 ContactCurvature::ContactCurvature(std::shared_ptr<const BoundaryContact> contact, int num_vertices)
     : contact_(std::move(contact)), num_vertices_(num_vertices), matrix_(2 * num_vertices, 2 * num_vertices) {}
 
-const Eigen::SparseMatrix<double>& ContactCurvature::at(const Eigen::VectorXd& x) {
+const Eigen::SparseMatrix<double>& ContactCurvature::at(const Eigen::VectorXd& x, ContactModel model) {
   const std::vector<BoundaryContact::ActiveTerm> terms = contact_->active_terms(x);
   const auto n = static_cast<std::uint64_t>(num_vertices_);
   bool grown = false;
@@ -33,16 +42,22 @@ const Eigen::SparseMatrix<double>& ContactCurvature::at(const Eigen::VectorXd& x
       for (int c = 0; c < 2; ++c)
         if (i != j || r <= c) entries.emplace_back(2 * i + r, 2 * j + c, 0.0);
   }
-  for (const BoundaryContact::ActiveTerm& term : terms)
+  for (const BoundaryContact::ActiveTerm& term : terms) {
+    const bool whole = model == ContactModel::kProjectedHessian;
+    const Eigen::Matrix<double, 6, 6> hessian =
+        whole ? projected(BoundaryContact::hessian(term, x)) : Eigen::Matrix<double, 6, 6>::Zero();
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
         const int i = term.vertex[a], j = term.vertex[b];
         if (i > j) continue;
-        const Eigen::Matrix2d block = term.curvature * term.gradient[a] * term.gradient[b].transpose();
+        const Eigen::Matrix2d block =
+            whole ? Eigen::Matrix2d(hessian.block<2, 2>(2 * a, 2 * b))
+                  : Eigen::Matrix2d(term.curvature * term.gradient[a] * term.gradient[b].transpose());
         for (int r = 0; r < 2; ++r)
           for (int c = 0; c < 2; ++c)
             if (i != j || r <= c) entries.emplace_back(2 * i + r, 2 * j + c, block(r, c));
       }
+  }
   matrix_.setFromTriplets(entries.begin(), entries.end());
   return matrix_;
 }

@@ -3,7 +3,9 @@
 // preconditioner to add to P (global injectivity; boundary_contact.h):
 //   C(x) = sum_k c_k (dq_k/dx)(dq_k/dx)^T
 // over the barrier's active terms k (BoundaryContact::ActiveTerm), each
-// coupling three vertices as a triangle does. Factored with P, C costs one
+// coupling three vertices as a triangle does; or, for a preconditioner
+// that models the energy's curvature (projected Newton), each term's whole
+// Hessian projected to be positive semi-definite (ContactModel). Factored with P, C costs one
 // factorization however many terms are active, where ContactPreconditioner's
 // low-rank update costs a solve per term (and a term left out of P stalls the
 // descent: its vertices run into the barrier and the line search shortens
@@ -24,12 +26,18 @@
 
 namespace akvf {
 
+// Each active term's part of C: its Gauss-Newton curvature b'' (dq/dx)(dq/dx)^T,
+// or its whole Hessian, b'' (dq/dx)(dq/dx)^T + b' d^2q/dx^2
+// (BoundaryContact::hessian), with its negative eigenvalues clamped to 0 as
+// projected Newton does for each element.
+enum class ContactModel { kGaussNewton, kProjectedHessian };
+
 class ContactCurvature {
  public:
   ContactCurvature(std::shared_ptr<const BoundaryContact> contact, int num_vertices);
 
   // C(x): the upper triangle, 2|V| square, on the pattern of every pair so far.
-  const Eigen::SparseMatrix<double>& at(const Eigen::VectorXd& x);
+  const Eigen::SparseMatrix<double>& at(const Eigen::VectorXd& x, ContactModel model = ContactModel::kGaussNewton);
   // Grows by one each time the pattern does.
   int pattern_version() const { return version_; }
 

@@ -130,7 +130,7 @@ void FactoredPreconditioner<D>::choose_linear_solver() {
 template <int D>
 void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   if (options_.contact_curvature) {
-    contact_ = options_.contact_curvature->at(state.x);
+    contact_ = options_.contact_curvature->at(state.x, contact_model());
     system_current_ = false;
   }
   if (options_.linear_solver == LinearSolver::kAuto) choose_linear_solver();

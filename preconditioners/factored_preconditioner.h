@@ -203,6 +203,8 @@ class FactoredPreconditioner : public Preconditioner {
   // The vertices of each connected component when the mesh has several (the
   // charts of a cut mesh), else null.
   const std::vector<std::vector<int>>* component_vertices() const { return component_vertices_.get(); }
+  // How the barrier's terms enter C (FactorOptions::contact_curvature).
+  virtual ContactModel contact_model() const { return ContactModel::kGaussNewton; }
   // P's extra diagonal (FactorOptions::extra_diagonal as used).
   const Eigen::VectorXd& extra_diagonal() const { return options_.extra_diagonal; }
 

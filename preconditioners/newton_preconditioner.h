@@ -150,6 +150,8 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   static constexpr double kLeastNegativeShare = 1.0 / 16;
 
  private:
+  // The barrier's terms as the elements: each term's whole Hessian, projected.
+  ContactModel contact_model() const override { return ContactModel::kProjectedHessian; }
   using Matrix = typename FactoredPreconditioner<D>::Matrix;
   void assemble(const OptimizationState& state, Matrix* matrix) override;
   Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return motion_basis(D, projection_, x); }

@@ -4,6 +4,7 @@
 // run whose flip-free optimum overlaps itself kept free of overlap.
 #include <doctest/doctest.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -14,6 +15,7 @@
 #include "framework/mesh/uv_overlap.h"
 #include "framework/optimization/boundary_contact.h"
 #include "framework/optimization/distortion_objective.h"
+#include "preconditioners/akvf_preconditioner_2d.h"
 #include "preconditioners/contact_curvature.h"
 #include "preconditioners/contact_preconditioner.h"
 #include "preconditioners/newton_preconditioner.h"
@@ -131,17 +133,34 @@ TEST_CASE("the first contact step of a long sweep (sliced): a vertex on an edge 
   }
 }
 
-TEST_CASE("the barrier is zero far from contact and its gradient matches finite differences") {
-  // A U at rest (vertex 4 at (0.5, 0.6), its inner angle about 286
-  // degrees), mapped thinner: vertex 4 at (0.5, 0.12) is near edge 0 -> 1
-  // (y = 0), within half of its rest distance 0.6 from it, and its inner
-  // angle, about 329 degrees, is within the angle term's reach of a fold.
-  Eigen::VectorXd rest(12), x(12);
+namespace {
+
+// A U at rest (vertex 4 at (0.5, 0.6), its inner angle about 286
+// degrees), as a loop, and mapped thinner: vertex 4 at (0.5, 0.12) is near
+// edge 0 -> 1 (y = 0), within half of its rest distance 0.6 from it, and
+// its inner angle, about 329 degrees, is within the angle term's reach of
+// a fold.
+Eigen::VectorXd u_at_rest() {
+  Eigen::VectorXd rest(12);
   rest << 0, 0, 1, 0, 1, 1, 0.6, 0.9, 0.5, 0.6, 0.2, 0.8;
-  x << 0, 0, 1, 0, 1, 1, 0.6, 0.9, 0.5, 0.12, 0.2, 0.8;
+  return rest;
+}
+BoundaryContact u_loop() {
   Eigen::VectorXd rest_angle = Eigen::VectorXd::Constant(6, M_PI / 2);
   rest_angle[4] = 3 * M_PI / 2;
-  const BoundaryContact loop = loop_at_rest(rest, rest_angle);
+  return loop_at_rest(u_at_rest(), rest_angle);
+}
+Eigen::VectorXd u_thinner() {
+  Eigen::VectorXd x = u_at_rest();
+  x[9] = 0.12;
+  return x;
+}
+
+}  // namespace
+
+TEST_CASE("the barrier is zero far from contact and its gradient matches finite differences") {
+  const Eigen::VectorXd rest = u_at_rest(), x = u_thinner();
+  const BoundaryContact loop = u_loop();
   CHECK(loop.barrier(rest, nullptr) == 0);
   Eigen::VectorXd gradient = Eigen::VectorXd::Zero(12);
   const double value = loop.barrier(x, &gradient);
@@ -155,6 +174,43 @@ TEST_CASE("the barrier is zero far from contact and its gradient matches finite 
           doctest::Approx((loop.barrier(plus, nullptr) - loop.barrier(minus, nullptr)) / (2 * h)).epsilon(1e-5));
   }
   CHECK(square_loop().barrier(square(), nullptr) == 0);
+}
+
+TEST_CASE("each barrier term's Hessian: their sum matches finite differences of the barrier's gradient") {
+  // The thinner U: a vertex-edge term (vertex 4 inside edge 0 -> 1) and an
+  // angle term (at vertex 4); then vertex 4 beyond vertex 1, where its
+  // distance to edge 0 -> 1 is to that end.
+  const BoundaryContact loop = u_loop();
+  const Eigen::VectorXd inside = u_thinner();
+  Eigen::VectorXd beyond = inside;
+  beyond.segment<2>(8) << 1.15, -0.05;
+  for (const bool at_end : {false, true}) {
+    const Eigen::VectorXd& x = at_end ? beyond : inside;
+    bool angle = false, inner = false, end = false;
+    Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(12, 12);
+    for (const BoundaryContact::ActiveTerm& term : loop.active_terms(x)) {
+      angle = angle || term.angle;
+      // An edge's end shares none of dq/dx where the closest point is the other end.
+      const bool clamped = term.gradient[1].norm() == 0 || term.gradient[2].norm() == 0;
+      if (!term.angle) (clamped ? end : inner) = true;
+      const Eigen::Matrix<double, 6, 6> H = BoundaryContact::hessian(term, x);
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          sum.block<2, 2>(2 * term.vertex[a], 2 * term.vertex[b]) += H.block<2, 2>(2 * a, 2 * b);
+    }
+    CHECK((at_end ? end : angle && inner));
+    const double h = 1e-6;
+    Eigen::MatrixXd differences(12, 12);
+    for (int i = 0; i < 12; ++i) {
+      Eigen::VectorXd plus = x, minus = x, g_plus = Eigen::VectorXd::Zero(12), g_minus = Eigen::VectorXd::Zero(12);
+      plus[i] += h;
+      minus[i] -= h;
+      loop.barrier(plus, &g_plus);
+      loop.barrier(minus, &g_minus);
+      differences.col(i) = (g_plus - g_minus) / (2 * h);
+    }
+    CHECK((sum - differences).norm() <= 1e-5 * sum.norm());
+  }
 }
 
 TEST_CASE("boundary crossings and the rasterized overlap of a map that lies over itself") {
@@ -276,12 +332,30 @@ TEST_CASE("the barrier's curvature in a factored P: the sum of its terms, a patt
   CHECK(curvature.pattern_version() == version);
   CHECK((Eigen::MatrixXd(again) - upper).norm() == 0);
 
-  // Newton with C in its factor gives the direction of Newton with C added
-  // by the Woodbury identity over every term.
-  FactorOptions with_contact;
-  with_contact.contact_curvature = std::make_shared<ContactCurvature>(setup.boundary_contact, nv);
-  NewtonPreconditioner2D factored(*setup.objective, with_contact);
-  ContactPreconditioner woodbury(std::make_unique<NewtonPreconditioner2D>(*setup.objective), setup.boundary_contact,
+  // Projected Newton's C: each term's whole Hessian with its negative
+  // eigenvalues clamped, positive semi-definite.
+  Eigen::MatrixXd projected = Eigen::MatrixXd::Zero(n, n);
+  for (const BoundaryContact::ActiveTerm& term : terms) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(BoundaryContact::hessian(term, x));
+    const Eigen::Matrix<double, 6, 6> H =
+        eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        projected.block<2, 2>(2 * term.vertex[a], 2 * term.vertex[b]) += H.block<2, 2>(2 * a, 2 * b);
+  }
+  const Eigen::MatrixXd whole_upper = Eigen::MatrixXd(curvature.at(x, ContactModel::kProjectedHessian));
+  const Eigen::MatrixXd whole =
+      whole_upper + whole_upper.transpose() - Eigen::MatrixXd(whole_upper.diagonal().asDiagonal());
+  CHECK((whole - projected).norm() <= 1e-12 * projected.norm());
+  CHECK(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(whole).eigenvalues().minCoeff() >= -1e-9 * projected.norm());
+  CHECK((whole - full).norm() > 1e-6 * full.norm());  // the curvature of q counts
+
+  // AKVF with C in its factor gives the direction of AKVF with C added by
+  // the Woodbury identity over every term.
+  AkvfOptions2D with_contact;
+  with_contact.factor.contact_curvature = std::make_shared<ContactCurvature>(setup.boundary_contact, nv);
+  AkvfPreconditioner2D factored(*setup.objective, with_contact);
+  ContactPreconditioner woodbury(std::make_unique<AkvfPreconditioner2D>(*setup.objective), setup.boundary_contact,
                                  static_cast<int>(terms.size()));
   Eigen::VectorXd gradient;
   const double energy = setup.objective->value_and_gradient(x, &gradient);

@@ -197,7 +197,7 @@ void BoundaryContact::for_each_term(const Eigen::VectorXd& x, const Visit& visit
     if (!(distance < reach)) return;
     // d dist / dp = n, and the edge's ends share -n by s (zero at contact).
     const Vec2 n = distance > 0 ? Vec2(r / distance) : Vec2::Zero();
-    visit(Term{{{c.vertex, e.a, e.b}, {n, -(1 - s) * n, -s * n}, 0}, distance, reach * e.rest_length, reach});
+    visit(Term{{{c.vertex, e.a, e.b}, {n, -(1 - s) * n, -s * n}, 0, 0, false}, distance, reach * e.rest_length, reach});
   });
   // Angle terms: theta from c -> next counter-clockwise to c -> previous,
   // in [0, 2 pi); d theta / d next = -u^perp / |u|^2, d theta / d previous =
@@ -212,8 +212,10 @@ void BoundaryContact::for_each_term(const Eigen::VectorXd& x, const Visit& visit
     if (!(uu > 0 && vv > 0)) continue;
     // q = 2 pi - theta: its gradient is minus theta's.
     const Vec2 d_next(-u.y() / uu, u.x() / uu), d_previous(v.y() / vv, -v.x() / vv);
-    visit(Term{
-        {{c.next, c.previous, c.vertex}, {d_next, d_previous, -(d_next + d_previous)}, 0}, gap, c.weight, c.reach});
+    visit(Term{{{c.next, c.previous, c.vertex}, {d_next, d_previous, -(d_next + d_previous)}, 0, 0, true},
+               gap,
+               c.weight,
+               c.reach});
   }
 }
 
@@ -244,9 +246,96 @@ std::vector<BoundaryContact::ActiveTerm> BoundaryContact::active_terms(const Eig
     const double q3 = term.q * term.q * term.q;
     ActiveTerm active = term.derivative;
     active.curvature = 2 * term.weight * term.reach / q3 * (3 * term.reach / term.q - 2);
+    active.slope = -2 * term.weight * (term.reach / term.q - 1) * term.reach / (term.q * term.q);
     terms.push_back(active);
   });
   return terms;
+}
+
+namespace {
+
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+// The quarter turn R: R v = v^perp, and cross(e, w) = w^T R e.
+const Eigen::Matrix2d kQuarterTurn = (Eigen::Matrix2d() << 0, -1, 1, 0).finished();
+
+// Adds m to the (i, j) block of H and m^T to the (j, i) one (i != j), or m to (i, i).
+void add_block(int i, int j, const Eigen::Matrix2d& m, Matrix6* H) {
+  H->block<2, 2>(2 * i, 2 * j) += m;
+  if (i != j) H->block<2, 2>(2 * j, 2 * i) += m.transpose();
+}
+
+// d^2 dist(p, segment a b) / d(p, a, b)^2. Inside the segment the distance
+// is |f| / L with f = cross(b - a, p - a) = (p - a)^T R (b - a), bilinear
+// (its Hessian: R in the (p, b) block, -R in (p, a) and (a, b)), and
+// L = |b - a| (its Hessian: (I - t t^T) / L in (a, a) and (b, b), minus that
+// in (a, b), t = (b - a) / L); at an end it is |p - a| (or |p - b|), whose
+// Hessian is (I - n n^T) / q in (p, p) and (a, a), minus that in (p, a).
+Matrix6 distance_hessian(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  Matrix6 H = Matrix6::Zero();
+  const double s_raw = (b - a).squaredNorm() > 0 ? (p - a).dot(b - a) / (b - a).squaredNorm() : 0.0;
+  if (!(s_raw > 0 && s_raw < 1)) {
+    const int end = s_raw >= 1 ? 2 : 1;
+    const Eigen::Vector2d r = p - (end == 1 ? a : b);
+    const double q = r.norm();
+    if (!(q > 0)) return H;
+    const Eigen::Vector2d n = r / q;
+    const Eigen::Matrix2d P = (Eigen::Matrix2d::Identity() - n * n.transpose()) / q;
+    add_block(0, 0, P, &H);
+    add_block(end, end, P, &H);
+    add_block(0, end, -P, &H);
+    return H;
+  }
+  const Eigen::Vector2d e = b - a, w = p - a;
+  const double L = e.norm(), f = w.dot(kQuarterTurn * e);
+  const double sign = f >= 0 ? 1.0 : -1.0;
+  // Gradients over (p, a, b).
+  Eigen::Matrix<double, 6, 1> df, dL;
+  df << kQuarterTurn * e, -kQuarterTurn * e + kQuarterTurn * w, -(kQuarterTurn * w);
+  const Eigen::Vector2d t = e / L;
+  dL << Eigen::Vector2d::Zero(), -t, t;
+  Matrix6 d2f = Matrix6::Zero(), d2L = Matrix6::Zero();
+  add_block(0, 2, kQuarterTurn, &d2f);
+  add_block(0, 1, -kQuarterTurn, &d2f);
+  add_block(1, 2, -kQuarterTurn, &d2f);
+  const Eigen::Matrix2d P = (Eigen::Matrix2d::Identity() - t * t.transpose()) / L;
+  add_block(1, 1, P, &d2L);
+  add_block(2, 2, P, &d2L);
+  add_block(1, 2, -P, &d2L);
+  // d^2 (f / L) = d2f / L - (df dL^T + dL df^T) / L^2 + f (2 dL dL^T / L^3 - d2L / L^2).
+  H = d2f / L - (df * dL.transpose() + dL * df.transpose()) / (L * L) +
+      f * (2 * dL * dL.transpose() / (L * L * L) - d2L / (L * L));
+  return sign * H;
+}
+
+// The Hessian of atan2(y, x) at u = (x, y): [2xy, y^2 - x^2; y^2 - x^2, -2xy] / |u|^4.
+Eigen::Matrix2d direction_angle_hessian(const Eigen::Vector2d& u) {
+  const double r4 = u.squaredNorm() * u.squaredNorm();
+  Eigen::Matrix2d H;
+  H << 2 * u.x() * u.y(), u.y() * u.y() - u.x() * u.x(), u.y() * u.y() - u.x() * u.x(), -2 * u.x() * u.y();
+  return H / r4;
+}
+
+// d^2 q / d(next, previous, c)^2 for q = 2 pi - theta, theta the angle of
+// v = previous - c less that of u = next - c.
+Matrix6 angle_hessian(const Eigen::Vector2d& next, const Eigen::Vector2d& previous, const Eigen::Vector2d& c) {
+  const Eigen::Matrix2d Hu = direction_angle_hessian(next - c), Hv = -direction_angle_hessian(previous - c);
+  Matrix6 H = Matrix6::Zero();
+  add_block(0, 0, Hu, &H);
+  add_block(1, 1, Hv, &H);
+  add_block(2, 2, Hu + Hv, &H);
+  add_block(0, 2, -Hu, &H);
+  add_block(1, 2, -Hv, &H);
+  return H;
+}
+
+}  // namespace
+
+Eigen::Matrix<double, 6, 6> BoundaryContact::hessian(const ActiveTerm& term, const Eigen::VectorXd& x) {
+  const Vec2 p0 = point(x, term.vertex[0]), p1 = point(x, term.vertex[1]), p2 = point(x, term.vertex[2]);
+  Eigen::Matrix<double, 6, 1> dq;
+  for (int k = 0; k < 3; ++k) dq.segment<2>(2 * k) = term.gradient[k];
+  const Matrix6 d2q = term.angle ? angle_hessian(p0, p1, p2) : distance_hessian(p0, p1, p2);
+  return term.curvature * dq * dq.transpose() + term.slope * d2q;
 }
 
 std::vector<std::array<int, 4>> BoundaryContact::crossings(const Eigen::VectorXd& x) const {

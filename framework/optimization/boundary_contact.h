@@ -65,18 +65,23 @@ class BoundaryContact {
   // Adds dE_B/dx to *gradient when given (sized 2|V|).
   double barrier(const Eigen::VectorXd& x, Eigen::VectorXd* gradient) const;
 
-  // One term of the barrier within its reach at x: its argument q depends
-  // on three vertices, dq/dx being gradient[k] at vertex[k]. The term's
-  // Hessian, projected to be positive semi-definite (the part along dq/dx;
-  // the curvature of q itself dropped, as Gauss-Newton does), is
-  // curvature * (dq/dx)(dq/dx)^T.
+  // One term b(q) of the barrier within its reach at x: its argument q
+  // depends on three vertices, dq/dx being gradient[k] at vertex[k]. Its
+  // Hessian is b''(q) (dq/dx)(dq/dx)^T + b'(q) d^2q/dx^2, with
+  // curvature = b''(q) > 0 and slope = b'(q) < 0; the first part alone is
+  // its Gauss-Newton curvature (positive semi-definite).
   struct ActiveTerm {
     int vertex[3];
     Eigen::Vector2d gradient[3];
     double curvature;
+    double slope;
+    bool angle;  // an angle term (vertex: next, previous, the corner), else vertex-edge (the vertex, a, b)
   };
   // The terms of barrier() that are not zero, in its order.
   std::vector<ActiveTerm> active_terms(const Eigen::VectorXd& x) const;
+  // The term's whole Hessian at x, on the coordinates of its three vertices
+  // in their order (2 each).
+  static Eigen::Matrix<double, 6, 6> hessian(const ActiveTerm& term, const Eigen::VectorXd& x);
 
   // The pairs of edges of one loop, neither following the other, that meet:
   // their vertices (a, b, c, d) for edges a -> b and c -> d.
