@@ -19,16 +19,24 @@ ContactCurvature::ContactCurvature(std::shared_ptr<const BoundaryContact> contac
 const Eigen::SparseMatrix<double>& ContactCurvature::at(const Eigen::VectorXd& x, ContactModel model) {
   const std::vector<BoundaryContact::ActiveTerm> terms = contact_->active_terms(x);
   const auto n = static_cast<std::uint64_t>(num_vertices_);
-  bool grown = false;
-  for (const BoundaryContact::ActiveTerm& term : terms)
+  const auto add_pairs = [&](const int* vertex) {
+    bool added = false;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
-        const auto i = static_cast<std::uint64_t>(term.vertex[a]), j = static_cast<std::uint64_t>(term.vertex[b]);
+        const auto i = static_cast<std::uint64_t>(vertex[a]), j = static_cast<std::uint64_t>(vertex[b]);
         if (i <= j && pairs_.insert(i * n + j).second) {
           sorted_pairs_.push_back(i * n + j);
-          grown = true;
+          added = true;
         }
       }
+    return added;
+  };
+  bool grown = false;
+  for (const BoundaryContact::ActiveTerm& term : terms) grown = add_pairs(term.vertex) || grown;
+  // A pattern that has to grow takes the terms within twice their reach as
+  // well (module comment).
+  if (grown)
+    for (const std::array<int, 3>& vertex : contact_->terms_within(x, kProspectiveReach)) add_pairs(vertex.data());
   if (grown) {
     std::sort(sorted_pairs_.begin(), sorted_pairs_.end());
     ++version_;

@@ -6,6 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -322,6 +323,24 @@ TEST_CASE("the barrier's curvature in a factored P: the sum of its terms, a patt
   const Eigen::MatrixXd full = upper + upper.transpose() - Eigen::MatrixXd(upper.diagonal().asDiagonal());
   CHECK((full - expected).norm() <= 1e-12 * expected.norm());
   CHECK(curvature.pattern_version() == 1);
+  // The pattern also holds the pairs of the terms within twice their reach
+  // (those within their reach are the active ones).
+  const std::vector<std::array<int, 3>> active = setup.boundary_contact->terms_within(x, 1);
+  REQUIRE(active.size() == terms.size());
+  for (std::size_t k = 0; k < terms.size(); ++k) CHECK(std::equal(active[k].begin(), active[k].end(), terms[k].vertex));
+  const std::vector<std::array<int, 3>> near =
+      setup.boundary_contact->terms_within(x, ContactCurvature::kProspectiveReach);
+  CHECK(near.size() > terms.size());
+  const Eigen::SparseMatrix<double>& pattern = curvature.at(x);
+  const auto stored = [&](int row, int column) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(pattern, column); it; ++it)
+      if (it.row() == row) return true;
+    return false;
+  };
+  for (const std::array<int, 3>& vertex : near)
+    for (int a : vertex)
+      for (int b : vertex)
+        if (a <= b) CHECK(stored(2 * a, 2 * b + 1));
   // Another map's terms add their pairs; back at x, C is the same on the
   // larger pattern, and the pattern does not change again.
   const Eigen::Index nonzeros = curvature.at(x).nonZeros();

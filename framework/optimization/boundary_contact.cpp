@@ -170,12 +170,12 @@ double BoundaryContact::rest_distance(int p, int a, int b) const {
 }
 
 template <class Visit>
-void BoundaryContact::for_each_term(const Eigen::VectorXd& x, const Visit& visit) const {
+void BoundaryContact::for_each_term(const Eigen::VectorXd& x, double reach_factor, const Visit& visit) const {
   // Vertex-edge terms.
   std::vector<Box2> corner_points(corners_.size()), reach_boxes(edges_.size());
   for (size_t i = 0; i < corners_.size(); ++i) corner_points[i] = bounds({point(x, corners_[i].vertex)}, 0);
   for (size_t j = 0; j < edges_.size(); ++j)
-    reach_boxes[j] = bounds({point(x, edges_[j].a), point(x, edges_[j].b)}, 0.5 * edges_[j].rest_length);
+    reach_boxes[j] = bounds({point(x, edges_[j].a), point(x, edges_[j].b)}, 0.5 * reach_factor * edges_[j].rest_length);
   for_each_overlapping_pair(corner_points, reach_boxes, [&](int i, int j) {
     const Corner& c = corners_[i];
     const Edge& e = edges_[j];
@@ -187,14 +187,14 @@ void BoundaryContact::for_each_term(const Eigen::VectorXd& x, const Visit& visit
     const double s = closest_parameter(p, a, b);
     const Vec2 r = p - (a + s * (b - a));
     const double distance = r.norm();
-    if (!(distance < 0.5 * e.rest_length)) return;
+    if (!(distance < 0.5 * reach_factor * e.rest_length)) return;
     // Half the rest distance, where the isometric map would put them; a
     // vertex that lies on the edge at rest (a seam's two sides, cut apart)
     // is as far as the edge is long.
     const double apart = rest_distance(c.vertex, e.a, e.b);
     const double reach =
         0.5 * (apart > kSeamTolerance * e.rest_length ? std::min(e.rest_length, apart) : e.rest_length);
-    if (!(distance < reach)) return;
+    if (!(distance < reach_factor * reach)) return;
     // d dist / dp = n, and the edge's ends share -n by s (zero at contact).
     const Vec2 n = distance > 0 ? Vec2(r / distance) : Vec2::Zero();
     visit(Term{{{c.vertex, e.a, e.b}, {n, -(1 - s) * n, -s * n}, 0, 0, false}, distance, reach * e.rest_length, reach});
@@ -207,7 +207,7 @@ void BoundaryContact::for_each_term(const Eigen::VectorXd& x, const Visit& visit
     double theta = std::atan2(cross(u, v), u.dot(v));
     if (theta < 0) theta += 2 * M_PI;
     const double gap = 2 * M_PI - theta;
-    if (!(gap < c.reach)) continue;
+    if (!(gap < reach_factor * c.reach)) continue;
     const double uu = u.squaredNorm(), vv = v.squaredNorm();
     if (!(uu > 0 && vv > 0)) continue;
     // q = 2 pi - theta: its gradient is minus theta's.
@@ -221,7 +221,7 @@ void BoundaryContact::for_each_term(const Eigen::VectorXd& x, const Visit& visit
 
 double BoundaryContact::barrier(const Eigen::VectorXd& x, Eigen::VectorXd* gradient) const {
   double value = 0;
-  for_each_term(x, [&](const Term& term) {
+  for_each_term(x, 1, [&](const Term& term) {
     if (!(term.q > 0) || !std::isfinite(value)) {
       value = kUnbounded;
       return;
@@ -240,7 +240,7 @@ double BoundaryContact::barrier(const Eigen::VectorXd& x, Eigen::VectorXd* gradi
 
 std::vector<BoundaryContact::ActiveTerm> BoundaryContact::active_terms(const Eigen::VectorXd& x) const {
   std::vector<ActiveTerm> terms;
-  for_each_term(x, [&](const Term& term) {
+  for_each_term(x, 1, [&](const Term& term) {
     if (!(term.q > 0)) return;
     // d^2/dq^2 of w (eps / q - 1)^2 = (2 w eps / q^3)(3 eps / q - 2), > 0 for q < eps.
     const double q3 = term.q * term.q * term.q;
@@ -250,6 +250,15 @@ std::vector<BoundaryContact::ActiveTerm> BoundaryContact::active_terms(const Eig
     terms.push_back(active);
   });
   return terms;
+}
+
+std::vector<std::array<int, 3>> BoundaryContact::terms_within(const Eigen::VectorXd& x, double reach_factor) const {
+  std::vector<std::array<int, 3>> found;
+  for_each_term(x, reach_factor, [&](const Term& term) {
+    const int* v = term.derivative.vertex;
+    found.push_back({v[0], v[1], v[2]});
+  });
+  return found;
 }
 
 namespace {

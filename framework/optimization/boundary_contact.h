@@ -79,6 +79,9 @@ class BoundaryContact {
   };
   // The terms of barrier() that are not zero, in its order.
   std::vector<ActiveTerm> active_terms(const Eigen::VectorXd& x) const;
+  // The vertices of the terms that lie within reach_factor times their
+  // reach at x (those of active_terms for 1), in active_terms' order.
+  std::vector<std::array<int, 3>> terms_within(const Eigen::VectorXd& x, double reach_factor) const;
   // The term's whole Hessian at x, on the coordinates of its three vertices
   // in their order (2 each).
   static Eigen::Matrix<double, 6, 6> hessian(const ActiveTerm& term, const Eigen::VectorXd& x);
@@ -99,15 +102,15 @@ class BoundaryContact {
     int loop;
     double reach, weight;  // eps and w of its angle term
   };
-  // Calls visit(term) for every term of the barrier within its reach, with
-  // q, its gradient, w and eps, in a fixed order.
+  // Calls visit(term) for every term of the barrier within reach_factor
+  // times its reach, with q, its gradient, w and eps, in a fixed order.
   struct Term {
     ActiveTerm derivative;
     double q, weight, reach;
   };
   double rest_distance(int p, int a, int b) const;
   template <class Visit>
-  void for_each_term(const Eigen::VectorXd& x, const Visit& visit) const;
+  void for_each_term(const Eigen::VectorXd& x, double reach_factor, const Visit& visit) const;
 
   Eigen::MatrixXd rest_;
   std::vector<std::vector<int>> neighbours_;  // sorted mesh neighbours of each vertex (boundary ones only)
