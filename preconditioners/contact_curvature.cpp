@@ -50,8 +50,8 @@ const Eigen::SparseMatrix<double>& ContactCurvature::at(const Eigen::VectorXd& x
       for (int c = 0; c < 2; ++c)
         if (i != j || r <= c) entries.emplace_back(2 * i + r, 2 * j + c, 0.0);
   }
+  const bool whole = model == ContactModel::kProjectedHessian;
   for (const BoundaryContact::ActiveTerm& term : terms) {
-    const bool whole = model == ContactModel::kProjectedHessian;
     const Eigen::Matrix<double, 6, 6> hessian =
         whole ? projected(BoundaryContact::hessian(term, x)) : Eigen::Matrix<double, 6, 6>::Zero();
     for (int a = 0; a < 3; ++a)
