@@ -281,9 +281,9 @@ void add_block(int i, int j, const Eigen::Matrix2d& m, Matrix6* H) {
 // Hessian is (I - n n^T) / q in (p, p) and (a, a), minus that in (p, a).
 Matrix6 distance_hessian(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   Matrix6 H = Matrix6::Zero();
-  const double s_raw = (b - a).squaredNorm() > 0 ? (p - a).dot(b - a) / (b - a).squaredNorm() : 0.0;
-  if (!(s_raw > 0 && s_raw < 1)) {
-    const int end = s_raw >= 1 ? 2 : 1;
+  const double s = closest_parameter(p, a, b);
+  if (!(s > 0 && s < 1)) {
+    const int end = s == 1 ? 2 : 1;
     const Eigen::Vector2d r = p - (end == 1 ? a : b);
     const double q = r.norm();
     if (!(q > 0)) return H;
