@@ -2,6 +2,7 @@
 // The per-element distortion density D(J) of Eq. (1), as a function of the
 // element's Jacobian J (Dim x Dim). A density knows nothing of meshes; the
 // assembler (distortion_objective.h) sums A_hat_f D(J_f) over elements.
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -79,6 +80,25 @@ class SingularValueDerivative {
   // as MIPS) rather than at rotations only: the SLIM proxy then pulls J
   // towards the nearest similarity instead of the nearest rotation.
   virtual bool minimal_at_similarities() const { return false; }
+};
+
+// Densities whose Hessian's eigen-decomposition is known in closed form
+// expose it: d^2 D / dvec(J)^2 = sum_i lambda_i vec(M_i) vec(M_i)^T, the
+// Dim^2 modes M_i orthonormal in the Frobenius product. Projected Newton then
+// filters each lambda_i and assembles an element's block from the modes
+// without forming the Hessian. A density implements it alongside
+// DistortionDensity.
+template <int Dim>
+class HessianEigensystem {
+ public:
+  using Mode = Eigen::Matrix<double, Dim, Dim>;
+  struct Eigenpairs {
+    Eigen::Matrix<double, Dim * Dim, 1> values;
+    std::array<Mode, Dim * Dim> modes;
+  };
+  virtual ~HessianEigensystem() = default;
+  // At J with det J > 0.
+  virtual Eigenpairs hessian_eigensystem(const Mode& J) const = 0;
 };
 
 }  // namespace akvf

@@ -56,6 +56,19 @@ void add_barrier_eigenvalues(const CollapseBarrier& barrier, SingularEigensystem
       if (i != j) system->scaling(i, j) += barrier.b_g * sigma[3 - i - j];
 }
 
+// Arap3D's eigensystem at J (arap.h), its collapse barrier's eigenvalues added.
+SingularEigensystem3D arap_eigensystem(const Eigen::Matrix3d& J, double collapse_volume_ratio) {
+  SingularEigensystem3D system(J);
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    system.twist[k] = 2 - 4 / (system.sigma[i] + system.sigma[j]);
+    system.flip[k] = 2;
+  }
+  system.scaling = 2 * Eigen::Matrix3d::Identity();
+  add_barrier_eigenvalues(CollapseBarrier(J.determinant(), collapse_volume_ratio), &system);
+  return system;
+}
+
 }  // namespace
 
 InvariantDerivatives2D Arap2D::derivatives(double s, double g) const {
@@ -116,15 +129,11 @@ Arap3D::Hessian Arap3D::hessian(const Matrix& J) const {
 }
 
 Arap3D::Hessian Arap3D::filtered_hessian(const Matrix& J, bool absolute) const {
-  SingularEigensystem3D system(J);
-  for (int k = 0; k < 3; ++k) {
-    const int i = (k + 1) % 3, j = (k + 2) % 3;
-    system.twist[k] = 2 - 4 / (system.sigma[i] + system.sigma[j]);
-    system.flip[k] = 2;
-  }
-  system.scaling = 2 * Eigen::Matrix3d::Identity();
-  add_barrier_eigenvalues(CollapseBarrier(J.determinant(), collapse_volume_ratio()), &system);
-  return system.filtered_hessian(absolute);
+  return arap_eigensystem(J, collapse_volume_ratio()).filtered_hessian(absolute);
+}
+
+Arap3D::Eigenpairs Arap3D::hessian_eigensystem(const Matrix& J) const {
+  return arap_eigensystem(J, collapse_volume_ratio()).eigenpairs();
 }
 
 bool Arap3D::collapse_barrier_hessian(const Matrix& J, Hessian* H) const {

@@ -42,7 +42,7 @@ class Arap2D final : public InvariantDensity2D {
 // Hessian 2 I - 2 dR/dJ, where dR/dJ has the eigenvalue 2 / (sigma_i +
 // sigma_j) on each twist U (e_i e_j^T - e_j e_i^T) V^T / sqrt(2) and 0
 // elsewhere; plus the collapse barrier below collapse_volume_ratio().
-class Arap3D final : public DistortionDensity3D, public SingularValueDerivative<3> {
+class Arap3D final : public DistortionDensity3D, public SingularValueDerivative<3>, public HessianEigensystem<3> {
  public:
   std::string name() const override { return "arap"; }
   double lower_bound() const override { return 0.0; }
@@ -58,6 +58,7 @@ class Arap3D final : public DistortionDensity3D, public SingularValueDerivative<
   // barrier's own eigenvalues added.
   Hessian projected_hessian(const Matrix& J) const override { return filtered_hessian(J, false); }
   Hessian absolute_hessian(const Matrix& J) const override { return filtered_hessian(J, true); }
+  Eigenpairs hessian_eigensystem(const Matrix& J) const override;
   Eigen::Vector3d singular_value_gradient(const Eigen::Vector3d& sigma) const override;
 
  private:

@@ -55,7 +55,7 @@ double norm_2d(double a, double b) {
 }
 }  // namespace
 
-InvariantDensity2D::Hessian InvariantDensity2D::filtered_hessian(const Matrix& J, bool absolute) const {
+InvariantDensity2D::Eigenpairs InvariantDensity2D::hessian_eigensystem(const Matrix& J) const {
   // Signed SVD in closed form: J = R(phi) diag(s1, s2) R(theta), R(t) the
   // rotation by t, phi = (a2 + a1) / 2, theta = (a2 - a1) / 2 with
   // (cos, sin)(a1) = (F, G) / R and (cos, sin)(a2) = (E, H) / Q; s2 < 0 iff
@@ -94,19 +94,26 @@ InvariantDensity2D::Hessian InvariantDensity2D::filtered_hessian(const Matrix& J
     ca = y / (2 * half_gap * sa);
   }
 
-  Hessian P = Hessian::Zero();
-  const auto add = [&](double lambda, const Eigen::Matrix2d& mode) {
-    if (absolute) lambda = std::abs(lambda);
-    if (!(lambda > 0)) return;
-    const Eigen::Vector4d v = vec_2d(mode);
-    P += lambda * v * v.transpose();
-  };
+  Eigenpairs pairs;
   const double r = 1 / std::sqrt(2.0);
-  add(2 * d.f_s + d.f_g, r * twist);
-  add(2 * d.f_s - d.f_g, r * flip);
+  pairs.values << 2 * d.f_s + d.f_g, 2 * d.f_s - d.f_g, mean + half_gap, mean - half_gap;
+  pairs.modes[0] = r * twist;
+  pairs.modes[1] = r * flip;
   // diag(u, v) = (u + v) / 2 I + (u - v) / 2 D, for e1 = (ca, sa) and e2 = (-sa, ca).
-  add(mean + half_gap, (ca + sa) / 2 * rotation + (ca - sa) / 2 * reflection);
-  add(mean - half_gap, (ca - sa) / 2 * rotation - (sa + ca) / 2 * reflection);
+  pairs.modes[2] = (ca + sa) / 2 * rotation + (ca - sa) / 2 * reflection;
+  pairs.modes[3] = (ca - sa) / 2 * rotation - (sa + ca) / 2 * reflection;
+  return pairs;
+}
+
+InvariantDensity2D::Hessian InvariantDensity2D::filtered_hessian(const Matrix& J, bool absolute) const {
+  const Eigenpairs pairs = hessian_eigensystem(J);
+  Hessian P = Hessian::Zero();
+  for (int i = 0; i < 4; ++i) {
+    const double lambda = absolute ? std::abs(pairs.values[i]) : pairs.values[i];
+    if (!(lambda > 0)) continue;
+    const Eigen::Vector4d v = vec_2d(pairs.modes[i]);
+    P += lambda * v * v.transpose();
+  }
   return P;
 }
 

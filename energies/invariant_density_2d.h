@@ -19,7 +19,7 @@ struct InvariantDerivatives2D {
   double f = 0, f_s = 0, f_g = 0, f_ss = 0, f_sg = 0, f_gg = 0;
 };
 
-class InvariantDensity2D : public DistortionDensity2D, public SingularValueDerivative<2> {
+class InvariantDensity2D : public DistortionDensity2D, public SingularValueDerivative<2>, public HessianEigensystem<2> {
  public:
   double value(const Matrix& J) const final;
   double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const final;
@@ -35,6 +35,8 @@ class InvariantDensity2D : public DistortionDensity2D, public SingularValueDeriv
   Hessian projected_hessian(const Matrix& J) const final { return filtered_hessian(J, false); }
   // The same eigensystem with |lambda| for every eigenvalue.
   Hessian absolute_hessian(const Matrix& J) const final { return filtered_hessian(J, true); }
+  // The eigensystem above: the twist, the flip, the two scalings.
+  Eigenpairs hessian_eigensystem(const Matrix& J) const final;
 
   // dD/dsigma_i = 2 f_s sigma_i + f_g sigma_j (j != i).
   Eigen::Vector2d singular_value_gradient(const Eigen::Vector2d& sigma) const final;

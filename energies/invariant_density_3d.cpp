@@ -94,7 +94,7 @@ InvariantDensity3D::Hessian InvariantDensity3D::hessian(const Matrix& J) const {
          d.f_g * determinant_hessian_3d(J);
 }
 
-InvariantDensity3D::Hessian InvariantDensity3D::filtered_hessian(const Matrix& J, bool absolute) const {
+SingularEigensystem3D InvariantDensity3D::eigensystem(const Matrix& J) const {
   SingularEigensystem3D system(J);
   const Eigen::Vector3d& sigma = system.sigma;
   const Eigen::Vector3d squared = sigma.cwiseAbs2();
@@ -116,7 +116,7 @@ InvariantDensity3D::Hessian InvariantDensity3D::filtered_hessian(const Matrix& J
   second << d.f_ss, d.f_sc, d.f_sg, d.f_sc, d.f_cc, d.f_cg, d.f_sg, d.f_cg, d.f_gg;
   system.scaling =
       B.transpose() * second * B + 2 * d.f_s * Eigen::Matrix3d::Identity() + d.f_c * second_c + d.f_g * second_g;
-  return system.filtered_hessian(absolute);
+  return system;
 }
 
 Eigen::Vector3d InvariantDensity3D::singular_value_gradient(const Eigen::Vector3d& sigma) const {

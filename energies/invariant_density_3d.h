@@ -8,6 +8,7 @@
 // .cpp. +infinity when g <= 0. The energies built on it: symmetric_dirichlet.h,
 // exp_symmetric_dirichlet.h, mips.h, amips.h.
 #include "akvf/distortion_density.h"
+#include "energies/singular_eigensystem_3d.h"
 
 namespace akvf {
 
@@ -21,7 +22,9 @@ struct InvariantDerivatives3D {
   double f_ss = 0, f_sc = 0, f_sg = 0, f_cc = 0, f_cg = 0, f_gg = 0;
 };
 
-class InvariantDensity3D : public DistortionDensity<3>, public SingularValueDerivative<3> {
+class InvariantDensity3D : public DistortionDensity<3>,
+                           public SingularValueDerivative<3>,
+                           public HessianEigensystem<3> {
  public:
   double value(const Matrix& J) const final;
   double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const final;
@@ -36,6 +39,7 @@ class InvariantDensity3D : public DistortionDensity<3>, public SingularValueDeri
   // d2g/dsigma^2, B = d(s, c, g)/dsigma.
   Hessian projected_hessian(const Matrix& J) const final { return filtered_hessian(J, false); }
   Hessian absolute_hessian(const Matrix& J) const final { return filtered_hessian(J, true); }
+  Eigenpairs hessian_eigensystem(const Matrix& J) const final { return eigensystem(J).eigenpairs(); }
   // dD/dsigma_i = 2 sigma_i (f_s + f_c (sigma_j^2 + sigma_k^2)) + f_g sigma_j sigma_k.
   Eigen::Vector3d singular_value_gradient(const Eigen::Vector3d& sigma) const final;
 
@@ -43,7 +47,9 @@ class InvariantDensity3D : public DistortionDensity<3>, public SingularValueDeri
   virtual InvariantDerivatives3D derivatives(double s, double c, double g) const = 0;
 
  private:
-  Hessian filtered_hessian(const Matrix& J, bool absolute) const;
+  Hessian filtered_hessian(const Matrix& J, bool absolute) const { return eigensystem(J).filtered_hessian(absolute); }
+  // The eigensystem above at J.
+  SingularEigensystem3D eigensystem(const Matrix& J) const;
 };
 
 }  // namespace akvf

@@ -12,6 +12,8 @@
 // uses, with no 9x9 eigensolver.
 #include <Eigen/Core>
 
+#include "akvf/distortion_density.h"
+
 namespace akvf {
 
 struct SingularEigensystem3D {
@@ -29,6 +31,13 @@ struct SingularEigensystem3D {
   // sum over the nine eigenpairs of max(lambda, 0) v v^T (clamped), or of
   // |lambda| v v^T (absolute).
   Eigen::Matrix<double, 9, 9> filtered_hessian(bool absolute) const;
+  // The nine eigenpairs, unfiltered.
+  HessianEigensystem<3>::Eigenpairs eigenpairs() const;
+
+ private:
+  // The eigenvectors as the columns of Q (vec, column-major) and their
+  // eigenvalues.
+  void decompose(Eigen::Matrix<double, 9, 9>* Q, Eigen::Matrix<double, 9, 1>* lambda) const;
 };
 
 }  // namespace akvf

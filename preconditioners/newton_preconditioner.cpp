@@ -168,6 +168,10 @@ void NewtonPreconditioner<D>::add_rotation_shifts(const Eigen::VectorXd& x, cons
 template <int D>
 void NewtonPreconditioner<D>::assemble_filtered(const Eigen::VectorXd& x, EigenvalueFilter filter, Matrix* matrix,
                                                 double negative_share) const {
+  if (const auto* eigensystem = dynamic_cast<const HessianEigensystem<D>*>(&objective_.density())) {
+    assemble_from_modes(x, *eigensystem, filter, matrix, negative_share);
+    return;
+  }
   matrix->assemble([&](int e, typename Matrix::Local* local) {
     const auto G = jacobian_map<D>(objective_.rest().Dm_inv[e]);
     const auto J = objective_.jacobian(x, e);
@@ -183,6 +187,46 @@ void NewtonPreconditioner<D>::assemble_filtered(const Eigen::VectorXd& x, Eigenv
     else
       H = objective_.density().projected_hessian(J);
     *local = objective_.weights()[e] * G.transpose() * H * G;
+  });
+}
+
+template <int D>
+void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, const HessianEigensystem<D>& eigensystem,
+                                                  EigenvalueFilter filter, Matrix* matrix,
+                                                  double negative_share) const {
+  // Each filtered eigenvalue: the exact one, |lambda|, or a negative one
+  // times 1 - share (share 1: the clamp), as assemble_filtered's matrices;
+  // a NaN (overflow at a nearly collapsed element) dropped, as the clamp does.
+  const double negative_scale = filter == EigenvalueFilter::kExact ? 1 : 1 - negative_share;
+  const auto filtered = [&](double lambda) {
+    if (lambda > 0) return lambda;
+    if (!(lambda < 0)) return 0.0;
+    return filter == EigenvalueFilter::kAbsolute ? -lambda : negative_scale * lambda;
+  };
+  constexpr int kCorners = D + 1, kSize = D * kCorners;
+  matrix->assemble([&](int e, typename Matrix::Local* local) {
+    // G^T H G = sum_i mu_i u_i u_i^T with u_i = G^T vec(M_i): corner k's
+    // part of u_i is M_i grad_k (J = sum_k x_k grad_k^T, grad_k the rest
+    // gradient of corner k's hat function). Only the upper triangle is read.
+    const auto grad = hat_gradients<D>(objective_.rest().Dm_inv[e]);
+    const auto pairs = eigensystem.hessian_eigensystem(objective_.jacobian(x, e));
+    double u[D * D][kSize], scaled[D * D][kSize];
+    for (int i = 0; i < D * D; ++i) {
+      const double mu = objective_.weights()[e] * filtered(pairs.values[i]);
+      for (int k = 0; k < kCorners; ++k)
+        for (int r = 0; r < D; ++r) {
+          double sum = 0;
+          for (int c = 0; c < D; ++c) sum += pairs.modes[i](r, c) * grad[k][c];
+          u[i][D * k + r] = sum;
+          scaled[i][D * k + r] = mu * sum;
+        }
+    }
+    for (int j = 0; j < kSize; ++j)
+      for (int r = 0; r <= j; ++r) {
+        double sum = 0;
+        for (int i = 0; i < D * D; ++i) sum += scaled[i][r] * u[i][j];
+        (*local)(r, j) = sum;
+      }
   });
 }
 

@@ -165,6 +165,10 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   // plus that share of its negative part's magnitude (module comment).
   void assemble_filtered(const Eigen::VectorXd& x, EigenvalueFilter filter, Matrix* matrix,
                          double negative_share = 1) const;
+  // The same from the density's eigensystem (HessianEigensystem), each
+  // eigenvalue filtered: no element Hessian formed.
+  void assemble_from_modes(const Eigen::VectorXd& x, const HessianEigensystem<D>& eigensystem, EigenvalueFilter filter,
+                           Matrix* matrix, double negative_share) const;
   // P at x by last_filter_ (and the fallback's share), with the rotation
   // shifts where it is based on the exact Hessian.
   void assemble_current(const Eigen::VectorXd& x, const Eigen::VectorXd& gradient, Matrix* matrix) const;

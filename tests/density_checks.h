@@ -77,6 +77,22 @@ bool check_filtered_hessians(const DistortionDensity<Dim>& density, const Eigen:
   return eig.eigenvalues().minCoeff() < 0;
 }
 
+// The density's closed-form eigensystem at J (HessianEigensystem): its
+// modes orthonormal and sum_i lambda_i vec(M_i) vec(M_i)^T its Hessian, to
+// 1e-10 relative.
+template <int Dim>
+void check_eigensystem(const HessianEigensystem<Dim>& eigensystem, const DistortionDensity<Dim>& density,
+                       const Eigen::Matrix<double, Dim, Dim>& J) {
+  using H = typename DistortionDensity<Dim>::Hessian;
+  const auto pairs = eigensystem.hessian_eigensystem(J);
+  H modes;  // vec(M_i) as columns
+  for (int i = 0; i < Dim * Dim; ++i)
+    modes.col(i) = Eigen::Map<const Eigen::Matrix<double, Dim * Dim, 1>>(pairs.modes[i].data());
+  CHECK((modes.transpose() * modes - H::Identity()).norm() <= 1e-12);
+  const H hessian = density.hessian(J);
+  CHECK((modes * pairs.values.asDiagonal() * modes.transpose() - hessian).norm() <= 1e-10 * (1 + hessian.norm()));
+}
+
 // The density's collapse barrier Hessian at J against the barrier alone
 // (its value less sum (sigma_i - 1)^2, ARAP's own density) by central
 // differences in vec(J) with step h, its eigenvalues clamped at 0.

@@ -183,7 +183,7 @@ TEST_CASE("3D singular-value derivatives match finite differences in sigma") {
   }
 }
 
-TEST_CASE("the closed-form filtered Hessians of every 2D energy are the eigenvalue-clamped and -mirrored Hessians") {
+TEST_CASE("every 2D energy's closed-form eigensystem and filtered Hessians agree with its Hessian") {
   const akvf::SymmetricDirichlet2D sd;
   const akvf::Arap2D arap;
   const akvf::Mips2D mips;
@@ -203,12 +203,15 @@ TEST_CASE("the closed-form filtered Hessians of every 2D energy are the eigenval
                                 Eigen::Rotation2Dd(angle(rng)).toRotationMatrix();
       if (density == &exp_sd && J.squaredNorm() > 8) continue;  // exp(k (s + s/g^2)) overflows the tolerance
       indefinite += akvf::test::check_filtered_hessians<2>(*density, J);
+      const auto* eigensystem = dynamic_cast<const akvf::HessianEigensystem<2>*>(density);
+      REQUIRE(eigensystem);
+      akvf::test::check_eigensystem<2>(*eigensystem, *density, J);
     }
   }
   CHECK(indefinite > 100);  // the clamping and the mirroring were exercised
 }
 
-TEST_CASE("the closed-form filtered Hessians of every 3D energy are the eigenvalue-clamped and -mirrored Hessians") {
+TEST_CASE("every 3D energy's closed-form eigensystem and filtered Hessians agree with its Hessian") {
   const akvf::SymmetricDirichlet3D sd;
   const akvf::Arap3D arap;
   const akvf::Mips3D mips;
@@ -233,6 +236,9 @@ TEST_CASE("the closed-form filtered Hessians of every 3D energy are the eigenval
       CAPTURE(sigma.transpose());
       if (density == &exp_sd && J.squaredNorm() > 6) continue;  // exp(k (s + c/g^2)) overflows the tolerance
       indefinite += akvf::test::check_filtered_hessians<3>(*density, J);
+      const auto* eigensystem = dynamic_cast<const akvf::HessianEigensystem<3>*>(density);
+      REQUIRE(eigensystem);
+      akvf::test::check_eigensystem<3>(*eigensystem, *density, J);
     }
   }
   CHECK(indefinite > 100);  // the clamping and the mirroring were exercised

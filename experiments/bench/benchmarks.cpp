@@ -4,7 +4,8 @@
 //   whole iteration with a factorization (update, solve, flip-free line
 //   search, gradient); a density's energy, gradient and projected Hessian,
 //   hand-written against automatic differentiation; the 3D projected Hessian
-//   in closed form against a 9x9 eigensolver; the algebraic multigrid
+//   in closed form against a 9x9 eigensolver; the 2D Hessian's closed-form
+//   eigensystem; the algebraic multigrid
 //   path (hierarchy setup, one V-cycle, a CG solve to 1e-2) on horse_b and
 //   horse_b subdivided to 16x and 64x its faces (635 K and 2.5 M), with the
 //   direct path's parts and a whole iteration at the same sizes, and
@@ -331,6 +332,24 @@ void BM_DensityDerivatives(benchmark::State& state, const std::string& mesh, boo
   }
 }
 
+// The closed-form eigensystem of every face's symmetric Dirichlet Hessian
+// at a typical iterate, on one thread (what projected Newton assembles from).
+void BM_HessianEigensystem2D(benchmark::State& state, const std::string& mesh) {
+  REQUIRE_FIXTURE(state, mesh);
+  const akvf::DistortionObjective2D& objective = *f->setup.objective;
+  const akvf::SymmetricDirichlet2D density;
+  std::vector<Eigen::Matrix2d> jacobians;
+  for (int e = 0; e < objective.elements().rows(); ++e) jacobians.push_back(objective.jacobian(f->x, e));
+  for (auto _ : state) {
+    double sum = 0;
+    for (const Eigen::Matrix2d& J : jacobians) {
+      const auto pairs = density.hessian_eigensystem(J);
+      sum += pairs.values[3] + pairs.modes[3](1, 0);
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+}
+
 // The projected Hessian of 10 000 random tet Jacobians (singular values in
 // [0.3, 3], det > 0), for a 3D energy: the closed-form eigensystem
 // (singular_eigensystem_3d.h) against the generic 9x9 eigensolver it replaced.
@@ -448,6 +467,8 @@ void register_all() {
                                  false)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("DensityDerivatives/autodiff/" + mesh).c_str(), BM_DensityDerivatives, mesh, true)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("HessianEigensystem2D/" + mesh).c_str(), BM_HessianEigensystem2D, mesh)
         ->Unit(benchmark::kMillisecond);
   }
   // The direct path at the multigrid cases' sizes: its cost grows faster
