@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <random>
+#include <string>
 
 #include "akvf/distortion_density.h"
 
@@ -92,6 +93,28 @@ void check_eigensystem(const HessianEigensystem<Dim>& eigensystem, const Distort
   const H hessian = density.hessian(J);
   CHECK((modes * pairs.values.asDiagonal() * modes.transpose() - hessian).norm() <= 1e-10 * (1 + hessian.norm()));
 }
+
+// `Density` through DistortionDensity alone, without its closed-form
+// eigensystem (HessianEigensystem): projected Newton then assembles
+// G^T H G from the filtered element Hessians, the path to compare with.
+template <int Dim, class Density>
+class HessiansOnly final : public DistortionDensity<Dim> {
+ public:
+  using typename DistortionDensity<Dim>::Matrix;
+  using typename DistortionDensity<Dim>::Hessian;
+  std::string name() const override { return density_.name(); }
+  double lower_bound() const override { return density_.lower_bound(); }
+  double value(const Matrix& J) const override { return density_.value(J); }
+  double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const override {
+    return density_.value_and_gradient(J, dD_dJ);
+  }
+  Hessian hessian(const Matrix& J) const override { return density_.hessian(J); }
+  Hessian projected_hessian(const Matrix& J) const override { return density_.projected_hessian(J); }
+  Hessian absolute_hessian(const Matrix& J) const override { return density_.absolute_hessian(J); }
+
+ private:
+  Density density_;
+};
 
 // The density's collapse barrier Hessian at J against the barrier alone
 // (its value less sum (sigma_i - 1)^2, ARAP's own density) by central

@@ -83,31 +83,12 @@ TEST_CASE("3D Newton, Laplacian and SLIM: symmetric PSD, the expected null space
   }
 }
 
-// A 3D density through DistortionDensity alone: no closed-form eigensystem
-// (HessianEigensystem), so projected Newton assembles G^T H G from the
-// filtered element Hessians.
-template <class Density>
-class HessiansOnly3D final : public akvf::DistortionDensity3D {
- public:
-  std::string name() const override { return density_.name(); }
-  double lower_bound() const override { return density_.lower_bound(); }
-  double value(const Matrix& J) const override { return density_.value(J); }
-  double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const override {
-    return density_.value_and_gradient(J, dD_dJ);
-  }
-  Hessian hessian(const Matrix& J) const override { return density_.hessian(J); }
-  Hessian projected_hessian(const Matrix& J) const override { return density_.projected_hessian(J); }
-  Hessian absolute_hessian(const Matrix& J) const override { return density_.absolute_hessian(J); }
-
- private:
-  Density density_;
-};
-
 TEST_CASE_TEMPLATE("3D Newton assembled from the density's eigensystem is the filtered element Hessians' sum", Density,
                    akvf::SymmetricDirichlet3D, akvf::Arap3D) {
   const akvf::TetMesh mesh = akvf::test::tet_grid(2);
   const akvf::DistortionObjective3D with_modes = grid_objective(mesh, std::make_shared<Density>());
-  const akvf::DistortionObjective3D hessians_only = grid_objective(mesh, std::make_shared<HessiansOnly3D<Density>>());
+  const akvf::DistortionObjective3D hessians_only =
+      grid_objective(mesh, std::make_shared<akvf::test::HessiansOnly<3, Density>>());
   const Eigen::VectorXd x = akvf::test::distorted_tet_positions(mesh, 3);
   Eigen::VectorXd g;
   const double energy = with_modes.value_and_gradient(x, &g);

@@ -421,32 +421,15 @@ TEST_CASE("Newton, Laplacian and SLIM matrices are symmetric PSD with the expect
   }
 }
 
-// Symmetric Dirichlet through DistortionDensity alone: no closed-form
-// eigensystem (HessianEigensystem), so projected Newton assembles G^T H G
-// from the filtered element Hessians.
-class SymmetricDirichletHessiansOnly final : public akvf::DistortionDensity2D {
- public:
-  std::string name() const override { return sd_.name(); }
-  double lower_bound() const override { return sd_.lower_bound(); }
-  double value(const Matrix& J) const override { return sd_.value(J); }
-  double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const override { return sd_.value_and_gradient(J, dD_dJ); }
-  Hessian hessian(const Matrix& J) const override { return sd_.hessian(J); }
-  Hessian projected_hessian(const Matrix& J) const override { return sd_.projected_hessian(J); }
-  Hessian absolute_hessian(const Matrix& J) const override { return sd_.absolute_hessian(J); }
-
- private:
-  akvf::SymmetricDirichlet2D sd_;
-};
-
 TEST_CASE("Newton assembled from the density's eigensystem is the filtered element Hessians' sum, for every filter") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
   akvf::normalize_to_unit_area(&normalized);
   const akvf::DistortionObjective2D with_modes(normalized.F, akvf::rest_triangles(normalized),
                                                std::make_shared<akvf::SymmetricDirichlet2D>(),
                                                normalized.num_vertices());
-  const akvf::DistortionObjective2D hessians_only(normalized.F, akvf::rest_triangles(normalized),
-                                                  std::make_shared<SymmetricDirichletHessiansOnly>(),
-                                                  normalized.num_vertices());
+  const akvf::DistortionObjective2D hessians_only(
+      normalized.F, akvf::rest_triangles(normalized),
+      std::make_shared<akvf::test::HessiansOnly<2, akvf::SymmetricDirichlet2D>>(), normalized.num_vertices());
   // Shrunk and jittered: many elements have a negative eigenvalue.
   const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.6);
   Eigen::VectorXd g;
