@@ -204,29 +204,37 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
     return filter == EigenvalueFilter::kAbsolute ? -lambda : negative_scale * lambda;
   };
   constexpr int kCorners = D + 1, kSize = D * kCorners;
-  matrix->assemble([&](int e, typename Matrix::Local* local) {
-    // G^T H G = sum_i mu_i u_i u_i^T with u_i = G^T vec(M_i): corner k's
-    // part of u_i is M_i grad_k (J = sum_k x_k grad_k^T, grad_k the rest
-    // gradient of corner k's hat function). Only the upper triangle is read.
-    const auto grad = hat_gradients<D>(objective_.rest().Dm_inv[e]);
-    const auto pairs = eigensystem.hessian_eigensystem(objective_.jacobian(x, e));
-    double u[D * D][kSize], scaled[D * D][kSize];
-    for (int i = 0; i < D * D; ++i) {
-      const double mu = objective_.weights()[e] * filtered(pairs.values[i]);
-      for (int k = 0; k < kCorners; ++k)
-        for (int r = 0; r < D; ++r) {
+  // G^T H G = sum_i mu_i u_i u_i^T with u_i = G^T vec(M_i): corner k's part
+  // of u_i is M_i grad_k (J = sum_k x_k grad_k^T, grad_k the rest gradient of
+  // corner k's hat function). Only the upper triangle is read. A batch's
+  // eigensystems come first, one after another: each is a chain of square
+  // roots and divisions that the processor overlaps with the next one's
+  // (tricera_b subdivided once: 2.1 -> 1.8 ms an assembly).
+  matrix->assemble_batches([&](const int* elements, int count, typename Matrix::Local* locals) {
+    typename HessianEigensystem<D>::Eigenpairs batch[Matrix::kBatch];
+    for (int b = 0; b < count; ++b) batch[b] = eigensystem.hessian_eigensystem(objective_.jacobian(x, elements[b]));
+    for (int b = 0; b < count; ++b) {
+      const auto grad = hat_gradients<D>(objective_.rest().Dm_inv[elements[b]]);
+      const auto& pairs = batch[b];
+      const double weight = objective_.weights()[elements[b]];
+      double u[D * D][kSize], scaled[D * D][kSize];
+      for (int i = 0; i < D * D; ++i) {
+        const double mu = weight * filtered(pairs.values[i]);
+        for (int k = 0; k < kCorners; ++k)
+          for (int r = 0; r < D; ++r) {
+            double sum = 0;
+            for (int c = 0; c < D; ++c) sum += pairs.modes[i](r, c) * grad[k][c];
+            u[i][D * k + r] = sum;
+            scaled[i][D * k + r] = mu * sum;
+          }
+      }
+      for (int j = 0; j < kSize; ++j)
+        for (int r = 0; r <= j; ++r) {
           double sum = 0;
-          for (int c = 0; c < D; ++c) sum += pairs.modes[i](r, c) * grad[k][c];
-          u[i][D * k + r] = sum;
-          scaled[i][D * k + r] = mu * sum;
+          for (int i = 0; i < D * D; ++i) sum += scaled[i][r] * u[i][j];
+          locals[b](r, j) = sum;
         }
     }
-    for (int j = 0; j < kSize; ++j)
-      for (int r = 0; r <= j; ++r) {
-        double sum = 0;
-        for (int i = 0; i < D * D; ++i) sum += scaled[i][r] * u[i][j];
-        (*local)(r, j) = sum;
-      }
   });
 }
 

@@ -40,24 +40,43 @@ Eigen::SparseMatrix<double> triplet_reference(const Eigen::MatrixXi& elements, i
 }
 
 // Assembled on 1, 2, 3 and 8 threads (each thread's part of the nonzeros,
-// with the elements on the parts' borders visited by each of their parts).
+// with the elements on the parts' borders visited by each of their parts),
+// one local matrix at a time and in batches.
 template <int D, int N>
 void check_against_reference(const Eigen::MatrixXi& elements, int num_vertices) {
   akvf::ElementMatrix<D, N> matrix(elements, num_vertices);
   const Eigen::SparseMatrix<double> reference = triplet_reference<D, N>(elements, num_vertices);
   for (const int threads : {1, 2, 3, 8}) {
     CAPTURE(threads);
-    tbb::task_arena(threads).execute([&] {
-      matrix.assemble([](int e, typename akvf::ElementMatrix<D, N>::Local* M) { local_matrix<D, N>(e, M); });
-    });
-    const Eigen::SparseMatrix<double>& upper = matrix.upper();
-    REQUIRE(upper.isCompressed());
-    REQUIRE(upper.nonZeros() == reference.nonZeros());
-    const auto same = [](const auto* a, const auto* b, Eigen::Index n) { return std::equal(a, a + n, b); };
-    CHECK(same(upper.outerIndexPtr(), reference.outerIndexPtr(), upper.outerSize() + 1));
-    CHECK(same(upper.innerIndexPtr(), reference.innerIndexPtr(), upper.nonZeros()));
-    // The same sums in the same order (increasing element): the same bits.
-    CHECK(same(upper.valuePtr(), reference.valuePtr(), upper.nonZeros()));
+    for (const bool batches : {false, true}) {
+      CAPTURE(batches);
+      bool batches_valid = true;
+      tbb::task_arena(threads).execute([&] {
+        using Local = typename akvf::ElementMatrix<D, N>::Local;
+        if (!batches) {
+          matrix.assemble([](int e, Local* M) { local_matrix<D, N>(e, M); });
+          return;
+        }
+        matrix.assemble_batches([&](const int* batch, int count, Local* locals) {
+          // 1 to kBatch elements, in increasing order.
+          if (count < 1 || count > akvf::ElementMatrix<D, N>::kBatch) batches_valid = false;
+          for (int i = 0; i < count; ++i) {
+            if (batch[i] < 0 || batch[i] >= elements.rows() || (i > 0 && batch[i] <= batch[i - 1]))
+              batches_valid = false;
+            local_matrix<D, N>(batch[i], &locals[i]);
+          }
+        });
+      });
+      CHECK(batches_valid);
+      const Eigen::SparseMatrix<double>& upper = matrix.upper();
+      REQUIRE(upper.isCompressed());
+      REQUIRE(upper.nonZeros() == reference.nonZeros());
+      const auto same = [](const auto* a, const auto* b, Eigen::Index n) { return std::equal(a, a + n, b); };
+      CHECK(same(upper.outerIndexPtr(), reference.outerIndexPtr(), upper.outerSize() + 1));
+      CHECK(same(upper.innerIndexPtr(), reference.innerIndexPtr(), upper.nonZeros()));
+      // The same sums in the same order (increasing element): the same bits.
+      CHECK(same(upper.valuePtr(), reference.valuePtr(), upper.nonZeros()));
+    }
   }
 }
 

@@ -189,6 +189,17 @@ bool ElementMatrix<D, N>::same_pattern(const ElementMatrix& other) const {
 
 template <int D, int N>
 void ElementMatrix<D, N>::assemble(const LocalFunction& local) {
+  assemble_parts<1>([&](const int* elements, int, Local* locals) { local(elements[0], locals); });
+}
+
+template <int D, int N>
+void ElementMatrix<D, N>::assemble_batches(const LocalBatchFunction& locals) {
+  assemble_parts<kBatch>(locals);
+}
+
+template <int D, int N>
+template <int Batch, class ComputeLocals>
+void ElementMatrix<D, N>::assemble_parts(const ComputeLocals& compute) {
   const Pattern& pattern = *pattern_;
   const int count = tbb::this_task_arena::max_concurrency();
   if (static_cast<int>(parts_->bounds.size()) != count + 1)
@@ -198,18 +209,26 @@ void ElementMatrix<D, N>::assemble(const LocalFunction& local) {
   parallel_for_index(count, 1, [&](int p) {
     const int low = parts.bounds[p], high = parts.bounds[p + 1];
     std::fill(values + low, values + high, 0.0);
-    Local M;
-    for (int k = parts.offsets[p]; k < parts.offsets[p + 1]; ++k) {
-      const int item = parts.items[k], e = item >= 0 ? item : ~item;
-      local(e, &M);
-      const int* entry = pattern.entries.data() + static_cast<std::size_t>(kSlots) * e;
-      if (item >= 0) {
-        for (int j = 0; j < kLocalSize; ++j)
-          for (int i = 0; i <= j; ++i) values[*entry++] += M(i, j);
-      } else {
-        for (int j = 0; j < kLocalSize; ++j)
-          for (int i = 0; i <= j; ++i, ++entry)
-            if (*entry >= low && *entry < high) values[*entry] += M(i, j);
+    Local batch[Batch];
+    int elements[Batch];
+    for (int first = parts.offsets[p]; first < parts.offsets[p + 1]; first += Batch) {
+      const int size = std::min(Batch, parts.offsets[p + 1] - first);
+      for (int i = 0; i < size; ++i) {
+        const int item = parts.items[first + i];
+        elements[i] = item >= 0 ? item : ~item;
+      }
+      compute(elements, size, batch);
+      for (int i = 0; i < size; ++i) {
+        const Local& M = batch[i];
+        const int* entry = pattern.entries.data() + static_cast<std::size_t>(kSlots) * elements[i];
+        if (parts.items[first + i] >= 0) {
+          for (int j = 0; j < kLocalSize; ++j)
+            for (int r = 0; r <= j; ++r) values[*entry++] += M(r, j);
+        } else {
+          for (int j = 0; j < kLocalSize; ++j)
+            for (int r = 0; r <= j; ++r, ++entry)
+              if (*entry >= low && *entry < high) values[*entry] += M(r, j);
+        }
       }
     }
   });

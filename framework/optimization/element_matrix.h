@@ -48,6 +48,13 @@ class ElementMatrix {
   using Local = Eigen::Matrix<double, kLocalSize, kLocalSize>;
   // Fills the local matrix of element e (only its upper triangle is read).
   using LocalFunction = std::function<void(int e, Local* local)>;
+  // Fills the local matrices of `count` (1 to kBatch) elements, elements[i]'s
+  // in locals[i]: for local matrices whose computation is one long chain of
+  // dependent operations (a closed-form eigensystem's square roots and
+  // divisions), computing a batch's chains one after another lets the
+  // processor overlap them.
+  static constexpr int kBatch = 8;
+  using LocalBatchFunction = std::function<void(const int* elements, int count, Local* locals)>;
 
   //   elements  #E by N vertex indices
   ElementMatrix(const Eigen::MatrixXi& elements, int num_vertices);
@@ -71,6 +78,9 @@ class ElementMatrix {
 
   // On the calling arena's threads.
   void assemble(const LocalFunction& local);
+  // The same, the local matrices computed in batches (each thread's elements
+  // in increasing order, as above; the sums are the same bits).
+  void assemble_batches(const LocalBatchFunction& locals);
   // upper() += shift I (Tikhonov regularization).
   void add_to_diagonal(double shift);
   // upper() *= factor (mean_diagonal() follows).
@@ -106,6 +116,10 @@ class ElementMatrix {
     std::vector<int> offsets;
     std::vector<int> items;
   };
+  // assemble()'s loop, the local matrices computed `Batch` at a time by
+  // compute(elements, count, locals).
+  template <int Batch, class ComputeLocals>
+  void assemble_parts(const ComputeLocals& compute);
   // On a shared pattern, without values (the factories above fill upper_).
   ElementMatrix(std::shared_ptr<const Pattern> pattern, std::shared_ptr<const Parts> parts);
   // `count` parts of about the same number of additions; outer: upper_'s column starts.
