@@ -34,22 +34,29 @@ const Eigen::SparseMatrix<double>& ContactCurvature::at(const Eigen::VectorXd& x
   bool grown = false;
   for (const BoundaryContact::ActiveTerm& term : terms) grown = add_pairs(term.vertex) || grown;
   // A pattern that has to grow takes the terms within twice their reach as
-  // well (module comment).
-  if (grown)
+  // well; one whose pairs are mostly out of that reach is rebuilt from it
+  // (module comment). A term couples at most 6 pairs, so below a quarter of
+  // the pattern in 6 |terms| the terms within the margin are counted.
+  if (grown) {
     for (const std::array<int, 3>& vertex : contact_->terms_within(x, kProspectiveReach)) add_pairs(vertex.data());
+  } else if (6 * terms.size() < sorted_pairs_.size() / kShrinkRatio) {
+    const std::vector<std::array<int, 3>> near = contact_->terms_within(x, kProspectiveReach);
+    if (6 * near.size() < sorted_pairs_.size() / kShrinkRatio) {
+      pairs_.clear();
+      sorted_pairs_.clear();
+      for (const std::array<int, 3>& vertex : near) add_pairs(vertex.data());
+      grown = true;
+    }
+  }
   if (grown) {
     std::sort(sorted_pairs_.begin(), sorted_pairs_.end());
     ++version_;
+    build_pattern();
   }
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(4 * sorted_pairs_.size() + 36 * terms.size());
-  // Every pair's block, zero, so that the pattern is the pairs'.
-  for (const std::uint64_t pair : sorted_pairs_) {
-    const auto i = static_cast<int>(pair / n), j = static_cast<int>(pair % n);
-    for (int r = 0; r < 2; ++r)
-      for (int c = 0; c < 2; ++c)
-        if (i != j || r <= c) entries.emplace_back(2 * i + r, 2 * j + c, 0.0);
-  }
+  // The values: zero on the pattern, then each term's blocks added in the
+  // terms' order.
+  double* values = matrix_.valuePtr();
+  std::fill(values, values + matrix_.nonZeros(), 0.0);
   const bool whole = model == ContactModel::kProjectedHessian;
   for (const BoundaryContact::ActiveTerm& term : terms) {
     const Eigen::Matrix<double, 6, 6> hessian =
@@ -63,11 +70,33 @@ const Eigen::SparseMatrix<double>& ContactCurvature::at(const Eigen::VectorXd& x
                   : Eigen::Matrix2d(term.curvature * term.gradient[a] * term.gradient[b].transpose());
         for (int r = 0; r < 2; ++r)
           for (int c = 0; c < 2; ++c)
-            if (i != j || r <= c) entries.emplace_back(2 * i + r, 2 * j + c, block(r, c));
+            if (i != j || r <= c) values[entry(2 * i + r, 2 * j + c)] += block(r, c);
       }
   }
-  matrix_.setFromTriplets(entries.begin(), entries.end());
   return matrix_;
+}
+
+void ContactCurvature::build_pattern() {
+  // Each pair's 2 x 2 block (the upper triangle of a diagonal one), columns
+  // compressed, rows increasing within each column.
+  const auto n = static_cast<std::uint64_t>(num_vertices_);
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(4 * sorted_pairs_.size());
+  for (const std::uint64_t pair : sorted_pairs_) {
+    const auto i = static_cast<int>(pair / n), j = static_cast<int>(pair % n);
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c)
+        if (i != j || r <= c) entries.emplace_back(2 * i + r, 2 * j + c, 0.0);
+  }
+  matrix_.setFromTriplets(entries.begin(), entries.end());
+  matrix_.makeCompressed();
+}
+
+int ContactCurvature::entry(int row, int column) const {
+  const int* rows = matrix_.innerIndexPtr();
+  const int* first = rows + matrix_.outerIndexPtr()[column];
+  const int* last = rows + matrix_.outerIndexPtr()[column + 1];
+  return static_cast<int>(std::lower_bound(first, last, row) - rows);
 }
 
 }  // namespace akvf

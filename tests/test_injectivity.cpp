@@ -301,7 +301,8 @@ TEST_CASE("a globally injective map restarts at the energy it ended with, the bo
   CHECK(std::abs(again.trace.front().energy - first.trace.back().energy) <= 1e-9 * first.trace.back().energy);
 }
 
-TEST_CASE("the barrier's curvature in a factored P: the sum of its terms, a pattern that only grows, P + C solved") {
+TEST_CASE(
+    "the barrier's curvature in a factored P: the sum of its terms, a pattern that grows and shrinks, P + C solved") {
   // The helicoid strip held off its own overlap: its final map presses the
   // boundary on itself.
   const ParamConfig config;
@@ -341,15 +342,38 @@ TEST_CASE("the barrier's curvature in a factored P: the sum of its terms, a patt
     for (int a : vertex)
       for (int b : vertex)
         if (a <= b) CHECK(stored(2 * a, 2 * b + 1));
-  // Another map's terms add their pairs; back at x, C is the same on the
-  // larger pattern, and the pattern does not change again.
+  // The pattern's vertex pairs: a diagonal pair stores 3 entries (2 on the
+  // diagonal), another 4.
+  const auto pairs_of = [](const Eigen::SparseMatrix<double>& matrix) {
+    Eigen::Index diagonal = 0;
+    for (int column = 0; column < matrix.outerSize(); ++column)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, column); it; ++it) diagonal += it.row() == column;
+    return diagonal / 2 + (matrix.nonZeros() - 3 * diagonal / 2) / 4;
+  };
+  // Another map's terms add their pairs (the start map's boundary, pressed
+  // on a circle, brings many). Back at x, C is the same; the pattern is
+  // rebuilt from the terms within twice their reach, as the first call at x
+  // built it, since they couple fewer than a quarter of its pairs (6 a term
+  // at most); and it does not change again.
   const Eigen::Index nonzeros = curvature.at(x).nonZeros();
-  curvature.at(setup.x0);
   const int version = curvature.pattern_version();
+  const Eigen::Index grown_pairs = pairs_of(curvature.at(setup.x0));
+  CHECK(curvature.pattern_version() == version + 1);
+  REQUIRE(6 * near.size() * ContactCurvature::kShrinkRatio < static_cast<std::size_t>(grown_pairs));
   const Eigen::SparseMatrix<double>& again = curvature.at(x);
-  CHECK(again.nonZeros() >= nonzeros);
-  CHECK(curvature.pattern_version() == version);
+  CHECK(curvature.pattern_version() == version + 2);
+  CHECK(again.nonZeros() == nonzeros);
   CHECK((Eigen::MatrixXd(again) - upper).norm() == 0);
+  curvature.at(x);
+  CHECK(curvature.pattern_version() == version + 2);
+  // A pattern whose near terms keep a quarter of its pairs stays: x0's
+  // pattern is kept at x0 after x's pairs are added to it.
+  curvature.at(setup.x0);
+  const int at_start = curvature.pattern_version();
+  CHECK((Eigen::MatrixXd(curvature.at(setup.x0)) -
+         Eigen::MatrixXd(ContactCurvature(setup.boundary_contact, nv).at(setup.x0)))
+            .norm() == 0);
+  CHECK(curvature.pattern_version() == at_start);
 
   // Projected Newton's C: each term's whole Hessian with its negative
   // eigenvalues clamped, positive semi-definite.
