@@ -70,7 +70,7 @@ TriMesh helicoid_strip(double turns, double rise, int radial = 4, int around = 9
 
 }  // namespace
 
-TEST_CASE("box pairs: every overlapping pair once, in order, as a brute force finds them") {
+TEST_CASE("box pairs: every overlapping pair once, in order (or the grid's), as a brute force finds them") {
   std::mt19937 random(3);
   std::uniform_real_distribution<double> place(0, 10), size(0, 1.5);
   std::vector<Box2> a(200), b(150);
@@ -85,6 +85,18 @@ TEST_CASE("box pairs: every overlapping pair once, in order, as a brute force fi
     for (int j = 0; j < 150; ++j)
       if (a[i].overlaps(b[j])) expected.push_back({i, j});
   CHECK(found == expected);
+  // The grid's order: the same pairs, i increasing, each once.
+  std::vector<std::pair<int, int>> unordered;
+  for_each_overlapping_pair(
+      a, b,
+      [&](int i, int j) {
+        unordered.push_back({i, j});
+      },
+      PairOrder::kGrid);
+  CHECK(std::is_sorted(unordered.begin(), unordered.end(),
+                       [](const auto& p, const auto& q) { return p.first < q.first; }));
+  std::sort(unordered.begin(), unordered.end());
+  CHECK(unordered == expected);
 }
 
 TEST_CASE("the first contact step: a corner moving onto the opposite edge, and none moving apart") {

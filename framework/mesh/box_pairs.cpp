@@ -12,7 +12,7 @@ bool finite(const Box2& box) {
 }  // namespace
 
 void for_each_overlapping_pair(const std::vector<Box2>& a, const std::vector<Box2>& b,
-                               const std::function<void(int i, int j)>& visit) {
+                               const std::function<void(int i, int j)>& visit, PairOrder order) {
   Box2 all{INFINITY, INFINITY, -INFINITY, -INFINITY};
   double extent_sum = 0;
   int count = 0;
@@ -68,7 +68,11 @@ void for_each_overlapping_pair(const std::vector<Box2>& a, const std::vector<Box
         const int j = items[k];
         if (seen[j] == i) continue;
         seen[j] = i;
-        if (box.overlaps(b[j])) candidates.push_back(j);
+        if (!box.overlaps(b[j])) continue;
+        if (order == PairOrder::kGrid)
+          visit(i, j);
+        else
+          candidates.push_back(j);
       }
     });
     std::sort(candidates.begin(), candidates.end());

@@ -15,11 +15,17 @@ struct Box2 {
   }
 };
 
+// The order of the pairs for each i of `a`: increasing j, or the grid's
+// own order (the same on every run, but not sorted; for a caller that only
+// takes a minimum or a maximum, which then skips a sort per box).
+enum class PairOrder { kIncreasing, kGrid };
+
 // Calls visit(i, j) once for every i of `a` and j of `b` whose boxes overlap
-// (closed boxes), in increasing i and, for each i, increasing j: the order,
+// (closed boxes), in increasing i and, for each i, in `order`: the order,
 // and so any sum the caller forms, is the same on every run. Boxes with a
 // non-finite coordinate overlap nothing.
 void for_each_overlapping_pair(const std::vector<Box2>& a, const std::vector<Box2>& b,
-                               const std::function<void(int i, int j)>& visit);
+                               const std::function<void(int i, int j)>& visit,
+                               PairOrder order = PairOrder::kIncreasing);
 
 }  // namespace akvf

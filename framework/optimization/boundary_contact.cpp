@@ -144,17 +144,20 @@ double BoundaryContact::first_contact_step(const Eigen::VectorXd& x, const Eigen
                                point(x, e.a) + t1 * point(d, e.a), point(x, e.b) + t1 * point(d, e.b)},
                               0);
     }
-    for_each_overlapping_pair(swept_corners, swept_edges, [&](int i, int j) {
-      const Corner& c = corners_[i];
-      const Edge& e = edges_[j];
-      if (c.loop != e.loop || c.vertex == e.a || c.vertex == e.b) return;
-      // A pair whose boxes met in the slice before was solved there, over
-      // the whole interval left.
-      if (k > 0 && earlier_corners[i].overlaps(earlier_edges[j])) return;
-      const double t = vertex_edge_contact(point(x, c.vertex), point(d, c.vertex), point(x, e.a), point(d, e.a),
-                                           point(x, e.b), point(d, e.b), std::min(horizon, step));
-      step = std::min(step, t);
-    });
+    for_each_overlapping_pair(
+        swept_corners, swept_edges,
+        [&](int i, int j) {
+          const Corner& c = corners_[i];
+          const Edge& e = edges_[j];
+          if (c.loop != e.loop || c.vertex == e.a || c.vertex == e.b) return;
+          // A pair whose boxes met in the slice before was solved there, over
+          // the whole interval left.
+          if (k > 0 && earlier_corners[i].overlaps(earlier_edges[j])) return;
+          const double t = vertex_edge_contact(point(x, c.vertex), point(d, c.vertex), point(x, e.a), point(d, e.a),
+                                               point(x, e.b), point(d, e.b), std::min(horizon, step));
+          step = std::min(step, t);
+        },
+        PairOrder::kGrid);  // a minimum: any order gives it
   }
   return step;
 }
