@@ -34,9 +34,10 @@ const Eigen::SparseMatrix<double>& ContactCurvature::at(const Eigen::VectorXd& x
   bool grown = false;
   for (const BoundaryContact::ActiveTerm& term : terms) grown = add_pairs(term.vertex) || grown;
   // A pattern that has to grow takes the terms within twice their reach as
-  // well; one whose pairs are mostly out of that reach is rebuilt from it
-  // (module comment). A term couples at most 6 pairs, so below a quarter of
-  // the pattern in 6 |terms| the terms within the margin are counted.
+  // well; one whose pairs are mostly out of that reach is rebuilt from them
+  // (module comment). A term couples at most 6 pairs, and the terms within
+  // the margin include the active ones: they are looked for only when 6 per
+  // active term is below a quarter of the pattern.
   if (grown) {
     for (const std::array<int, 3>& vertex : contact_->terms_within(x, kProspectiveReach)) add_pairs(vertex.data());
   } else if (6 * terms.size() < sorted_pairs_.size() / kShrinkRatio) {

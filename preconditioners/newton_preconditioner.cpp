@@ -209,7 +209,7 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
   // corner k's hat function). Only the upper triangle is read. A batch's
   // eigensystems come first, one after another: each is a chain of square
   // roots and divisions that the processor overlaps with the next one's
-  // (tricera_b subdivided once: 2.1 -> 1.8 ms an assembly).
+  // (docs/notes/2026-12-02-assembly-batches-and-contact-pattern.md).
   matrix->assemble_batches([&](const int* elements, int count, typename Matrix::Local* locals) {
     typename HessianEigensystem<D>::Eigenpairs batch[Matrix::kBatch];
     for (int b = 0; b < count; ++b) batch[b] = eigensystem.hessian_eigensystem(objective_.jacobian(x, elements[b]));
