@@ -192,10 +192,35 @@ template <int D>
 const Eigen::SparseMatrix<double>& FactoredPreconditioner<D>::system() {
   // Until a term comes within reach C has no entry, and P + C is P.
   if (!options_.contact_curvature || contact_.nonZeros() == 0) return matrix_.upper();
-  if (!system_current_) {
-    system_ = matrix_.upper() + contact_;
-    system_current_ = true;
+  if (system_current_) return system_;
+  const Eigen::SparseMatrix<double>& P = matrix_.upper();
+  const int version = options_.contact_curvature->pattern_version();
+  if (version != system_contact_version_ || P.nonZeros() != system_p_nonzeros_) {
+    // The pattern of P + C, and where each of their nonzeros lands in it.
+    system_ = P + contact_;
+    system_contact_version_ = version;
+    system_p_nonzeros_ = P.nonZeros();
+    const auto slots = [this](const Eigen::SparseMatrix<double>& part, std::vector<int>* slot) {
+      slot->resize(static_cast<std::size_t>(part.nonZeros()));
+      for (int column = 0; column < part.outerSize(); ++column) {
+        int k = system_.outerIndexPtr()[column];
+        for (int p = part.outerIndexPtr()[column]; p < part.outerIndexPtr()[column + 1]; ++p) {
+          while (system_.innerIndexPtr()[k] < part.innerIndexPtr()[p]) ++k;
+          (*slot)[static_cast<std::size_t>(p)] = k;
+        }
+      }
+    };
+    slots(P, &system_slot_of_p_);
+    slots(contact_, &system_slot_of_c_);
+  } else {
+    // The expression's sums: P's value plus C's where both have one, each
+    // alone (plus 0) elsewhere.
+    double* values = system_.valuePtr();
+    std::fill(values, values + system_.nonZeros(), 0.0);
+    for (std::size_t p = 0; p < system_slot_of_p_.size(); ++p) values[system_slot_of_p_[p]] += P.valuePtr()[p];
+    for (std::size_t c = 0; c < system_slot_of_c_.size(); ++c) values[system_slot_of_c_[c]] += contact_.valuePtr()[c];
   }
+  system_current_ = true;
   return system_;
 }
 

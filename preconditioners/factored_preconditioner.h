@@ -261,7 +261,12 @@ class FactoredPreconditioner : public Preconditioner {
   Eigen::SparseMatrix<double> contact_;  // C at the last update
   Eigen::SparseMatrix<double> system_;   // P + C, when C is included
   bool system_current_ = false;          // system_ holds the current P + C
-  int analyzed_contact_version_ = 0;     // C's pattern when cholesky_ was analyzed
+  // Where each nonzero of P and of C lands in system_, for C's pattern of
+  // this version and P's of this many nonzeros (-1: not built).
+  std::vector<int> system_slot_of_p_, system_slot_of_c_;
+  int system_contact_version_ = -1;
+  Eigen::Index system_p_nonzeros_ = -1;
+  int analyzed_contact_version_ = 0;  // C's pattern when cholesky_ was analyzed
   SparseCholesky cholesky_;
   AlgebraicMultigrid multigrid_;
   ComponentMotions multigrid_null_basis_;  // at the hierarchy's setup

@@ -409,6 +409,7 @@ TEST_CASE(
   // the Woodbury identity over every term.
   AkvfOptions2D with_contact;
   with_contact.factor.contact_curvature = std::make_shared<ContactCurvature>(setup.boundary_contact, nv);
+  with_contact.factor.reuse_tolerance = 0;  // a factorization at every update (below)
   AkvfPreconditioner2D factored(*setup.objective, with_contact);
   ContactPreconditioner woodbury(std::make_unique<AkvfPreconditioner2D>(*setup.objective), setup.boundary_contact,
                                  static_cast<int>(terms.size()));
@@ -421,4 +422,24 @@ TEST_CASE(
   factored.apply(gradient, &d_factored);
   woodbury.apply(gradient, &d_woodbury);
   CHECK((d_factored - d_woodbury).norm() <= 1e-6 * d_woodbury.norm());
+  // P + C again on the same pattern (its values added where the first
+  // update placed them): at another map, the same bits as a preconditioner
+  // built there; at x again, the first direction.
+  Eigen::VectorXd moved = x + 1e-4 * d_factored, moved_gradient;
+  const double moved_energy = setup.objective->value_and_gradient(moved, &moved_gradient);
+  const OptimizationState moved_state{moved, moved_gradient, moved_energy, 1};
+  REQUIRE(setup.boundary_contact->active_terms(moved).size() == terms.size());
+  factored.update(moved_state);
+  AkvfOptions2D fresh_options = with_contact;
+  fresh_options.factor.contact_curvature = std::make_shared<ContactCurvature>(setup.boundary_contact, nv);
+  fresh_options.factor.contact_curvature->at(x);  // the same pattern as factored's
+  AkvfPreconditioner2D fresh(*setup.objective, fresh_options);
+  fresh.update(moved_state);
+  Eigen::VectorXd d_moved, d_fresh, d_again;
+  factored.apply(moved_gradient, &d_moved);
+  fresh.apply(moved_gradient, &d_fresh);
+  CHECK((d_moved - d_fresh).norm() == 0);
+  factored.update(state);
+  factored.apply(gradient, &d_again);
+  CHECK((d_again - d_factored).norm() == 0);
 }
