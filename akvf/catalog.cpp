@@ -30,9 +30,16 @@ const FactorOptions& newton_phase_options(const PreconditionerSettings3D& settin
 // in 3D AKVF scales K by s_k, the energy's curvature along its last step
 // (akvf_preconditioner_3d.h, s_1 = c), so that in both its Newton step at
 // an isometry, the switch rule's unit (energy_scale.h,
-// switching_preconditioner.h), is 1.
+// switching_preconditioner.h), is 1. In 2D the faces whose thinnest height
+// the map stretched more than 100 times, where K holds below 1e-4 of the
+// energy's curvature, carry that curvature too (akvf_preconditioner_2d.h):
+// two orders of magnitude above ordinary distortion (the start maps of the
+// shared meshes stretch a face's height at most 33 times, 150 with their
+// vertices jittered by a fifth of an edge) and two below the slivers of
+// the input (tricera_b's, 1.4e4).
 AkvfOptions2D far_phase(AkvfOptions2D options) {
   options.energy_scaling = true;
+  options.sliver_stretch = 100;
   return options;
 }
 AkvfOptions3D far_phase(AkvfOptions3D options) { return options; }

@@ -11,7 +11,24 @@
 // curvature at the rest isometry over K's (energy_scale.h), so that the
 // direction's unit step, the line search's first trial, is Newton's step
 // at an isometry (for symmetric Dirichlet the unscaled one is 4 times it).
+//
+// Slivers (AkvfOptions2D::sliver_stretch, the default's AKVF phase): K
+// measures the velocity gradient on the current face, the energy the
+// Jacobian's change on the rest face, and the two differ by the face's hat
+// gradients, rest over current. A sliver of the input (a rest face of
+// near-zero height) opened up by the start map (Tutte's ignores the rest
+// shape) has its thinnest height stretched by a factor s, and there K holds
+// about 1 / s^2 of the energy's curvature (symmetric Dirichlet's |J|^2 term
+// alone curves as 2 |dJ|^2), with area scaling another 1 / det J. K^-1 g
+// then closes the face within a tiny step and the flip-free bound holds the
+// whole map there: tricera_b's sliver (5.6e-6 of the median area), opened
+// to det J 1e4, held AKVF's steps at 1e-5 to 1e-4 until the default's
+// stall rule gave up on AKVF. A face whose ratio |Dm^-1|^2 / |Ds^-1|^2 (the
+// hat gradients' squared norms, rest over current: s^2) exceeds
+// sliver_stretch^2 adds projected Newton's block w_f G_f^T [H_f]_+ G_f to
+// its part of K, so that the direction sees the curvature that holds it.
 #include <optional>
+#include <vector>
 
 #include "akvf/mesh_objective.h"
 #include "preconditioners/factored_preconditioner.h"
@@ -32,12 +49,16 @@ struct AkvfOptions2D {
   std::optional<double> divergence_weight;
   // c K_beta instead of K_beta (above).
   bool energy_scaling = false;
+  // Faces whose thinnest height the map stretched more than this many times
+  // carry the energy's own curvature too (above); unset: K alone.
+  std::optional<double> sliver_stretch;
 };
 
 class AkvfPreconditioner2D final : public FactoredPreconditioner2D {
  public:
   explicit AkvfPreconditioner2D(const MeshObjective2D& objective, AkvfOptions2D options = {});
   std::string name() const override { return "akvf"; }
+  std::string report() const override;
 
  private:
   void assemble(const OptimizationState& state, ElementMatrix2D* matrix) override;
@@ -49,6 +70,7 @@ class AkvfPreconditioner2D final : public FactoredPreconditioner2D {
   AkvfOptions2D options_;
   double divergence_weight_;  // beta
   double energy_scale_;       // c, or 1 without energy_scaling
+  std::vector<char> sliver_;  // per face: it carried the energy's curvature in some assembly (sliver_stretch)
 };
 
 }  // namespace akvf

@@ -54,7 +54,7 @@ void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, double di
 
 void assemble_killing_operator_2d(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
                                   bool area_scaling, ElementMatrix2D* matrix, double divergence_weight,
-                                  double energy_scale) {
+                                  double energy_scale, const ElementMatrix2D::LocalFunction& add_to_face) {
   matrix->assemble([&](int f, ElementMatrix2D::Local* local) {
     Eigen::Vector2d p[3];
     for (int k = 0; k < 3; ++k) p[k] = x.segment<2>(2 * F(f, k));
@@ -64,6 +64,7 @@ void assemble_killing_operator_2d(const Eigen::MatrixXi& F, const Eigen::VectorX
       scale *= rest_area[f] / (0.5 * (e1.x() * e2.y() - e1.y() * e2.x()));
     }
     killing_local_matrix_2d(p, scale, divergence_weight, local);
+    if (add_to_face) add_to_face(f, local);
   });
 }
 

@@ -30,8 +30,10 @@ void killing_local_matrix_2d(const Eigen::Vector2d p[3], double scale, double di
 // Fills matrix with c K_beta(x) (beta = divergence_weight; 1: K(x) of Eq. 5;
 // c = energy_scale) for the faces F (#F by 3) at the interleaved UV
 // positions x; rest_area (#F, A_hat_f) is used when area_scaling.
+// add_to_face, if given, then adds to each face's local matrix (its upper
+// triangle).
 void assemble_killing_operator_2d(const Eigen::MatrixXi& F, const Eigen::VectorXd& x, const Eigen::VectorXd& rest_area,
                                   bool area_scaling, ElementMatrix2D* matrix, double divergence_weight = 1,
-                                  double energy_scale = 1);
+                                  double energy_scale = 1, const ElementMatrix2D::LocalFunction& add_to_face = nullptr);
 
 }  // namespace akvf

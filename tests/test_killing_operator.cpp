@@ -15,6 +15,8 @@
 #include "energies/mips.h"
 #include "energies/symmetric_dirichlet.h"
 #include "framework/optimization/distortion_objective.h"
+#include "framework/optimization/element_derivatives.h"
+#include "framework/optimization/flip_free_step.h"
 #include "preconditioners/akvf_preconditioner_2d.h"
 #include "preconditioners/energy_scale.h"
 #include "preconditioners/killing_operator_2d.h"
@@ -291,6 +293,66 @@ void direction_after(const akvf::DistortionObjective2D& objective, const Eigen::
 }
 
 }  // namespace
+
+TEST_CASE("a face whose thinnest height the map stretched beyond sliver_stretch carries the energy's curvature") {
+  // The unit square fanned around vertex 4, which the rest shape puts 1e-4
+  // above the bottom edge (face 0 a sliver) and the map at the centre: face
+  // 0's height grows 5000-fold, the others' at most 2-fold.
+  akvf::TriMesh mesh;
+  mesh.V.resize(5, 3);
+  mesh.V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 1e-4, 0;
+  mesh.F.resize(4, 3);
+  mesh.F << 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4;
+  const akvf::DistortionObjective2D objective = unit_area_objective(&mesh);
+  Eigen::MatrixXd uv = mesh.V.leftCols<2>();
+  uv.row(4) = 0.5 * (uv.row(0) + uv.row(2));
+  const Eigen::VectorXd x = akvf::stack_uv(uv);
+  Eigen::VectorXd g;
+  const double energy = objective.value_and_gradient(x, &g);
+  struct Assembled {
+    Eigen::MatrixXd P;
+    Eigen::VectorXd d;
+    std::string report;
+  };
+  const auto assemble = [&](std::optional<double> sliver_stretch) {
+    akvf::AkvfOptions2D options;
+    options.sliver_stretch = sliver_stretch;
+    akvf::AkvfPreconditioner2D preconditioner(objective, options);
+    preconditioner.update({x, g, energy, 1});
+    Assembled a{Eigen::MatrixXd(preconditioner.matrix().full()), {}, preconditioner.report()};
+    preconditioner.apply(g, &a.d);
+    return a;
+  };
+  const Assembled K = assemble(std::nullopt), P = assemble(100), P_far = assemble(1e4);
+  // Below the limit K is untouched, to the bit.
+  CHECK(P_far.P == K.P);
+  CHECK(P_far.d == K.d);
+  CHECK(P_far.report.find("sliver") == std::string::npos);
+  // Above it face 0 adds projected Newton's block w G^T [H]_+ G.
+  const auto G = akvf::jacobian_map<2>(objective.rest().Dm_inv[0]);
+  const Eigen::Matrix<double, 6, 6> block =
+      objective.weights()[0] * G.transpose() * objective.density().projected_hessian(objective.jacobian(x, 0)) * G;
+  Eigen::MatrixXd expected = K.P;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      expected.block<2, 2>(2 * mesh.F(0, a), 2 * mesh.F(0, b)) += block.block<2, 2>(2 * a, 2 * b);
+  CHECK((P.P - expected).norm() <= 1e-10 * expected.norm());
+  CHECK(P.report.find("the energy's own curvature at 1 stretched sliver") != std::string::npos);
+  // K alone closes the sliver within a tiny step along its direction; with
+  // the sliver's curvature the step may be long.
+  const auto sliver_flip_step = [&](const Eigen::VectorXd& d) {
+    const auto edges = [&](const Eigen::VectorXd& v) {
+      Eigen::Matrix2d E;
+      E << v.segment<2>(2 * mesh.F(0, 1)) - v.segment<2>(2 * mesh.F(0, 0)),
+          v.segment<2>(2 * mesh.F(0, 2)) - v.segment<2>(2 * mesh.F(0, 0));
+      return E;
+    };
+    const Eigen::Matrix2d Ds = edges(x), Dd = edges(-d);
+    return akvf::triangle_flip_step(Ds.data(), Dd.data());
+  };
+  MESSAGE("sliver flip step: K ", sliver_flip_step(K.d), ", with its curvature ", sliver_flip_step(P.d));
+  CHECK(sliver_flip_step(P.d) > 100 * sliver_flip_step(K.d));
+}
 
 TEST_CASE("with factorization reuse the direction solves K(x) d = g to the tolerance") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(8, 8);
