@@ -21,12 +21,13 @@
 // about 1 / s^2 of the energy's curvature (symmetric Dirichlet's |J|^2 term
 // alone curves as 2 |dJ|^2), with area scaling another 1 / det J. K^-1 g
 // then closes the face within a tiny step and the flip-free bound holds the
-// whole map there: tricera_b's sliver (5.6e-6 of the median area), opened
-// to det J 1e4, held AKVF's steps at 1e-5 to 1e-4 until the default's
-// stall rule gave up on AKVF. A face whose ratio |Dm^-1|^2 / |Ds^-1|^2 (the
-// hat gradients' squared norms, rest over current: s^2) exceeds
-// sliver_stretch^2 adds projected Newton's block w_f G_f^T [H_f]_+ G_f to
-// its part of K, so that the direction sees the curvature that holds it.
+// whole map there: K alone, tricera_b's sliver (5.6e-6 of the median area),
+// opened to det J 1e4, holds AKVF's steps at 1e-5 to 1e-4 until the
+// default's stall rule switches to Newton. A face whose ratio
+// |Dm^-1|^2 / |Ds^-1|^2 (the hat gradients' squared norms, rest over
+// current: s^2) exceeds sliver_stretch^2 adds projected Newton's block
+// w_f G_f^T [H_f]_+ G_f to its part of K, so that the direction sees the
+// curvature that holds it.
 #include <optional>
 #include <vector>
 
