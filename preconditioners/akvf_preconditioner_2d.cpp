@@ -22,7 +22,7 @@ void AkvfPreconditioner2D::assemble(const OptimizationState& state, ElementMatri
   ElementMatrix2D::LocalFunction add_energy_curvature;
   if (options_.sliver_stretch) {
     const double limit = *options_.sliver_stretch * *options_.sliver_stretch;
-    add_energy_curvature = [&](int f, ElementMatrix2D::Local* local) {
+    add_energy_curvature = [&, limit](int f, ElementMatrix2D::Local* local) {
       const Eigen::Matrix2d J = objective_.jacobian(state.x, f);
       const Eigen::Matrix2d& Dm_inv = objective_.rest().Dm_inv[f];
       // Ds^-1 = Dm^-1 J^-1 (J = Ds Dm^-1).
