@@ -33,10 +33,8 @@ const FactorOptions& newton_phase_options(const PreconditionerSettings3D& settin
 // switching_preconditioner.h), is 1. In 2D the faces whose thinnest height
 // the map stretched more than 100 times, where K holds below 1e-4 of the
 // energy's curvature, carry that curvature too (akvf_preconditioner_2d.h):
-// a round factor between ordinary distortion and the slivers of an input.
-// In this phase the shared meshes' faces stretch at most 33 times
-// (camelhead), their copies with vertices jittered by a fifth of an edge
-// at most 152 times (horse_b's), tricera_b's sliver 1.3e4 times.
+// a round factor between ordinary distortion and the slivers of an input
+// (docs/notes/2026-12-02-sliver-curvature.md has the stretches measured).
 AkvfOptions2D far_phase(AkvfOptions2D options) {
   options.energy_scaling = true;
   options.sliver_stretch = 100;
