@@ -23,9 +23,11 @@ enum class Acceleration {
 
 // The initial map of a parameterization.
 enum class InitialMap {
-  kTutte,  // Tutte's embedding, uniform weights
-  kCotan,  // cotangent weights (uniform where they fold)
-  kFile,   // the command line's: the mesh file's texture coordinates
+  kAuto,       // one chart: kConformal where flip-free and lower in energy than kTutte; else kTutte
+  kTutte,      // Tutte's embedding, uniform weights
+  kCotan,      // cotangent weights (uniform where they fold)
+  kConformal,  // the least-squares conformal map (kTutte where it folds, or several charts)
+  kFile,       // the command line's: the mesh file's texture coordinates
 };
 
 // Meshes that are not one disk.
@@ -81,11 +83,10 @@ inline std::span<const ChoiceWord<Acceleration>> choice_words(Acceleration) {
   return words;
 }
 inline std::span<const ChoiceWord<InitialMap>> choice_words(InitialMap) {
-  static constexpr ChoiceWord<InitialMap> words[] = {{InitialMap::kTutte, "tutte"},
-                                                     {InitialMap::kCotan, "cotan"},
-                                                     {InitialMap::kFile, "file"},
-                                                     {InitialMap::kTutte, "uniform"},
-                                                     {InitialMap::kCotan, "cotangent"}};
+  static constexpr ChoiceWord<InitialMap> words[] = {
+      {InitialMap::kAuto, "auto"},           {InitialMap::kTutte, "tutte"},   {InitialMap::kCotan, "cotan"},
+      {InitialMap::kConformal, "conformal"}, {InitialMap::kFile, "file"},     {InitialMap::kTutte, "uniform"},
+      {InitialMap::kCotan, "cotangent"},     {InitialMap::kConformal, "lscm"}};
   return words;
 }
 inline std::span<const ChoiceWord<Cut>> choice_words(Cut) {

@@ -256,8 +256,11 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                      &O::local_sweep, ">= 0", [](double x) { return x >= 0; }));
     f.push_back(recomputes_start(
         choice_field<O>("init", "init", "initialization",
-                        "initial map: tutte (uniform weights), cotan, or file (the mesh file's texture "
-                        "coordinates: OBJ vt, PLY u,v, taken at the energy's best uniform scale)",
+                        "initial map: auto (the conformal map where it is flip-free, with --injectivity global "
+                        "does not overlap itself, and is lower in energy than Tutte's; else Tutte's), tutte "
+                        "(uniform weights), cotan, conformal (the least-squares conformal map, Tutte's where it "
+                        "folds), or file (the mesh file's texture coordinates: OBJ vt, PLY u,v); conformal maps "
+                        "and files at the energy's best uniform scale; several charts start at Tutte's",
                         &O::init)));
     f.push_back(recomputes_start(
         choice_field<O>("cut", "cut", "cut",

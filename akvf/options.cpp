@@ -56,6 +56,9 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   set_eigen_filters(o.eigen_filter, &c.preconditioner_settings);
   c.init_from_file = o.init == InitialMap::kFile;
   c.init = o.init == InitialMap::kCotan ? TutteWeights::kCotangent : TutteWeights::kUniform;
+  c.conformal = o.init == InitialMap::kAuto        ? ConformalStart::kAuto
+                : o.init == InitialMap::kConformal ? ConformalStart::kAlways
+                                                   : ConformalStart::kNever;
   c.optimize_flaps = o.flaps;
   c.global_injectivity = o.injectivity == Injectivity::kGlobal;
   c.cut = o.cut != Cut::kNone;

@@ -17,6 +17,7 @@
 #include "framework/mesh/chart_layout.h"
 #include "framework/mesh/plane_geometry.h"
 #include "framework/mesh/vertex_graph.h"
+#include "framework/optimization/conformal_map.h"
 #include "framework/optimization/element_matrix.h"
 #include "framework/optimization/injective_objective.h"
 #include "framework/optimization/local_newton_sweep.h"
@@ -118,22 +119,102 @@ int shorten_crossing_flaps(const BoundaryContact& contact, const Eigen::MatrixXd
   return static_cast<int>(std::count_if(halvings.begin(), halvings.end(), [](int n) { return n > 0; }));
 }
 
-// setup->x0 = the Tutte map of the charts of `normalized` (+ flaps), and
-// setup->vertex_ordering, the mesh's where it is used (mesh_vertex_ordering),
-// with K's analysis in setup->analyses where it is found beside.
+// The solver of the conformal map's system: our supernodal Cholesky with
+// the analysis of the 2 x 2-block pattern where the setup holds it, else
+// analyzed with the mesh's ordering where there is one, or its own.
+BlockSpdSolver conformal_solver(const ParamSetup& setup) {
+  return [&setup](const Eigen::SparseMatrix<double>& upper, const Eigen::VectorXd& b, Eigen::VectorXd* x) {
+    SparseCholesky cholesky;
+    if (!setup.analyses || !setup.analyses->copy(upper, 2, &cholesky))
+      cholesky.analyze(upper, 2, setup.vertex_ordering.get());
+    try {
+      cholesky.factorize(upper);
+    } catch (const NotPositiveDefinite&) {
+      return false;
+    }
+    cholesky.solve(b, x);
+    return true;
+  };
+}
+
+// setup->x0 = `conformal` (the conformal map, or empty if its system did not
+// factor) at the energy's best uniform scale where it is flip-free, its
+// boundary does not cross itself with global injectivity, and, with
+// ConformalStart::kAuto, its energy is below that of the Tutte map in
+// setup->x0 (or the Tutte map's is not finite): both are maps the
+// optimizer can start from, and the lower one is nearer the minimum. On a
+// developable disk the conformal map is an isometry, the minimum of every
+// isometric energy; where a region is far from developable it shrinks it
+// exponentially, and Tutte's map is often lower.
+void take_conformal_start(const ParamConfig& config, const Eigen::MatrixXd& conformal, ParamSetup* setup) {
+  const Objective& objective = *setup->objective;
+  std::string why_not;
+  Eigen::VectorXd x;
+  if (conformal.rows() == 0) {
+    why_not = "its system is not positive definite";
+  } else {
+    x = stack_uv(conformal);
+    if (const int inverted = objective.count_inverted(x); inverted > 0)
+      why_not = "it inverts " + std::to_string(inverted) + " triangle" + (inverted == 1 ? "" : "s");
+    else if (config.global_injectivity && setup->boundary_contact->count_crossings(x) > 0)
+      why_not = "its boundary crosses itself";
+  }
+  if (!why_not.empty()) {
+    if (config.conformal == ConformalStart::kAlways)
+      setup->warnings.push_back("the conformal map is not the start: " + why_not + "; starting from the Tutte map");
+    return;
+  }
+  x *= best_uniform_scale(objective, x);
+  const double energy = objective.value(x);
+  if (config.conformal == ConformalStart::kAuto && !(std::isfinite(energy) && !(objective.value(setup->x0) <= energy)))
+    return;
+  setup->x0 = std::move(x);
+  setup->flaps_moved = 0;
+  setup->flaps_shortened = 0;
+  setup->initial_map = InitialMap::kConformal;
+}
+
+// setup->x0 = the Tutte map of the charts of `normalized` (+ flaps), or the
+// conformal map of the one chart where take_conformal_start takes it (asked
+// for by config.conformal), and setup->vertex_ordering, the mesh's where it is
+// used (mesh_vertex_ordering), with K's analysis in setup->analyses where it
+// is found beside. The conformal map is computed beside the Tutte solve too.
 void start_at_tutte_map(const ParamConfig& config, const TriMesh& normalized, ParamSetup* setup) {
+  // The run's threads, the dense kernels' (OpenBLAS) included: the conformal
+  // map's factor has the bits of the same thread count wherever the setup runs.
+  const ThreadLimit threads(config.threads);
   tbb::task_group beside;
   SpdSolver solver;  // Eigen's
+  const bool conformal_tried = config.conformal != ConformalStart::kNever && setup->disk.boundary_loops.size() == 1;
+  Eigen::MatrixXd conformal;
+  const auto conformal_of = [&] {
+    if (conformal_tried)
+      conformal = conformal_map(normalized, setup->objective->rest(), setup->disk.boundary_loops.front(),
+                                conformal_solver(*setup));
+  };
   if (tutte_by_cholmod(normalized)) {
-    setup->vertex_ordering = mesh_vertex_ordering(upper_vertex_graph(normalized.F, normalized.num_vertices()));
+    const UpperVertexGraph graph = upper_vertex_graph(normalized.F, normalized.num_vertices());
+    setup->vertex_ordering = mesh_vertex_ordering(graph);
     solver = tutte_solver(setup->vertex_ordering);
+    if (conformal_tried && !config.global_injectivity) {
+      if (!setup->analyses) setup->analyses = std::make_shared<SymbolicAnalysisCache>();
+      beside.run([&, pattern = block_upper_pattern<2>(graph)] {
+        setup->analyses->prepare(pattern, 2, setup->vertex_ordering.get());
+        conformal_of();
+      });
+    } else {
+      beside.run(conformal_of);
+    }
   } else if (!config.global_injectivity) {
     if (!setup->analyses) setup->analyses = std::make_shared<SymbolicAnalysisCache>();
     beside.run([&] {
       const UpperVertexGraph graph = upper_vertex_graph(normalized.F, normalized.num_vertices());
       setup->vertex_ordering = mesh_vertex_ordering(graph);
       setup->analyses->prepare(block_upper_pattern<2>(graph), 2, setup->vertex_ordering.get());
+      conformal_of();
     });
+  } else {
+    beside.run(conformal_of);  // ordered and analyzed there (the run's matrices have the barrier's entries too)
   }
   Eigen::MatrixXd UV;
   try {
@@ -151,6 +232,8 @@ void start_at_tutte_map(const ParamConfig& config, const TriMesh& normalized, Pa
       setup->flaps_shortened = shorten_crossing_flaps(*setup->boundary_contact, tutte, &UV);
   }
   setup->x0 = stack_uv(UV);
+  setup->initial_map = config.init == TutteWeights::kCotangent ? InitialMap::kCotan : InitialMap::kTutte;
+  if (conformal_tried) take_conformal_start(config, conformal, setup);
 }
 
 }  // namespace
@@ -194,6 +277,7 @@ ParamSetup prepare_parameterization(const TriMesh& input, const std::string& nam
           "Python uv0=)");
     setup.x0 =
         start_from_map(setup, config, config.start_uv, name + ": the texture coordinates", true, &setup.warnings);
+    setup.initial_map = InitialMap::kFile;
   } else {
     start_at_tutte_map(config, normalized, &setup);
   }

@@ -42,6 +42,7 @@ struct Parameterizer::State {
     result.uv = output_uv(final_setup(from, run), run.result.x);
     result.uv_faces = output_uv_faces(final_setup(from, run));
     fill_run_fields(run.result, run.preconditioner_statistics, run.preconditioner_report, from.warnings, &result);
+    result.initial_map = from.initial_map;
     result.boundary_crossings = run.boundary_crossings;
     result.overlap_fraction = run.overlap.fraction();
     result.distortion_energy = run.distortion_energy;
@@ -101,6 +102,7 @@ ParameterizeResult Parameterizer::solve(const Eigen::MatrixXd& uv0, const std::v
   ParamSetup from = state_->setup;
   from.warm_start = {};
   from.x0 = start_from_map(state_->setup, state_->config, uv0, "the start map", false, nullptr);
+  from.initial_map = InitialMap::kFile;
   return state_->run(from, callbacks);
 }
 

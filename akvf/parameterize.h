@@ -41,7 +41,7 @@ struct ParameterizeOptions {
   std::optional<double> local_sweep;               // > 0: local Newton sweeps after bound-set steps (the
                                                    // vertices whose |g_v|^2 passes it times the mean); 0 = off;
                                                    // none ("auto"): 4 for akvf-newton, off for the others
-  InitialMap init = InitialMap::kTutte;            // kFile is the command line's (the API takes
+  InitialMap init = InitialMap::kAuto;             // kFile is the command line's (the API takes
                                                    // Parameterizer::solve(uv0))
   Cut cut = Cut::kNone;                            // kAuto: cut closed / multi-boundary / higher-genus /
                                                    // multi-component meshes into disk charts (uv_faces);
@@ -96,6 +96,9 @@ struct ParameterizeResult {
   RunStatistics statistics;
   std::string preconditioner_report;  // the command line's one-line report
   Warnings warnings;                  // e.g. dropped unreferenced vertices
+  // The start: kTutte, kCotan, kConformal (init kAuto resolved), or kFile
+  // for a given start map (Parameterizer::solve(uv0)).
+  InitialMap initial_map = InitialMap::kTutte;
   // Self-overlap of the final map, per chart: boundary edges that cross
   // and the fraction of the area rasterized twice (about 10^6 samples).
   // Zero with injectivity "global" from an injective start.

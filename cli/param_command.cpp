@@ -65,6 +65,7 @@ Json param_summary(const std::string& mesh_file, const ParameterizeOptions& opti
   record["linear_algebra"] = linear_algebra_record(run.preconditioner_statistics, run.preconditioner_report);
   record["overlap"] = Json{{"boundary_crossings", run.boundary_crossings}, {"area_fraction", run.overlap.fraction()}};
   record["distortion_energy"] = run.distortion_energy;
+  record["initial_map"] = choice_name(setup.initial_map);
   if (setup.disk.cut) record["cut"] = cut_record(setup.disk, run.packing_splits);
   if (options.cut == Cut::kSeams) record["seams"] = seam_record(run.seams, options.max_distortion);
   if (setup.disk.repair.any() || setup.disk.welding.welded > 0 || !setup.disk.removed_faces.empty() ||
@@ -88,7 +89,14 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   if (setup.disk.cut) out << name << ": " << cut_description(setup.disk) << '\n';
   out << name << ": " << count_of(mesh.num_vertices(), "vertex", "vertices") << ", "
       << count_of(mesh.num_faces(), "face") << "; energy " << config.energy << ", preconditioner "
-      << config.preconditioner << ", " << setup.flaps_moved << " flap vertices moved";
+      << config.preconditioner << ", start: ";
+  if (setup.initial_map == akvf::InitialMap::kConformal)
+    out << "the conformal map";
+  else if (config.init_from_file)
+    out << "the file's map";
+  else
+    out << "the Tutte map" << (config.init == akvf::TutteWeights::kCotangent ? " (cotangent)" : "") << ", "
+        << setup.flaps_moved << " flap vertices moved";
   if (setup.flaps_shortened > 0) out << " (" << setup.flaps_shortened << " part of the way: the boundary would cross)";
   out << '\n';
 

@@ -190,6 +190,7 @@ py::dict solve(akvf::Parameterizer& solver, const py::object& uv0, const py::obj
   py::dict d = result_dict(result);
   d["uv"] = result.uv;
   d["uv_faces"] = result.uv_faces;
+  d["initial_map"] = std::string(akvf::choice_name(result.initial_map));
   d["boundary_crossings"] = result.boundary_crossings;
   d["overlap_fraction"] = result.overlap_fraction;
   d["distortion_energy"] = result.distortion_energy;

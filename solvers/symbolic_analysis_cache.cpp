@@ -59,6 +59,17 @@ bool SymbolicAnalysisCache::analyze(const Eigen::SparseMatrix<double>& upper, in
   return true;
 }
 
+bool SymbolicAnalysisCache::copy(const Eigen::SparseMatrix<double>& upper, int block_size,
+                                 SparseCholesky* cholesky) const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  for (const Entry& entry : entries_)
+    if (entry.matches(upper, block_size)) {
+      cholesky->copy_analysis(*entry.analysis);
+      return true;
+    }
+  return false;
+}
+
 void SymbolicAnalysisCache::prepare(const Eigen::SparseMatrix<double>& upper, int block_size,
                                     const BlockOrdering* order) {
   {

@@ -27,6 +27,9 @@ class SymbolicAnalysisCache {
   // before.
   bool analyze(const Eigen::SparseMatrix<double>& upper, int block_size, SparseCholesky* cholesky,
                const BlockOrdering* order = nullptr);
+  // Gives `cholesky` a copy of the kept analysis of the pattern of `upper`,
+  // leaving it to be taken by analyze(); false if none is kept.
+  bool copy(const Eigen::SparseMatrix<double>& upper, int block_size, SparseCholesky* cholesky) const;
   // Computes and keeps the analysis analyze() would, unless one is kept.
   void prepare(const Eigen::SparseMatrix<double>& upper, int block_size, const BlockOrdering* order = nullptr);
   // Whether an analysis of the pattern of `upper` is kept.

@@ -85,7 +85,10 @@ TEST_CASE("no inverted triangle and no overlap at any iterate on every disk mesh
     CHECK(run.crossing_iterates == 0);
     CHECK(run.result.status == akvf::TerminationStatus::kConverged);
     CHECK(akvf::is_normal_termination(run.result.status));
-    CHECK(run.result.trace.back().energy < run.result.trace.front().energy);
+    // Lower than the start, unless the start is at the energy's infimum
+    // (hilbert_b is developable: its conformal map is an isometry).
+    const double start = run.result.trace.front().energy, infimum = 4;  // symmetric Dirichlet's
+    CHECK((run.result.trace.back().energy < start || start - infimum <= 1e-9 * infimum));
   }
 }
 
@@ -320,6 +323,8 @@ TEST_CASE("every method with symmetric Dirichlet on every disk mesh: no flip, en
         INFO(label);
         akvf::ParamConfig config;
         config.preconditioner = method;
+        config.conformal = akvf::ConformalStart::kNever;  // every method from the hard start (hilbert_b's
+                                                          // conformal map is its minimum)
         config.optimizer.max_iterations = 20;
         config.global_injectivity = global;
         const std::string path = dir + "/tri/" + name;

@@ -18,6 +18,11 @@
 
 namespace akvf {
 
+// Whether the start is the conformal map (framework/optimization/conformal_map.h):
+// never, where it is flip-free and lower in energy than the Tutte map, or
+// wherever it is flip-free.
+enum class ConformalStart { kNever, kAuto, kAlways };
+
 struct ParamConfig {
   std::string energy = "symmetric-dirichlet";
   EnergySettings energy_settings;
@@ -27,6 +32,9 @@ struct ParamConfig {
   LineSearchSettings line_search_settings;
   PreconditionerSettings2D preconditioner_settings;
   TutteWeights init = TutteWeights::kUniform;
+  // The conformal map instead of Tutte's (akvf/parameterization.cpp,
+  // take_conformal_start), on one chart.
+  ConformalStart conformal = ConformalStart::kAuto;
   // Cut a closed, multi-boundary, higher-genus or multi-component mesh into
   // disks (one chart per component, framework/mesh/cut_to_disk.h) instead of
   // refusing it.
@@ -83,6 +91,7 @@ struct ParamSetup {
   // global injectivity, and every run counts their crossings at its end.
   std::shared_ptr<const BoundaryContact> boundary_contact;
   Eigen::VectorXd x0;  // initial map, interleaved, area-1 units
+  InitialMap initial_map = InitialMap::kTutte;  // what x0 is (before a warm start)
   int flaps_moved = 0;
   int flaps_shortened = 0;  // of those, moved only part of the way: the full move crossed the boundary
   // The fill-reducing ordering of the mesh's vertex graph, found with the

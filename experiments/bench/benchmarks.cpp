@@ -62,6 +62,7 @@ Fixture* fixture(const std::string& mesh, int subdivide = 0) {
     akvf::ParamConfig config;
     config.optimizer.max_iterations = 5;
     config.global_injectivity = false;  // the paper's Algorithm 1, the problem the peers solve
+    config.conformal = akvf::ConformalStart::kNever;  // from Tutte's map: the conformal one is hilbert_b's minimum
     auto f = std::make_unique<Fixture>();
     f->setup = akvf::prepare_parameterization(akvf::subdivide_midpoint(akvf::read_triangle_mesh(path), subdivide), path,
                                               config);
@@ -195,6 +196,22 @@ void BM_WholeIteration(benchmark::State& state, const std::string& mesh, int sub
     d = -d;
     benchmark::DoNotOptimize(line_search.search(objective, f->x, energy, g, d));
   }
+}
+
+// A run's setup (validation, normalization, the initial map), with the
+// Tutte map alone or with the conformal map tried beside it (init auto:
+// akvf/parameterization.cpp, take_conformal_start).
+void BM_Setup(benchmark::State& state, const std::string& mesh, akvf::ConformalStart conformal) {
+  const std::string dir = data_dir();
+  if (dir.empty()) {
+    state.SkipWithError("meshes not found: set AKVF_DATA_DIR");
+    return;
+  }
+  const akvf::TriMesh input = akvf::read_triangle_mesh(dir + "/tri/" + mesh);
+  akvf::ParamConfig config;
+  config.global_injectivity = false;
+  config.conformal = conformal;
+  for (auto _ : state) benchmark::DoNotOptimize(akvf::prepare_parameterization(input, mesh, config).x0.data());
 }
 
 // A run's first AKVF iteration: the preconditioner built (K's pattern), the
@@ -462,6 +479,10 @@ void register_all() {
     benchmark::RegisterBenchmark(("WholeIteration/" + mesh).c_str(), BM_WholeIteration, mesh, 0)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("FirstIteration/" + mesh).c_str(), BM_FirstIteration, mesh, 0)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Setup/tutte/" + mesh).c_str(), BM_Setup, mesh, akvf::ConformalStart::kNever)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Setup/auto/" + mesh).c_str(), BM_Setup, mesh, akvf::ConformalStart::kAuto)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("DensityDerivatives/hand-written/" + mesh).c_str(), BM_DensityDerivatives, mesh,
                                  false)

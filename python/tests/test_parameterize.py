@@ -132,7 +132,7 @@ def test_start_map_and_callback(disk):
         shapes.append(uv.shape)
         return row["iter"] < 3  # False at iteration 3 stops the run
 
-    stopped = akvf.parameterize(V, F, callback=record)
+    stopped = akvf.parameterize(V, F, callback=record, init="tutte")  # more than 3 iterations from the minimum
     assert stopped.status == "user-stopped" and stopped.iterations == 3
     assert [row["iter"] for row in rows] == [0, 1, 2, 3]
     assert shapes == [(len(V), 2)] * 4

@@ -58,7 +58,8 @@ def test_param_summaries_validate(program, tmp_path):
     # A run that cannot start (the energy overflows at the Tutte map, no warm
     # start): numerical-failure, its infinite energy or gradient null, still valid.
     run = subprocess.run([program, "param", str(tmp_path / "disk.obj"), "--energy", "exp-symmetric-dirichlet",
-                          "--exponent", "50", "--warm-start-iters", "0", "--summary", str(tmp_path / "c.json"), "-q"],
+                          "--exponent", "50", "--warm-start-iters", "0", "--init", "tutte", "--summary",
+                          str(tmp_path / "c.json"), "-q"],
                          capture_output=True)
     assert run.returncode == 3
     summary = validate(tmp_path / "c.json")
