@@ -11,6 +11,8 @@
 # with nothing else on the machine, since every table has timings.
 # Usage: bash scripts/regenerate.sh [OUT]   (after scripts/build.sh; needs
 # node and npm for xatlas, ../shared/meshes or $AKVF_DATA_DIR)
+# STEPS=name,name,... runs only those steps (the names of OUT/steps.tsv):
+# after a change that moves some results only.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 OUT=${1:-build/regenerated}
@@ -29,12 +31,14 @@ printf 'step\tseconds\texit\n' > "$OUT/steps.tsv"
 # to OUT/NAME.log, and its wall seconds and exit code to OUT/steps.tsv; a
 # failed step is reported and the run goes on with the next.
 failed=0
+wanted() { [ -z "${STEPS:-}" ] || [[ ",$STEPS," == *",$1,"* ]]; }
 step() {
   local name=$1
   shift
+  rc=0
+  wanted "$name" || return 0
   echo "[$(date -u +%H:%M:%S)] $name: $*" >&2
   local start=$SECONDS
-  rc=0
   "$@" > "$OUT/$name.md" 2> "$OUT/$name.log" || rc=$?
   printf '%s\t%d\t%d\n' "$name" $((SECONDS - start)) "$rc" >> "$OUT/steps.tsv"
   if [ "$rc" -ne 0 ]; then
@@ -44,12 +48,12 @@ step() {
 }
 
 for manifest in table1 figure1 figure3 figure7 figure8 subdivided_meshes figure6; do
-  rm -rf "docs/results/$manifest"  # the runner keeps a folder only for its own manifest's results
+  wanted "$manifest" && rm -rf "docs/results/$manifest"  # the runner keeps a folder only for its own manifest's results
   step "$manifest" ./build/akvf experiment "experiments/manifests/$manifest.json" --out-dir "docs/results/$manifest"
 done
 step figure8_plots bash scripts/figure8.sh
 step pairs bash scripts/pairs.sh
-[ "$rc" -ne 0 ] || cp "$OUT/pairs.md" docs/pairs.md  # rc: the last step's exit code
+wanted pairs && [ "$rc" -eq 0 ] && cp "$OUT/pairs.md" docs/pairs.md  # rc: the last step's exit code
 # Medians of five runs, taken in turn over the methods.
 step speed ./build/akvf_speed --repeat 5
 for energy in arap mips amips exp-symmetric-dirichlet; do
