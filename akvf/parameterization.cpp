@@ -186,6 +186,9 @@ void start_at_tutte_map(const ParamConfig& config, const TriMesh& normalized, Pa
   tbb::task_group beside;
   SpdSolver solver;  // Eigen's
   const bool conformal_tried = config.conformal != ConformalStart::kNever && setup->disk.boundary_loops.size() == 1;
+  if (config.conformal == ConformalStart::kAlways && !conformal_tried)
+    setup->warnings.push_back("the conformal map is the start of one chart; these " +
+                              std::to_string(setup->disk.boundary_loops.size()) + " charts start from the Tutte map");
   Eigen::MatrixXd conformal;
   const auto conformal_of = [&] {
     if (conformal_tried)

@@ -120,6 +120,21 @@ TEST_CASE("with global injectivity a conformal map that lies over itself is not 
         "the conformal map is not the start: its boundary crosses itself; starting from the Tutte map");
 }
 
+TEST_CASE("charts of a cut mesh start from the Tutte map, and a warning says so when the conformal one was asked for") {
+  akvf::ParamConfig config;
+  config.cut = true;
+  const akvf::TriMesh two = akvf::test::side_by_side(akvf::bent_bar(11, 4), akvf::bent_bar(11, 4), 30);
+  const akvf::ParamSetup automatic = akvf::prepare_parameterization(two, "two", config);
+  REQUIRE(automatic.disk.boundary_loops.size() == 2);
+  CHECK(automatic.initial_map == akvf::InitialMap::kTutte);
+  CHECK(automatic.warnings.empty());
+  config.conformal = akvf::ConformalStart::kAlways;
+  const akvf::ParamSetup asked = akvf::prepare_parameterization(two, "two", config);
+  CHECK(asked.initial_map == akvf::InitialMap::kTutte);
+  REQUIRE(asked.warnings.size() == 1);
+  CHECK(asked.warnings[0] == "the conformal map is the start of one chart; these 2 charts start from the Tutte map");
+}
+
 TEST_CASE("a run from the conformal start takes K's analysis prepared beside the Tutte solve") {
   akvf::ParamConfig config;
   config.global_injectivity = false;
