@@ -258,8 +258,9 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
         choice_field<O>("init", "init", "initialization",
                         "initial map: auto (the conformal map where it is flip-free, with --injectivity global "
                         "does not overlap itself, and is lower in energy than Tutte's; else Tutte's), tutte "
-                        "(uniform weights), cotan, conformal (the least-squares conformal map, Tutte's where it "
-                        "folds), or file (the mesh file's texture coordinates: OBJ vt, PLY u,v); conformal maps "
+                        "(uniform weights), cotan, conformal (the least-squares conformal map, its folds undone by "
+                        "moving single vertices, Tutte's where they stay), or file (the mesh file's texture "
+                        "coordinates: OBJ vt, PLY u,v); conformal maps "
                         "and files at the energy's best uniform scale; several charts start at Tutte's",
                         &O::init)));
     f.push_back(recomputes_start(

@@ -15,6 +15,7 @@
 #include "akvf/internal/seam_cutting.h"
 #include "akvf/threads.h"
 #include "framework/mesh/chart_layout.h"
+#include "framework/mesh/fold_repair.h"
 #include "framework/mesh/plane_geometry.h"
 #include "framework/mesh/vertex_graph.h"
 #include "framework/optimization/conformal_map.h"
@@ -138,7 +139,9 @@ BlockSpdSolver conformal_solver(const ParamSetup& setup) {
 }
 
 // setup->x0 = `conformal` (the conformal map, or empty if its system did not
-// factor) at the energy's best uniform scale where it is flip-free, its
+// factor) at the energy's best uniform scale where it is flip-free once the
+// vertices of its folds are moved into their stars' kernels (its folds are
+// a few boundary triangles, fold_repair.h), its
 // boundary does not cross itself with global injectivity, and, with
 // ConformalStart::kAuto, its energy is below that of the Tutte map in
 // setup->x0 (or the Tutte map's is not finite): both are maps the
@@ -150,10 +153,13 @@ void take_conformal_start(const ParamConfig& config, const Eigen::MatrixXd& conf
   const Objective& objective = *setup->objective;
   std::string why_not;
   Eigen::VectorXd x;
+  std::vector<int> unfolded;
   if (conformal.rows() == 0) {
     why_not = "its system is not positive definite";
   } else {
-    x = stack_uv(conformal);
+    Eigen::MatrixXd unfolded_map = conformal;
+    unfolded = unfold_by_star_kernels(setup->objective->elements(), &unfolded_map);
+    x = stack_uv(unfolded_map);
     if (const int inverted = objective.count_inverted(x); inverted > 0)
       why_not = "it inverts " + std::to_string(inverted) + " triangle" + (inverted == 1 ? "" : "s");
     else if (config.global_injectivity && setup->boundary_contact->count_crossings(x) > 0)
@@ -171,6 +177,7 @@ void take_conformal_start(const ParamConfig& config, const Eigen::MatrixXd& conf
   setup->x0 = std::move(x);
   setup->flaps_moved = 0;
   setup->flaps_shortened = 0;
+  setup->folds_unfolded = static_cast<int>(unfolded.size());
   setup->initial_map = InitialMap::kConformal;
 }
 

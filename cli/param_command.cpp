@@ -91,7 +91,10 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
       << count_of(mesh.num_faces(), "face") << "; energy " << config.energy << ", preconditioner "
       << config.preconditioner << ", start: ";
   if (setup.initial_map == akvf::InitialMap::kConformal)
-    out << "the conformal map";
+    out << "the conformal map"
+        << (setup.folds_unfolded > 0
+                ? ", " + count_of(setup.folds_unfolded, "vertex", "vertices") + " moved out of folds"
+                : "");
   else if (config.init_from_file)
     out << "the file's map";
   else

@@ -10,6 +10,7 @@
 
 #include "akvf/internal/demo_mesh.h"
 #include "akvf/internal/parameterization.h"
+#include "akvf/mesh_io.h"
 #include "akvf/parameterize.h"
 #include "energies/symmetric_dirichlet.h"
 #include "framework/mesh/mesh_validation.h"
@@ -145,4 +146,22 @@ TEST_CASE("a run from the conformal start takes K's analysis prepared beside the
   const akvf::ParamRun run = akvf::run_parameterization(setup, config);
   CHECK(run.result.trace.size() == 3);
   CHECK(run.preconditioner_statistics.symbolic_analyses == 1);
+}
+
+TEST_CASE("a conformal map folded at its boundary starts flip-free once its folds are undone") {
+  const std::string dir = akvf::test::data_dir();
+  if (dir.empty()) return akvf::test::skip("../shared/meshes not found (set AKVF_DATA_DIR)");
+  // cow_b's conformal map inverts a boundary triangle; unfolded, it is far
+  // below the Tutte map in energy (and its boundary crosses itself).
+  const akvf::TriMesh cow = akvf::read_triangle_mesh(dir + "/tri/cow_b.obj");
+  akvf::ParamConfig config;
+  config.global_injectivity = false;
+  const akvf::ParamSetup local = akvf::prepare_parameterization(cow, "cow_b", config);
+  CHECK(local.initial_map == akvf::InitialMap::kConformal);
+  CHECK(local.folds_unfolded >= 1);
+  CHECK(local.objective->count_inverted(local.x0) == 0);
+  config.global_injectivity = true;
+  const akvf::ParamSetup global = akvf::prepare_parameterization(cow, "cow_b", config);
+  CHECK(global.initial_map == akvf::InitialMap::kTutte);
+  CHECK(global.folds_unfolded == 0);
 }

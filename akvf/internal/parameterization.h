@@ -94,6 +94,7 @@ struct ParamSetup {
   InitialMap initial_map = InitialMap::kTutte;  // what x0 is (before a warm start)
   int flaps_moved = 0;
   int flaps_shortened = 0;  // of those, moved only part of the way: the full move crossed the boundary
+  int folds_unfolded = 0;   // vertices of the conformal start moved out of its folds (fold_repair.h)
   // The fill-reducing ordering of the mesh's vertex graph, found with the
   // Tutte start (akvf/parameterization.cpp, mesh_vertex_ordering): the
   // optimizer's matrices are analyzed with it. Null where the start is not
