@@ -23,7 +23,7 @@ enum class Acceleration {
 
 // The initial map of a parameterization.
 enum class InitialMap {
-  kAuto,       // one chart: kConformal where flip-free and lower in energy than kTutte; else kTutte
+  kAuto,       // one chart: kConformal where flip-free and lower in energy (swept once) than kTutte; else kTutte
   kTutte,      // Tutte's embedding, uniform weights
   kCotan,      // cotangent weights (uniform where they fold)
   kConformal,  // the least-squares conformal map (kTutte where it folds, or several charts)

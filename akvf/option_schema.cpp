@@ -254,15 +254,15 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                      "held (interior vertices only with --injectivity global; 0 = off); auto: 4 for "
                                      "akvf-newton, 0 for the others",
                                      &O::local_sweep, ">= 0", [](double x) { return x >= 0; }));
-    f.push_back(recomputes_start(
-        choice_field<O>("init", "init", "initialization",
-                        "initial map: auto (the conformal map where it is flip-free, with --injectivity global "
-                        "does not overlap itself, and is lower in energy than Tutte's; else Tutte's), tutte "
-                        "(uniform weights), cotan, conformal (the least-squares conformal map, its folds undone by "
-                        "moving single vertices, Tutte's where they stay), or file (the mesh file's texture "
-                        "coordinates: OBJ vt, PLY u,v); conformal maps "
-                        "and files at the energy's best uniform scale; several charts start at Tutte's",
-                        &O::init)));
+    f.push_back(recomputes_start(choice_field<O>(
+        "init", "init", "initialization",
+        "initial map: auto (the conformal map where it is flip-free, with --injectivity global "
+        "does not overlap itself, and is lower in energy than Tutte's after one local sweep; else Tutte's), tutte "
+        "(uniform weights), cotan, conformal (the least-squares conformal map, its folds undone by "
+        "moving single vertices, Tutte's where they stay), or file (the mesh file's texture "
+        "coordinates: OBJ vt, PLY u,v); conformal maps "
+        "and files at the energy's best uniform scale; several charts start at Tutte's",
+        &O::init)));
     f.push_back(recomputes_start(
         choice_field<O>("cut", "cut", "cut",
                         "auto cuts a closed, multi-boundary, higher-genus or multi-component mesh into disks "

@@ -138,14 +138,35 @@ BlockSpdSolver conformal_solver(const ParamSetup& setup) {
   };
 }
 
+// E after one pass of local Newton steps from x (LocalNewtonSweep, share 1:
+// the vertices of more than the mean squared gradient; a boundary the
+// barrier holds stays). A start's energy is often set by a few badly
+// shaped triangles (a jittered vertex, a star moved out of a fold) that such
+// a pass removes for the cost of a gradient, as the optimizer's own sweeps
+// do, while the iterations go to the smooth distortion that no vertex alone
+// removes; after one pass the energies compare the latter. One pass only:
+// each further pass reaches one ring further and removes smooth distortion
+// too.
+double energy_after_one_sweep(const ParamConfig& config, const ParamSetup& setup, Eigen::VectorXd x) {
+  std::vector<int> fixed;
+  if (config.global_injectivity)
+    for (const std::vector<int>& loop : setup.disk.boundary_loops) fixed.insert(fixed.end(), loop.begin(), loop.end());
+  const LocalNewtonSweep<2> sweep(*setup.objective, fixed);
+  Eigen::VectorXd gradient;
+  if (!std::isfinite(setup.objective->value_and_gradient(x, &gradient))) return setup.objective->value(x);
+  sweep.sweep(gradient, 1.0, &x);
+  return setup.objective->value(x);
+}
+
 // setup->x0 = `conformal` (the conformal map, or empty if its system did not
 // factor) at the energy's best uniform scale where it is flip-free once the
 // vertices of its folds are moved into their stars' kernels (its folds are
 // a few boundary triangles, fold_repair.h), its
 // boundary does not cross itself with global injectivity, and, with
 // ConformalStart::kAuto, its energy is below that of the Tutte map in
-// setup->x0 (or the Tutte map's is not finite): both are maps the
-// optimizer can start from, and the lower one is nearer the minimum. On a
+// setup->x0 (or the Tutte map's is not finite), both after one local sweep
+// (energy_after_one_sweep): both are maps the optimizer can start from,
+// and the lower one is nearer the minimum. On a
 // developable disk the conformal map is an isometry, the minimum of every
 // isometric energy; where a region is far from developable it shrinks it
 // exponentially, and Tutte's map is often lower.
@@ -171,9 +192,10 @@ void take_conformal_start(const ParamConfig& config, const Eigen::MatrixXd& conf
     return;
   }
   x *= best_uniform_scale(objective, x);
-  const double energy = objective.value(x);
-  if (config.conformal == ConformalStart::kAuto && !(std::isfinite(energy) && !(objective.value(setup->x0) <= energy)))
-    return;
+  if (config.conformal == ConformalStart::kAuto) {
+    const double energy = energy_after_one_sweep(config, *setup, x);
+    if (!(std::isfinite(energy) && !(energy_after_one_sweep(config, *setup, setup->x0) <= energy))) return;
+  }
   setup->x0 = std::move(x);
   setup->flaps_moved = 0;
   setup->flaps_shortened = 0;

@@ -57,20 +57,28 @@ def cone_strip(rng, n=1200, m=6, length=200.0, width=1.0, turns=3):
     return vertices, triangles
 
 
-def main():
-    if len(sys.argv) != 3:
-        sys.exit("usage: perturbed_meshes.py DATA OUT")
-    data, out = sys.argv[1], os.path.join(sys.argv[2], "tri")
-    os.makedirs(out, exist_ok=True)
+def perturbed_meshes(data):
+    """(file name, vertices, triangles) of each mesh written, in order."""
     rng = random.Random(1)
     names = sorted(n for n in os.listdir(os.path.join(data, "tri")) if n.endswith("_b.obj") or n == "camelhead.off")
     for name in names:
         V, F = akvf.read_mesh(os.path.join(data, "tri", name))
         vertices, triangles = V.tolist(), F.tolist()
-        stem = os.path.splitext(name)[0]
-        write_obj(os.path.join(out, stem + "_jitter.obj"), jittered(vertices, triangles, rng), triangles)
-    write_obj(os.path.join(out, "cone_strip.obj"), *cone_strip(rng))
-    print("wrote %d meshes to %s" % (len(names) + 1, out))
+        yield os.path.splitext(name)[0] + "_jitter.obj", jittered(vertices, triangles, rng), triangles
+    yield ("cone_strip.obj",) + cone_strip(rng)
 
 
-main()
+def main():
+    if len(sys.argv) != 3:
+        sys.exit("usage: perturbed_meshes.py DATA OUT")
+    data, out = sys.argv[1], os.path.join(sys.argv[2], "tri")
+    os.makedirs(out, exist_ok=True)
+    count = 0
+    for name, vertices, triangles in perturbed_meshes(data):
+        write_obj(os.path.join(out, name), vertices, triangles)
+        count += 1
+    print("wrote %d meshes to %s" % (count, out))
+
+
+if __name__ == "__main__":
+    main()
