@@ -135,16 +135,17 @@ DensityRegistry2D& mutable_energies_2d() {
   static DensityRegistry2D registry = [] {
     DensityRegistry2D r("energy");
     r.add("symmetric-dirichlet", "|J|^2 + |J^-1|^2, Eq. (2); lower bound 4",
-          [](const EnergySettings&) { return std::make_unique<SymmetricDirichlet2D>(); });
+          [](const EnergySettings&) { return std::make_unique<SymmetricDirichlet2D>(); }, {kCollapseBarrier});
     r.add("arap",
           "|J - R(J)|^2, R the closest rotation, with a collapse barrier below 1e-3 of the rest area; lower bound 0",
           [](const EnergySettings&) { return std::make_unique<Arap2D>(); });
     r.add("mips", "conformal |J|^2 / det J; lower bound 2",
-          [](const EnergySettings&) { return std::make_unique<Mips2D>(); });
+          [](const EnergySettings&) { return std::make_unique<Mips2D>(); }, {kCollapseBarrier});
     r.add("exp-symmetric-dirichlet", "exp(k (|J|^2 + |J^-1|^2)), k = --exponent; lower bound exp(4k)",
-          [](const EnergySettings& e) { return std::make_unique<ExpSymmetricDirichlet2D>(e.exponent); });
+          [](const EnergySettings& e) { return std::make_unique<ExpSymmetricDirichlet2D>(e.exponent); },
+          {kCollapseBarrier});
     r.add("amips", "exp(k (|J|^2 / (4 det J) + (det J + 1/det J) / 4)), k = --exponent; lower bound exp(k)",
-          [](const EnergySettings& e) { return std::make_unique<Amips2D>(e.exponent); });
+          [](const EnergySettings& e) { return std::make_unique<Amips2D>(e.exponent); }, {kCollapseBarrier});
     return r;
   }();
   return registry;

@@ -53,6 +53,13 @@ inline constexpr const char* kMomentumByDefault = "momentum-by-default";
 // default (--local-sweep auto; the default method, akvf-newton).
 inline constexpr const char* kSweepsByDefault = "sweeps-by-default";
 
+// The registry tag of 2D energies whose density grows without bound as
+// det J falls to 0 (a barrier at collapse over its whole range): the local
+// Newton sweeps' premise (local_newton_sweep.h), so --local-sweep auto
+// sweeps only for them. ARAP's barrier acts only below 1e-3 of the rest
+// area, and user energies carry no tag unless registered with it.
+inline constexpr const char* kCollapseBarrier = "collapse-barrier";
+
 // OptimizerOptions::acceleration_eta for an acceleration mode: kAuto turns
 // AQP's momentum (eta = 100) on for preconditioners tagged
 // kMomentumByDefault, kOn and kOff force it.

@@ -252,7 +252,7 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                      "after each AKVF step the flip-free bound set, move each vertex whose squared "
                                      "gradient is above X times the mean by its own projected Newton step, the others "
                                      "held (interior vertices only with --injectivity global; 0 = off); auto: 4 for "
-                                     "akvf-newton, 0 for the others",
+                                     "akvf-newton on an energy with a barrier at collapse (not arap), 0 for the others",
                                      &O::local_sweep, ">= 0", [](double x) { return x >= 0; }));
     f.push_back(recomputes_start(choice_field<O>(
         "init", "init", "initialization",

@@ -48,11 +48,14 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   c.preconditioner_settings.newton_phase.reuse_tolerance = o.newton_reuse.value_or(o.akvf_reuse);
   c.line_search_settings.rho = o.ls_rho;
   // --local-sweep auto: the methods tagged kSweepsByDefault (the default
-  // one) sweep; the others run as published. 4: the vertices whose |g_v| is
+  // one) sweep on energies tagged kCollapseBarrier; the others run as
+  // published. 4: the vertices whose |g_v| is
   // above twice the root mean square, the few where the gradient gathers
   // about the elements that set the bound (docs/design.md, "Local Newton
   // sweeps").
-  c.local_sweep = o.local_sweep.value_or(preconditioners_2d().has_tag(o.preconditioner, kSweepsByDefault) ? 4 : 0);
+  const bool sweeps_by_default = preconditioners_2d().has_tag(o.preconditioner, kSweepsByDefault) &&
+                                 energies_2d().has_tag(o.energy, kCollapseBarrier);
+  c.local_sweep = o.local_sweep.value_or(sweeps_by_default ? 4 : 0);
   set_eigen_filters(o.eigen_filter, &c.preconditioner_settings);
   c.init_from_file = o.init == InitialMap::kFile;
   c.init = o.init == InitialMap::kCotan ? TutteWeights::kCotangent : TutteWeights::kUniform;

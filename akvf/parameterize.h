@@ -40,7 +40,8 @@ struct ParameterizeOptions {
   double ls_rho = 0.5;                             // backtracking shrink factor in (0, 1)
   std::optional<double> local_sweep;               // > 0: local Newton sweeps after bound-set steps (the
                                                    // vertices whose |g_v|^2 passes it times the mean); 0 = off;
-                                                   // none ("auto"): 4 for akvf-newton, off for the others
+                                                   // none ("auto"): 4 for akvf-newton on an energy
+                                                   // tagged kCollapseBarrier (not arap), off for the others
   InitialMap init = InitialMap::kAuto;             // kFile is the command line's (the API takes
                                                    // Parameterizer::solve(uv0))
   Cut cut = Cut::kNone;                            // kAuto: cut closed / multi-boundary / higher-genus /

@@ -125,9 +125,19 @@ TEST_CASE("local_sweep runs the sweeps after bound-set steps, with local injecti
   for (const akvf::IterationSummary& row : injective.result.trace) CHECK(row.flips == 0);
 }
 
-TEST_CASE("local_sweep auto sweeps with the default method only, a number with any method") {
+TEST_CASE("local_sweep auto sweeps with the default method on barrier energies only, a number with any method") {
   akvf::ParameterizeOptions options;
+  for (const char* barrier : {"symmetric-dirichlet", "mips", "amips", "exp-symmetric-dirichlet"}) {
+    options.energy = barrier;
+    CHECK(akvf::param_config(options).local_sweep == 4);
+  }
+  // ARAP's barrier acts only below 1e-3 of the rest area.
+  options.energy = "arap";
+  CHECK(akvf::param_config(options).local_sweep == 0);
+  options.local_sweep = 4;
   CHECK(akvf::param_config(options).local_sweep == 4);
+  options.local_sweep.reset();
+  options.energy = "symmetric-dirichlet";
   for (const char* published : {"akvf", "newton", "slim", "laplacian", "identity"}) {
     options.preconditioner = published;
     CHECK(akvf::param_config(options).local_sweep == 0);
