@@ -11,11 +11,8 @@ namespace akvf {
 
 namespace {
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 bool is_inverted(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, int f) {
-  const Eigen::Vector2d p = UV.row(F(f, 0)).transpose();
-  return !(cross(UV.row(F(f, 1)).transpose() - p, UV.row(F(f, 2)).transpose() - p) > 0);
+  return !(twice_signed_area(F, UV, f) > 0);
 }
 
 // The part of the convex polygon (counterclockwise) to the left of the

@@ -7,6 +7,7 @@
 
 #include "akvf/error.h"
 #include "akvf/rest_geometry.h"
+#include "framework/mesh/plane_geometry.h"
 
 namespace akvf {
 
@@ -136,10 +137,7 @@ int optimize_flaps(const TriMesh& mesh, Eigen::MatrixXd* UV) {
 
 int count_inverted_triangles(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV) {
   int inverted = 0;
-  for (int f = 0; f < F.rows(); ++f) {
-    const Eigen::RowVector2d e1 = UV.row(F(f, 1)) - UV.row(F(f, 0)), e2 = UV.row(F(f, 2)) - UV.row(F(f, 0));
-    inverted += !(e1.x() * e2.y() - e1.y() * e2.x() > 0);
-  }
+  for (int f = 0; f < F.rows(); ++f) inverted += !(twice_signed_area(F, UV, f) > 0);
   return inverted;
 }
 

@@ -9,14 +9,12 @@ std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points) {
   std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
   });
-  const auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
-  };
   std::vector<Eigen::Vector2d> hull;
   for (int pass = 0; pass < 2; ++pass) {
     const std::size_t base = hull.size();
     for (const Eigen::Vector2d& p : points) {
-      while (hull.size() >= base + 2 && cross(hull[hull.size() - 2], hull.back(), p) <= 0) hull.pop_back();
+      while (hull.size() >= base + 2 && cross(hull.back() - hull[hull.size() - 2], p - hull[hull.size() - 2]) <= 0)
+        hull.pop_back();
       hull.push_back(p);
     }
     hull.pop_back();
@@ -30,14 +28,18 @@ double polygon_area(const std::vector<Eigen::Vector2d>& polygon) {
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const Eigen::Vector2d& a = polygon[i];
     const Eigen::Vector2d& b = polygon[(i + 1) % polygon.size()];
-    twice += a.x() * b.y() - a.y() * b.x();
+    twice += cross(a, b);
   }
   return 0.5 * twice;
 }
 
+double twice_signed_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, int f) {
+  const Eigen::Vector2d p = UV.row(F(f, 0)).transpose();
+  return cross(UV.row(F(f, 1)).transpose() - p, UV.row(F(f, 2)).transpose() - p);
+}
+
 double triangle_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV, int f) {
-  const Eigen::RowVector2d a = UV.row(F(f, 1)) - UV.row(F(f, 0)), b = UV.row(F(f, 2)) - UV.row(F(f, 0));
-  return 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+  return 0.5 * std::abs(twice_signed_area(F, UV, f));
 }
 
 double map_area(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV) {
