@@ -138,24 +138,32 @@ BlockSpdSolver conformal_solver(const ParamSetup& setup) {
   };
 }
 
-// E after one pass of local Newton steps from x (LocalNewtonSweep, share 1:
-// the vertices of more than the mean squared gradient; a boundary the
-// barrier holds stays). A start's energy is often set by a few badly
+// A local Newton sweep over the objective's mesh. The sweeps see the
+// distortion only: with the boundary barrier (global injectivity) they move
+// the interior vertices, which the barrier does not involve (and a map
+// without inverted triangles whose boundary does not cross itself is
+// injective, so they keep it so).
+LocalNewtonSweep<2> distortion_sweep(const ParamSetup& setup, bool global_injectivity) {
+  std::vector<int> boundary;
+  if (global_injectivity)
+    for (const std::vector<int>& loop : setup.disk.boundary_loops)
+      boundary.insert(boundary.end(), loop.begin(), loop.end());
+  return LocalNewtonSweep<2>(*setup.objective, boundary);
+}
+
+// E after one pass of local Newton steps from x (share 1: the vertices of
+// more than the mean squared gradient). A start's energy is often set by a few badly
 // shaped triangles (a jittered vertex, a star moved out of a fold) that such
 // a pass removes for the cost of a gradient, as the optimizer's own sweeps
 // do, while the iterations go to the smooth distortion that no vertex alone
 // removes; after one pass the energies compare the latter. One pass only:
 // each further pass reaches one ring further and removes smooth distortion
 // too.
-double energy_after_one_sweep(const ParamConfig& config, const ParamSetup& setup, Eigen::VectorXd x) {
-  std::vector<int> fixed;
-  if (config.global_injectivity)
-    for (const std::vector<int>& loop : setup.disk.boundary_loops) fixed.insert(fixed.end(), loop.begin(), loop.end());
-  const LocalNewtonSweep<2> sweep(*setup.objective, fixed);
+double energy_after_one_sweep(const Objective& objective, const LocalNewtonSweep<2>& sweep, Eigen::VectorXd x) {
   Eigen::VectorXd gradient;
-  if (!std::isfinite(setup.objective->value_and_gradient(x, &gradient))) return setup.objective->value(x);
+  if (!std::isfinite(objective.value_and_gradient(x, &gradient))) return objective.value(x);
   sweep.sweep(gradient, 1.0, &x);
-  return setup.objective->value(x);
+  return objective.value(x);
 }
 
 // setup->x0 = `conformal` (the conformal map, or empty if its system did not
@@ -193,8 +201,9 @@ void take_conformal_start(const ParamConfig& config, const Eigen::MatrixXd& conf
   }
   x *= best_uniform_scale(objective, x);
   if (config.conformal == ConformalStart::kAuto) {
-    const double energy = energy_after_one_sweep(config, *setup, x);
-    if (!(std::isfinite(energy) && !(energy_after_one_sweep(config, *setup, setup->x0) <= energy))) return;
+    const LocalNewtonSweep<2> sweep = distortion_sweep(*setup, config.global_injectivity);
+    const double energy = energy_after_one_sweep(objective, sweep, x);
+    if (!(std::isfinite(energy) && !(energy_after_one_sweep(objective, sweep, setup->x0) <= energy))) return;
   }
   setup->x0 = std::move(x);
   setup->flaps_moved = 0;
@@ -454,17 +463,9 @@ ParamRun run_from_start(const ParamSetup& setup, const ParamConfig& config,
     preconditioner = std::make_unique<ContactPreconditioner>(std::move(preconditioner), setup.boundary_contact);
   auto line_search = line_searches().create(
       config.line_search, line_search_settings(config.line_search_settings, optimizer.acceleration_eta));
-  // The sweeps see the distortion only: with the boundary barrier they move
-  // the interior vertices, which the barrier does not involve (and a map
-  // without inverted triangles whose boundary does not cross itself is
-  // injective, so they keep it so).
   std::optional<LocalNewtonSweep<2>> sweep;
   if (config.local_sweep > 0) {
-    std::vector<int> boundary;
-    if (injective)
-      for (const std::vector<int>& loop : setup.disk.boundary_loops)
-        boundary.insert(boundary.end(), loop.begin(), loop.end());
-    sweep.emplace(*setup.objective, boundary);
+    sweep.emplace(distortion_sweep(setup, injective != nullptr));
     optimizer.after_bound_set_step = [&](const Eigen::VectorXd& gradient, Eigen::VectorXd* x) {
       if (preconditioner->has_element_curvature()) return false;
       return sweep->sweep(gradient, config.local_sweep, x) > 0;
