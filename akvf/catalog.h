@@ -57,7 +57,7 @@ inline constexpr const char* kSweepsByDefault = "sweeps-by-default";
 // det J falls to 0 (a barrier at collapse over its whole range): the local
 // Newton sweeps' premise (local_newton_sweep.h), so --local-sweep auto
 // sweeps only for them. ARAP's barrier acts only below 1e-3 of the rest
-// area, and user energies carry no tag unless registered with it.
+// area. A user energy carries it when registered with it (akvf/extend.h).
 inline constexpr const char* kCollapseBarrier = "collapse-barrier";
 
 // OptimizerOptions::acceleration_eta for an acceleration mode: kAuto turns

@@ -23,11 +23,13 @@ enum class Acceleration {
 
 // The initial map of a parameterization.
 enum class InitialMap {
-  kAuto,       // one chart: kConformal where flip-free and lower in energy (swept once) than kTutte; else kTutte
-  kTutte,      // Tutte's embedding, uniform weights
-  kCotan,      // cotangent weights (uniform where they fold)
-  kConformal,  // the least-squares conformal map (kTutte where it folds, or several charts)
-  kFile,       // the command line's: the mesh file's texture coordinates
+  kAuto,           // one chart: the lowest in energy (swept once) of kTutte, kConformal and kBoundaryFirst
+                   // where flip-free; else kTutte
+  kTutte,          // Tutte's embedding, uniform weights
+  kCotan,          // cotangent weights (uniform where they fold)
+  kConformal,      // the least-squares conformal map (kTutte where it folds, or several charts)
+  kBoundaryFirst,  // the boundary-first map, boundary lengths kept (kTutte where it folds, or several charts)
+  kFile,           // the command line's: the mesh file's texture coordinates
 };
 
 // Meshes that are not one disk.
@@ -83,10 +85,16 @@ inline std::span<const ChoiceWord<Acceleration>> choice_words(Acceleration) {
   return words;
 }
 inline std::span<const ChoiceWord<InitialMap>> choice_words(InitialMap) {
-  static constexpr ChoiceWord<InitialMap> words[] = {
-      {InitialMap::kAuto, "auto"},           {InitialMap::kTutte, "tutte"},   {InitialMap::kCotan, "cotan"},
-      {InitialMap::kConformal, "conformal"}, {InitialMap::kFile, "file"},     {InitialMap::kTutte, "uniform"},
-      {InitialMap::kCotan, "cotangent"},     {InitialMap::kConformal, "lscm"}};
+  static constexpr ChoiceWord<InitialMap> words[] = {{InitialMap::kAuto, "auto"},
+                                                     {InitialMap::kTutte, "tutte"},
+                                                     {InitialMap::kCotan, "cotan"},
+                                                     {InitialMap::kConformal, "conformal"},
+                                                     {InitialMap::kBoundaryFirst, "boundary-first"},
+                                                     {InitialMap::kFile, "file"},
+                                                     {InitialMap::kTutte, "uniform"},
+                                                     {InitialMap::kCotan, "cotangent"},
+                                                     {InitialMap::kConformal, "lscm"},
+                                                     {InitialMap::kBoundaryFirst, "bff"}};
   return words;
 }
 inline std::span<const ChoiceWord<Cut>> choice_words(Cut) {

@@ -256,11 +256,12 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                      &O::local_sweep, ">= 0", [](double x) { return x >= 0; }));
     f.push_back(recomputes_start(choice_field<O>(
         "init", "init", "initialization",
-        "initial map: auto (the conformal map where it is flip-free, with --injectivity global "
-        "does not overlap itself, and is lower in energy than Tutte's after one local sweep; else Tutte's), tutte "
-        "(uniform weights), cotan, conformal (the least-squares conformal map, its folds undone by "
-        "moving single vertices, Tutte's where they stay), or file (the mesh file's texture "
-        "coordinates: OBJ vt, PLY u,v); conformal maps "
+        "initial map: auto (of Tutte's, the conformal and the boundary-first map, the lowest in energy after "
+        "one local sweep, of those that are flip-free and, with --injectivity global, do not overlap "
+        "themselves), tutte (uniform weights), cotan, conformal (the least-squares conformal map), "
+        "boundary-first (the conformal map that keeps the boundary's lengths, Sawhney and Crane 2017), the "
+        "two with their folds undone by moving single vertices, Tutte's where they stay, or file (the mesh "
+        "file's texture coordinates: OBJ vt, PLY u,v); conformal maps "
         "and files at the energy's best uniform scale; several charts start at Tutte's",
         &O::init)));
     f.push_back(recomputes_start(

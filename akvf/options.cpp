@@ -59,9 +59,13 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   set_eigen_filters(o.eigen_filter, &c.preconditioner_settings);
   c.init_from_file = o.init == InitialMap::kFile;
   c.init = o.init == InitialMap::kCotan ? TutteWeights::kCotangent : TutteWeights::kUniform;
-  c.conformal = o.init == InitialMap::kAuto        ? ConformalStart::kAuto
-                : o.init == InitialMap::kConformal ? ConformalStart::kAlways
-                                                   : ConformalStart::kNever;
+  const auto candidate = [&o](InitialMap map) {
+    return o.init == InitialMap::kAuto ? ConformalStart::kAuto
+           : o.init == map             ? ConformalStart::kAlways
+                                       : ConformalStart::kNever;
+  };
+  c.conformal = candidate(InitialMap::kConformal);
+  c.boundary_first = candidate(InitialMap::kBoundaryFirst);
   c.optimize_flaps = o.flaps;
   c.global_injectivity = o.injectivity == Injectivity::kGlobal;
   c.cut = o.cut != Cut::kNone;

@@ -18,6 +18,7 @@
 #include "framework/mesh/fold_repair.h"
 #include "framework/mesh/plane_geometry.h"
 #include "framework/mesh/vertex_graph.h"
+#include "framework/optimization/boundary_first_map.h"
 #include "framework/optimization/conformal_map.h"
 #include "framework/optimization/element_matrix.h"
 #include "framework/optimization/injective_objective.h"
@@ -166,27 +167,29 @@ double energy_after_one_sweep(const Objective& objective, const LocalNewtonSweep
   return objective.value(x);
 }
 
-// setup->x0 = `conformal` (the conformal map, or empty if its system did not
-// factor) at the energy's best uniform scale where it is flip-free once the
-// vertices of its folds are moved into their stars' kernels (its folds are
-// a few boundary triangles, fold_repair.h), its
-// boundary does not cross itself with global injectivity, and, with
-// ConformalStart::kAuto, its energy is below that of the Tutte map in
-// setup->x0 (or the Tutte map's is not finite), both after one local sweep
-// (energy_after_one_sweep): both are maps the optimizer can start from,
-// and the lower one is nearer the minimum. On a
-// developable disk the conformal map is an isometry, the minimum of every
-// isometric energy; where a region is far from developable it shrinks it
-// exponentially, and Tutte's map is often lower.
-void take_conformal_start(const ParamConfig& config, const Eigen::MatrixXd& conformal, ParamSetup* setup) {
+// setup->x0 = `map` (a conformal map, `kind`, or empty if its system did
+// not solve) at the energy's best uniform scale where it is flip-free once
+// the vertices of its folds are moved into their stars' kernels (its folds
+// are a few boundary triangles, fold_repair.h), its boundary does not
+// cross itself with global injectivity, and, with ConformalStart::kAuto,
+// its energy is below that of the start in setup->x0 (the Tutte map or a
+// conformal map taken before; or that one's is not finite), both after one
+// local sweep (energy_after_one_sweep): both are maps the optimizer can
+// start from, and the lower one is nearer the minimum. On a developable
+// disk a conformal map is an isometry, the minimum of every isometric
+// energy; where a region is far from developable the least-squares map
+// shrinks it exponentially, the boundary-first map less (its boundary
+// keeps its lengths), and Tutte's map is often lower than both.
+void take_conformal_start(const ParamConfig& config, ConformalStart mode, const Eigen::MatrixXd& map, InitialMap kind,
+                          ParamSetup* setup) {
   const Objective& objective = *setup->objective;
   std::string why_not;
   Eigen::VectorXd x;
   std::vector<int> unfolded;
-  if (conformal.rows() == 0) {
-    why_not = "its system is not positive definite";
+  if (map.rows() == 0) {
+    why_not = "its system did not solve";
   } else {
-    Eigen::MatrixXd unfolded_map = conformal;
+    Eigen::MatrixXd unfolded_map = map;
     unfolded = unfold_by_star_kernels(setup->objective->elements(), &unfolded_map);
     x = stack_uv(unfolded_map);
     if (const int inverted = objective.count_inverted(x); inverted > 0)
@@ -195,12 +198,13 @@ void take_conformal_start(const ParamConfig& config, const Eigen::MatrixXd& conf
       why_not = "its boundary crosses itself";
   }
   if (!why_not.empty()) {
-    if (config.conformal == ConformalStart::kAlways)
-      setup->warnings.push_back("the conformal map is not the start: " + why_not + "; starting from the Tutte map");
+    if (mode == ConformalStart::kAlways)
+      setup->warnings.push_back("the " + std::string(choice_name(kind)) + " map is not the start: " + why_not +
+                                "; starting from the Tutte map");
     return;
   }
   x *= best_uniform_scale(objective, x);
-  if (config.conformal == ConformalStart::kAuto) {
+  if (mode == ConformalStart::kAuto) {
     const LocalNewtonSweep<2> sweep = distortion_sweep(*setup, config.global_injectivity);
     const double energy = energy_after_one_sweep(objective, sweep, x);
     if (!(std::isfinite(energy) && !(energy_after_one_sweep(objective, sweep, setup->x0) <= energy))) return;
@@ -209,7 +213,7 @@ void take_conformal_start(const ParamConfig& config, const Eigen::MatrixXd& conf
   setup->flaps_moved = 0;
   setup->flaps_shortened = 0;
   setup->folds_unfolded = static_cast<int>(unfolded.size());
-  setup->initial_map = InitialMap::kConformal;
+  setup->initial_map = kind;
 }
 
 // setup->x0 = the Tutte map of the charts of `normalized` (+ flaps), or the
@@ -223,15 +227,22 @@ void start_at_tutte_map(const ParamConfig& config, const TriMesh& normalized, Pa
   const ThreadLimit threads(config.threads);
   tbb::task_group beside;
   SpdSolver solver;  // Eigen's
-  const bool conformal_tried = config.conformal != ConformalStart::kNever && setup->disk.boundary_loops.size() == 1;
-  if (config.conformal == ConformalStart::kAlways && !conformal_tried)
-    setup->warnings.push_back("the conformal map is the start of one chart; these " +
+  const bool one_chart = setup->disk.boundary_loops.size() == 1;
+  const bool least_squares_tried = config.conformal != ConformalStart::kNever && one_chart;
+  const bool boundary_first_tried = config.boundary_first != ConformalStart::kNever && one_chart;
+  const bool conformal_tried = least_squares_tried || boundary_first_tried;
+  if ((config.conformal == ConformalStart::kAlways || config.boundary_first == ConformalStart::kAlways) && !one_chart)
+    setup->warnings.push_back("a conformal map is the start of one chart; these " +
                               std::to_string(setup->disk.boundary_loops.size()) + " charts start from the Tutte map");
-  Eigen::MatrixXd conformal;
+  Eigen::MatrixXd conformal, boundary_first;
+  // Both beside the Tutte solve; the boundary-first map's two systems have
+  // the Tutte system's pattern and take its solver.
   const auto conformal_of = [&] {
-    if (conformal_tried)
+    if (least_squares_tried)
       conformal = conformal_map(normalized, setup->objective->rest(), setup->disk.boundary_loops.front(),
                                 conformal_solver(*setup));
+    if (boundary_first_tried)
+      boundary_first = boundary_first_map(normalized, setup->disk.boundary_loops.front(), solver);
   };
   if (tutte_by_cholmod(normalized)) {
     const UpperVertexGraph graph = upper_vertex_graph(normalized.F, normalized.num_vertices());
@@ -274,7 +285,9 @@ void start_at_tutte_map(const ParamConfig& config, const TriMesh& normalized, Pa
   }
   setup->x0 = stack_uv(UV);
   setup->initial_map = config.init == TutteWeights::kCotangent ? InitialMap::kCotan : InitialMap::kTutte;
-  if (conformal_tried) take_conformal_start(config, conformal, setup);
+  if (least_squares_tried) take_conformal_start(config, config.conformal, conformal, InitialMap::kConformal, setup);
+  if (boundary_first_tried)
+    take_conformal_start(config, config.boundary_first, boundary_first, InitialMap::kBoundaryFirst, setup);
 }
 
 }  // namespace

@@ -90,8 +90,8 @@ int run_and_write(const TriMesh& input, const std::string& name, const Parameter
   out << name << ": " << count_of(mesh.num_vertices(), "vertex", "vertices") << ", "
       << count_of(mesh.num_faces(), "face") << "; energy " << config.energy << ", preconditioner "
       << config.preconditioner << ", start: ";
-  if (setup.initial_map == akvf::InitialMap::kConformal)
-    out << "the conformal map"
+  if (setup.initial_map == akvf::InitialMap::kConformal || setup.initial_map == akvf::InitialMap::kBoundaryFirst)
+    out << (setup.initial_map == akvf::InitialMap::kConformal ? "the conformal map" : "the boundary-first map")
         << (setup.folds_unfolded > 0
                 ? ", " + count_of(setup.folds_unfolded, "vertex", "vertices") + " moved out of folds"
                 : "");

@@ -135,7 +135,7 @@ TEST_CASE("options are validated in one place, with the messages the command lin
   options = {};
   CHECK(akvf::test::error_message([&] {
           akvf::set_option_text(akvf::parameterize_option_fields(), "init", "harmonic", &options);
-        }) == "unknown initialization 'harmonic' (valid: auto, tutte, cotan, conformal, file)");
+        }) == "unknown initialization 'harmonic' (valid: auto, tutte, cotan, conformal, boundary-first, file)");
   CHECK(akvf::test::error_message([&] {
           akvf::set_option_text(akvf::parameterize_option_fields(), "acceleration", "sometimes", &options);
         }) == "unknown acceleration 'sometimes' (valid: auto, on, off)");

@@ -153,6 +153,7 @@ TEST_CASE("a flap: a boundary vertex in one triangle folded back over the mesh")
     CAPTURE(flaps);
     akvf::ParamConfig config = hostile_config();
     config.conformal = akvf::ConformalStart::kNever;  // the flap is the Tutte map's
+    config.boundary_first = akvf::ConformalStart::kNever;
     config.optimize_flaps = flaps;
     const akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "flap", config);
     if (flaps) CHECK(setup.flaps_moved >= 1);
@@ -166,6 +167,7 @@ TEST_CASE("a nearly degenerate Tutte map (a deep sock: areas below 1e-12 of the 
   const akvf::TriMesh mesh = sock(12, 40, 10);
   akvf::ParamConfig config = hostile_config();
   config.conformal = akvf::ConformalStart::kNever;
+  config.boundary_first = akvf::ConformalStart::kNever;
   config.optimizer.max_iterations = 500;
   const akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "sock", config);
   CHECK(min_area_ratio(setup.disk.mesh, setup.x0) < 1e-12);

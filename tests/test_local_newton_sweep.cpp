@@ -7,6 +7,7 @@
 
 #include <tbb/task_arena.h>
 
+#include "akvf/extend.h"
 #include "akvf/internal/options.h"
 #include "akvf/internal/parameterization.h"
 #include "akvf/rest_geometry.h"
@@ -102,6 +103,7 @@ TEST_CASE("local_sweep runs the sweeps after bound-set steps, with local injecti
   akvf::ParamConfig config;
   config.global_injectivity = false;
   config.conformal = akvf::ConformalStart::kNever;  // the flat grid's conformal map is the minimum
+  config.boundary_first = akvf::ConformalStart::kNever;
   const auto setup = akvf::prepare_parameterization(mesh, "test", config);
   const akvf::ParamRun plain = akvf::run_parameterization(setup, config);
   config.local_sweep = 4;
@@ -146,6 +148,28 @@ TEST_CASE("local_sweep auto sweeps with the default method on barrier energies o
   CHECK(akvf::param_config(options).local_sweep == 2);
   options.preconditioner = "akvf-newton";
   options.local_sweep = 0;
+  CHECK(akvf::param_config(options).local_sweep == 0);
+}
+
+namespace {
+// |J|^2 + |J^-1|^2: symmetric Dirichlet, infinite at a collapse.
+struct AutodiffSymmetricDirichlet {
+  template <class T>
+  T operator()(const Eigen::Matrix<T, 2, 2>& J) const {
+    return J.squaredNorm() + J.inverse().squaredNorm();
+  }
+};
+}  // namespace
+
+TEST_CASE("a user energy registered with the collapse-barrier tag is swept by default, one without is not") {
+  akvf::register_autodiff_energy<2>("test-swept-sd", "tagged", 4.0, AutodiffSymmetricDirichlet{},
+                                    {akvf::kCollapseBarrier});
+  akvf::register_autodiff_energy<2>("test-unswept-sd", "untagged", 4.0, AutodiffSymmetricDirichlet{});
+  CHECK(akvf::energies_2d().has_tag("test-swept-sd", akvf::kCollapseBarrier));
+  akvf::ParameterizeOptions options;
+  options.energy = "test-swept-sd";
+  CHECK(akvf::param_config(options).local_sweep == 4);
+  options.energy = "test-unswept-sd";
   CHECK(akvf::param_config(options).local_sweep == 0);
 }
 

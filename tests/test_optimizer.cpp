@@ -151,6 +151,7 @@ TEST_CASE("the energy never increases and row 0 is the initial map") {
 TEST_CASE("identity preconditioning runs end to end and is far slower than AKVF") {
   ParamConfig config;
   config.conformal = akvf::ConformalStart::kNever;  // the bar is developable: its conformal map is the minimum
+  config.boundary_first = akvf::ConformalStart::kNever;
   config.optimizer.max_iterations = 40;
   config.optimizer.gradient_tolerance = 0;
   const auto akvf_run = run(akvf::bent_bar(31, 6), config).result;
@@ -285,6 +286,7 @@ TEST_CASE("an interrupt (Ctrl-C) ends the run after the current iteration with i
     ParamConfig config;
     config.preconditioner = method;
     config.conformal = akvf::ConformalStart::kNever;  // the bar is developable: its conformal map is the minimum
+    config.boundary_first = akvf::ConformalStart::kNever;
     config.optimizer.gradient_tolerance = 0;
     Eigen::VectorXd at_3;
     auto interrupt_at_3 = [&](const akvf::IterationSummary& s, const Eigen::VectorXd& x) {
@@ -360,6 +362,7 @@ TEST_CASE(
   ParamConfig config;
   config.optimizer.max_iterations = 2;
   config.conformal = akvf::ConformalStart::kNever;  // the flat grids' conformal maps are their minima
+  config.boundary_first = akvf::ConformalStart::kNever;
   const akvf::TriMesh small = akvf::test::grid_disk(20, 20, 0.2, 3);
   const akvf::ParamSetup global = akvf::prepare_parameterization(small, "small", config);
   CHECK_FALSE(global.vertex_ordering);  // global injectivity

@@ -324,7 +324,8 @@ TEST_CASE("every method with symmetric Dirichlet on every disk mesh: no flip, en
         akvf::ParamConfig config;
         config.preconditioner = method;
         config.conformal = akvf::ConformalStart::kNever;  // every method from the hard start (hilbert_b's
-                                                          // conformal map is its minimum)
+        config.boundary_first = akvf::ConformalStart::kNever;
+        // conformal map is its minimum)
         config.optimizer.max_iterations = 20;
         config.global_injectivity = global;
         const std::string path = dir + "/tri/" + name;

@@ -52,6 +52,8 @@ TEST_CASE("the exponential energies' warm start has its own limit, counts its ti
   config.energy_settings.exponent = 60;  // exp(60 D) overflows at the Tutte map's worst triangles
   config.optimizer.max_iterations = 2;   // the run's limit does not cap the warm start
   config.warm_start_max_iterations = 1000;
+  config.conformal = akvf::ConformalStart::kNever;  // from the Tutte map
+  config.boundary_first = akvf::ConformalStart::kNever;
   const akvf::TriMesh mesh = akvf::test::bumpy_disk(9, 9);
   akvf::ParamSetup setup = akvf::prepare_parameterization(mesh, "b.obj", config);
   REQUIRE(setup.warm_start.trace.size() >= 2);
@@ -128,6 +130,7 @@ TEST_CASE(
     config.energy = "exp-symmetric-dirichlet";
     config.energy_settings.exponent = 60;
     config.conformal = akvf::ConformalStart::kNever;  // the Tutte map, where the energy overflows
+    config.boundary_first = akvf::ConformalStart::kNever;
     const akvf::ParamSetup setup = akvf::prepare_parameterization(c.mesh, "b.obj", config);
     REQUIRE(setup.warm_start.trace.size() >= 2);
     const double ratio = setup.objective->value(setup.x0) / setup.objective->lower_bound();
@@ -335,6 +338,7 @@ TEST_CASE("a growing trace holds every row as the run goes and becomes the final
   ParamConfig config;
   config.optimizer.max_iterations = 3;
   config.conformal = akvf::ConformalStart::kNever;  // a start farther than 3 iterations from the minimum
+  config.boundary_first = akvf::ConformalStart::kNever;
   const akvf::ParamSetup setup = akvf::prepare_parameterization(akvf::test::bumpy_disk(7, 7), "b.obj", config);
   const akvf::OptimizerResult result = akvf::run_parameterization(setup, config, {record, look}).result;
   REQUIRE(seen.size() == 4);  // rows 0..3

@@ -18,9 +18,9 @@
 
 namespace akvf {
 
-// Whether the start is the conformal map (framework/optimization/conformal_map.h):
-// never, where it is flip-free and lower in energy than the Tutte map, or
-// wherever it is flip-free.
+// Whether the start is a conformal map (framework/optimization/conformal_map.h,
+// boundary_first_map.h): never, where it is flip-free and lower in energy
+// than the other starts tried, or wherever it is flip-free.
 enum class ConformalStart { kNever, kAuto, kAlways };
 
 struct ParamConfig {
@@ -35,6 +35,9 @@ struct ParamConfig {
   // The conformal map instead of Tutte's (akvf/parameterization.cpp,
   // take_conformal_start), on one chart.
   ConformalStart conformal = ConformalStart::kAuto;
+  // The boundary-first map likewise (take_conformal_start, after the
+  // least-squares one).
+  ConformalStart boundary_first = ConformalStart::kAuto;
   // Cut a closed, multi-boundary, higher-genus or multi-component mesh into
   // disks (one chart per component, framework/mesh/cut_to_disk.h) instead of
   // refusing it.

@@ -42,10 +42,11 @@ void bumpy_grid(int n, Eigen::MatrixXd* V, Eigen::MatrixXi* F) {
 }  // namespace
 
 int main() try {
-  // Lower bound 4: both terms are minimal at J = I (4 and 0).
+  // Lower bound 4: both terms are minimal at J = I (4 and 0). Both grow
+  // without bound as det J falls to 0: the collapse-barrier tag.
   akvf::register_autodiff_energy<2>("area-aware-dirichlet",
                                     "symmetric Dirichlet + 0.5 log(det J)^2, by automatic differentiation", 4.0,
-                                    AreaAwareDirichlet{});
+                                    AreaAwareDirichlet{}, {akvf::kCollapseBarrier});
   Eigen::MatrixXd V;
   Eigen::MatrixXi F;
   bumpy_grid(12, &V, &F);

@@ -58,7 +58,7 @@ class Result:
     reused_solves, cg_solves, cg_iterations, symbolic_analyses,
     multigrid_setups, and seconds per phase); ``preconditioner_report``;
     ``warnings``; parameterize only: ``initial_map`` (the start taken:
-    "tutte", "cotan", "conformal", or "file" for ``uv0``), ``boundary_crossings`` and
+    "tutte", "cotan", "conformal", "boundary-first", or "file" for ``uv0``), ``boundary_crossings`` and
     ``overlap_fraction`` (the final map's self-overlap per chart, 0 with
     injectivity="global") and ``distortion_energy`` (the energy of ``uv``:
     ``energy`` less the boundary barrier that holds it off an overlap);
