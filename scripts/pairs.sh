@@ -19,9 +19,22 @@ energies=$("$AKVF" list | awk '/^energies/{on=1; next} /^[a-z]/{on=0} on{print $
 # Every preconditioner, and every solver but `descent` (the preconditioned
 # descent the preconditioners already run).
 methods=$("$AKVF" list | awk '/^(preconditioners|solvers)/{on=1; next} /^[a-z]/{on=0} on && $1 != "descent"{print $1}')
-# The start --init auto takes on $1, as the command line names it.
+# The start --init auto takes on $1 for each energy (it compares the starts
+# in the run's energy), as the command line names it: "energy: start; ...",
+# or the start alone when every energy takes the same.
 start_of() {
-  "$AKVF" param "$1" --max-iters 0 --injectivity local 2>/dev/null | sed -n 's/.*, start: \(.*\)$/\1/p'
+  local line starts=""
+  for energy in $energies; do
+    line=$("$AKVF" param "$1" --energy "$energy" --max-iters 0 --injectivity local 2>/dev/null |
+      sed -n 's/.*, start: \(.*\)$/\1/p')
+    starts+="${starts:+; }$energy: $line"
+  done
+  if [ "$(printf '%s\n' "$starts" | tr ';' '\n' | sed 's/^ *[a-z-]*: //' | sort -u | wc -l)" = 1 ]; then
+    local first=${starts%%;*}
+    printf '%s\n' "${first#*: }"
+  else
+    printf '%s\n' "$starts"
+  fi
 }
 
 echo "# Energy x preconditioner pairs"

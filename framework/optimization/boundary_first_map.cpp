@@ -4,6 +4,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <cmath>
+#include <optional>
 
 namespace akvf {
 
@@ -65,12 +66,14 @@ Eigen::MatrixXd boundary_first_map(const TriMesh& mesh, const std::vector<int>& 
   for (int v = 0; v < n; ++v)
     if (interior[static_cast<std::size_t>(v)] >= 0) interior_vertices.push_back(v);
   // L_II X = B by the caller's solver, else (or where it fails) Eigen's
-  // simplicial L D L^T, as the Tutte solve does.
+  // simplicial L D L^T, as the Tutte solve does, factored once for both
+  // systems.
+  std::optional<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> ldlt;
   const auto solve = [&](const Eigen::MatrixXd& B, Eigen::MatrixXd* X) {
-    if (solver && solver(L_II, B, interior_vertices, X)) return true;
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(L_II);
-    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0).all()) return false;
-    *X = ldlt.solve(B);
+    if (!ldlt && solver && solver(L_II, B, interior_vertices, X)) return true;
+    if (!ldlt) ldlt.emplace(L_II);
+    if (ldlt->info() != Eigen::Success || !(ldlt->vectorD().array() > 0).all()) return false;
+    *X = ldlt->solve(B);
     return true;
   };
 
@@ -130,6 +133,7 @@ Eigen::MatrixXd boundary_first_map(const TriMesh& mesh, const std::vector<int>& 
     signed_area += (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
   }
   if (signed_area < 0) UV.col(0) = -UV.col(0);
+  if (!UV.allFinite()) return {};  // a degenerate rest triangle's cotangent, or a curve with no closing
   return UV;
 }
 

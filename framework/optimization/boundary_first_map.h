@@ -26,7 +26,8 @@ namespace akvf {
 //  4. the interior, the harmonic extension of the curve: L_II X_I = -L_IB X_B.
 // The loop may run either way round; the map's orientation follows the
 // faces'. Returns UV (#V by 2), or an empty matrix when L_II is not positive
-// definite or the closed curve would need an edge of length <= 0. The
+// definite, the closed curve would need an edge of length <= 0, or the map
+// is not finite. The
 // cotangent weights may be negative, so the map may fold (the caller
 // checks). `solver`: for L_II's two systems, as Tutte's (empty: Eigen's
 // simplicial L D L^T).
