@@ -16,6 +16,7 @@
 #include "akvf/threads.h"
 #include "framework/mesh/chart_layout.h"
 #include "framework/mesh/fold_repair.h"
+#include "framework/mesh/initialization.h"
 #include "framework/mesh/plane_geometry.h"
 #include "framework/mesh/vertex_graph.h"
 #include "framework/optimization/boundary_first_map.h"
@@ -89,15 +90,7 @@ SpdSolver tutte_solver(const std::shared_ptr<const BlockOrdering>& ordering) {
 // positions and each vertex's angle sum.
 std::shared_ptr<const BoundaryContact> boundary_contact_of(const TriMesh& normalized,
                                                            const std::vector<std::vector<int>>& loops) {
-  Eigen::VectorXd angle_sum = Eigen::VectorXd::Zero(normalized.num_vertices());
-  for (int f = 0; f < normalized.num_faces(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::RowVector3d p = normalized.V.row(normalized.F(f, k));
-      const Eigen::RowVector3d u = normalized.V.row(normalized.F(f, (k + 1) % 3)) - p;
-      const Eigen::RowVector3d v = normalized.V.row(normalized.F(f, (k + 2) % 3)) - p;
-      angle_sum[normalized.F(f, k)] += std::atan2(u.cross(v).norm(), u.dot(v));
-    }
-  return std::make_shared<const BoundaryContact>(loops, normalized.V, angle_sum, normalized.F);
+  return std::make_shared<const BoundaryContact>(loops, normalized.V, vertex_angle_sums(normalized), normalized.F);
 }
 
 // Shortens the flap moves (§5.4) that make a chart's boundary cross itself,

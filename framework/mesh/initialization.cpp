@@ -11,13 +11,8 @@
 
 namespace akvf {
 
-namespace {
-
-using Triplets = std::vector<Eigen::Triplet<double>>;
-
-// Off-diagonal Laplacian weights w_ij > 0 (uniform) or (cot a + cot b) / 2.
-Triplets edge_weights(const TriMesh& mesh, TutteWeights weights) {
-  Triplets w;
+std::vector<Eigen::Triplet<double>> laplacian_edge_weights(const TriMesh& mesh, TutteWeights weights) {
+  std::vector<Eigen::Triplet<double>> w;
   w.reserve(6 * mesh.num_faces());
   for (int f = 0; f < mesh.num_faces(); ++f)
     for (int k = 0; k < 3; ++k) {
@@ -33,33 +28,37 @@ Triplets edge_weights(const TriMesh& mesh, TutteWeights weights) {
   return w;
 }
 
-Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, TutteWeights weights,
-                            const SpdSolver& solver, bool* ok) {
+Eigen::VectorXd vertex_angle_sums(const TriMesh& mesh) {
+  Eigen::VectorXd angle_sum = Eigen::VectorXd::Zero(mesh.num_vertices());
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::RowVector3d p = mesh.V.row(mesh.F(f, k));
+      const Eigen::RowVector3d u = mesh.V.row(mesh.F(f, (k + 1) % 3)) - p;
+      const Eigen::RowVector3d v = mesh.V.row(mesh.F(f, (k + 2) % 3)) - p;
+      angle_sum[mesh.F(f, k)] += std::atan2(u.cross(v).norm(), u.dot(v));
+    }
+  return angle_sum;
+}
+
+bool solve_interior_laplacian(const TriMesh& mesh, const std::vector<int>& loop, TutteWeights weights,
+                              const SpdSolver& solver, const Eigen::MatrixXd& source, Eigen::MatrixXd* X) {
   const int n = mesh.num_vertices();
-  Eigen::MatrixXd UV = Eigen::MatrixXd::Zero(n, 2);
-  std::vector<double> arc(loop.size() + 1, 0.0);
-  for (std::size_t i = 0; i < loop.size(); ++i)
-    arc[i + 1] = arc[i] + (mesh.V.row(loop[(i + 1) % loop.size()]) - mesh.V.row(loop[i])).norm();
-  const double radius = std::sqrt(surface_area(mesh) / std::numbers::pi);
   std::vector<int> interior_index(n, 0), interior_vertex;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const double angle = 2 * std::numbers::pi * arc[i] / arc.back();
-    UV.row(loop[i]) << radius * std::cos(angle), radius * std::sin(angle);
-    interior_index[loop[i]] = -1;
-  }
+  for (int v : loop) interior_index[v] = -1;
   int m = 0;
   for (int v = 0; v < n; ++v)
     if (interior_index[v] == 0) {
       interior_index[v] = m++;
       interior_vertex.push_back(v);
     }
-  *ok = true;
-  if (m == 0) return UV;
+  if (m == 0) return X->allFinite();
 
-  // L_II u_I = -L_IB u_B with L = D - W (rows of interior vertices only).
-  Triplets lhs;
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, 2);
-  for (const auto& t : edge_weights(mesh, weights)) {
+  // L_II X_I = S_I - L_IB X_B with L = D - W (rows of interior vertices only).
+  std::vector<Eigen::Triplet<double>> lhs;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, X->cols());
+  if (source.size() > 0)
+    for (int i = 0; i < m; ++i) rhs.row(i) = source.row(interior_vertex[i]);
+  for (const auto& t : laplacian_edge_weights(mesh, weights)) {
     const int i = interior_index[t.row()];
     if (i < 0) continue;
     lhs.emplace_back(i, i, t.value());
@@ -67,7 +66,7 @@ Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, T
     if (j >= 0)
       lhs.emplace_back(i, j, -t.value());
     else
-      rhs.row(i) += t.value() * UV.row(t.col());
+      rhs.row(i) += t.value() * X->row(t.col());
   }
   Eigen::SparseMatrix<double> L(m, m);
   L.setFromTriplets(lhs.begin(), lhs.end());
@@ -76,15 +75,27 @@ Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, T
     // Also for cotangent weights whose system is not positive definite: a
     // nonsingular one still has an L D L^T (whose map is checked for folds).
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(L);
-    if (ldlt.info() != Eigen::Success) {
-      *ok = false;
-      return UV;
-    }
+    if (ldlt.info() != Eigen::Success) return false;
     interior = ldlt.solve(rhs);
   }
-  for (int v = 0; v < n; ++v)
-    if (interior_index[v] >= 0) UV.row(v) = interior.row(interior_index[v]);
-  *ok = UV.allFinite();
+  for (int i = 0; i < m; ++i) X->row(interior_vertex[i]) = interior.row(i);
+  return X->allFinite();
+}
+
+namespace {
+
+Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, TutteWeights weights,
+                            const SpdSolver& solver, bool* ok) {
+  Eigen::MatrixXd UV = Eigen::MatrixXd::Zero(mesh.num_vertices(), 2);
+  std::vector<double> arc(loop.size() + 1, 0.0);
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    arc[i + 1] = arc[i] + (mesh.V.row(loop[(i + 1) % loop.size()]) - mesh.V.row(loop[i])).norm();
+  const double radius = std::sqrt(surface_area(mesh) / std::numbers::pi);
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const double angle = 2 * std::numbers::pi * arc[i] / arc.back();
+    UV.row(loop[i]) << radius * std::cos(angle), radius * std::sin(angle);
+  }
+  *ok = solve_interior_laplacian(mesh, loop, weights, solver, {}, &UV);
   return UV;
 }
 

@@ -23,6 +23,23 @@ enum class TutteWeights { kUniform, kCotangent };
 using SpdSolver = std::function<bool(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B,
                                      const std::vector<int>& vertices, Eigen::MatrixXd* X)>;
 
+// The Laplacian's off-diagonal weights w_ij > 0 (uniform) or
+// (cot a + cot b) / 2 (the 3D corners opposite edge ij), one triplet per
+// face and direction (summed by setFromTriplets): L = D - W.
+std::vector<Eigen::Triplet<double>> laplacian_edge_weights(const TriMesh& mesh, TutteWeights weights);
+
+// Each vertex's sum of corner angles at rest: 2 pi less its angle defect
+// inside, pi less the boundary's turning on the boundary.
+Eigen::VectorXd vertex_angle_sums(const TriMesh& mesh);
+
+// Solves L_II X_I = S_I - L_IB X_B for the vertices off `loop` (L of
+// laplacian_edge_weights; S = `source`, #V rows, or empty for 0), the
+// loop's rows of *X given; writes the other rows of *X. By `solver`, else
+// (or where it fails) Eigen's L D L^T; false when the system is singular or
+// the result is not finite.
+bool solve_interior_laplacian(const TriMesh& mesh, const std::vector<int>& loop, TutteWeights weights,
+                              const SpdSolver& solver, const Eigen::MatrixXd& source, Eigen::MatrixXd* X);
+
 // Tutte embedding: the boundary loop on a circle of the mesh's area, spaced by
 // 3D arc length, and each interior vertex at the weighted average of its
 // neighbours. With cotangent weights (which may be negative) the map can fold;

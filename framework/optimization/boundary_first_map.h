@@ -14,7 +14,7 @@
 
 namespace akvf {
 
-// The map, by the discrete conformal (cotangent) Laplacian L (positive
+// The map, by the cotangent Laplacian L (initialization.h: positive
 // semi-definite, the integrated -Delta):
 //  1. the scale factor u solves the Yamabe equation with target curvature 0,
 //     L_II u_I = -K_I (K the angle defects of the interior vertices I),
@@ -24,13 +24,12 @@ namespace akvf {
 //  3. the boundary curve of rest edge lengths and those turns, closed by
 //     the least change of lengths in sum (l~ - l)^2 / l (BFF's Sec. 4.1.3);
 //  4. the interior, the harmonic extension of the curve: L_II X_I = -L_IB X_B.
-// The loop may run either way round; the map's orientation follows the
-// faces'. Returns UV (#V by 2), or an empty matrix when L_II is not positive
-// definite, the closed curve would need an edge of length <= 0, or the map
-// is not finite. The
-// cotangent weights may be negative, so the map may fold (the caller
-// checks). `solver`: for L_II's two systems, as Tutte's (empty: Eigen's
-// simplicial L D L^T).
+// Both systems by solve_interior_laplacian with `solver` (the Tutte
+// solve's). The loop may run either way round; the map's orientation
+// follows the faces'. Returns UV (#V by 2), or an empty matrix when a
+// system is singular or its solution not finite, or the closed curve
+// would need an edge of length <= 0. The cotangent weights may be
+// negative, so the map may fold (the caller checks).
 Eigen::MatrixXd boundary_first_map(const TriMesh& mesh, const std::vector<int>& boundary_loop,
                                    const SpdSolver& solver = {});
 
