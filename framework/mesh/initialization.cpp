@@ -1,9 +1,9 @@
 #include "framework/mesh/initialization.h"
 
 #include <Eigen/Geometry>
-#include <Eigen/SparseCholesky>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "akvf/error.h"
 #include "akvf/rest_geometry.h"
@@ -40,46 +40,56 @@ Eigen::VectorXd vertex_angle_sums(const TriMesh& mesh) {
   return angle_sum;
 }
 
-bool solve_interior_laplacian(const TriMesh& mesh, const std::vector<int>& loop, TutteWeights weights,
-                              const SpdSolver& solver, const Eigen::MatrixXd& source, Eigen::MatrixXd* X) {
-  const int n = mesh.num_vertices();
-  std::vector<int> interior_index(n, 0), interior_vertex;
-  for (int v : loop) interior_index[v] = -1;
+InteriorLaplacian::InteriorLaplacian(const TriMesh& mesh, const std::vector<int>& loop, TutteWeights weights,
+                                     SpdSolver solver)
+    : weights_(laplacian_edge_weights(mesh, weights)),
+      interior_index_(mesh.num_vertices(), 0),
+      solver_(std::move(solver)) {
+  for (int v : loop) interior_index_[v] = -1;
   int m = 0;
-  for (int v = 0; v < n; ++v)
-    if (interior_index[v] == 0) {
-      interior_index[v] = m++;
-      interior_vertex.push_back(v);
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (interior_index_[v] == 0) {
+      interior_index_[v] = m++;
+      interior_vertex_.push_back(v);
     }
-  if (m == 0) return X->allFinite();
-
-  // L_II X_I = S_I - L_IB X_B with L = D - W (rows of interior vertices only).
   std::vector<Eigen::Triplet<double>> lhs;
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, X->cols());
-  if (source.size() > 0)
-    for (int i = 0; i < m; ++i) rhs.row(i) = source.row(interior_vertex[i]);
-  for (const auto& t : laplacian_edge_weights(mesh, weights)) {
-    const int i = interior_index[t.row()];
+  for (const auto& t : weights_) {
+    const int i = interior_index_[t.row()];
     if (i < 0) continue;
     lhs.emplace_back(i, i, t.value());
-    const int j = interior_index[t.col()];
-    if (j >= 0)
-      lhs.emplace_back(i, j, -t.value());
-    else
-      rhs.row(i) += t.value() * X->row(t.col());
+    const int j = interior_index_[t.col()];
+    if (j >= 0) lhs.emplace_back(i, j, -t.value());
   }
-  Eigen::SparseMatrix<double> L(m, m);
-  L.setFromTriplets(lhs.begin(), lhs.end());
+  interior_.resize(m, m);
+  interior_.setFromTriplets(lhs.begin(), lhs.end());
+}
+
+bool InteriorLaplacian::solve(const Eigen::MatrixXd& source, Eigen::MatrixXd* X) {
+  const auto m = static_cast<int>(interior_vertex_.size());
+  if (m == 0) return X->allFinite();
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, X->cols());
+  if (source.size() > 0)
+    for (int i = 0; i < m; ++i) rhs.row(i) = source.row(interior_vertex_[i]);
+  for (const auto& t : weights_) {
+    const int i = interior_index_[t.row()];
+    if (i >= 0 && interior_index_[t.col()] < 0) rhs.row(i) += t.value() * X->row(t.col());
+  }
   Eigen::MatrixXd interior;
-  if (!solver || !solver(L, rhs, interior_vertex, &interior)) {
+  if (ldlt_ || !solver_ || !solver_(interior_, rhs, interior_vertex_, &interior)) {
     // Also for cotangent weights whose system is not positive definite: a
     // nonsingular one still has an L D L^T (whose map is checked for folds).
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(L);
-    if (ldlt.info() != Eigen::Success) return false;
-    interior = ldlt.solve(rhs);
+    if (!ldlt_) ldlt_ = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>(interior_);
+    if (ldlt_->info() != Eigen::Success) return false;
+    interior = ldlt_->solve(rhs);
   }
-  for (int i = 0; i < m; ++i) X->row(interior_vertex[i]) = interior.row(i);
+  for (int i = 0; i < m; ++i) X->row(interior_vertex_[i]) = interior.row(i);
   return X->allFinite();
+}
+
+Eigen::MatrixXd InteriorLaplacian::apply(const Eigen::MatrixXd& X) const {
+  Eigen::MatrixXd LX = Eigen::MatrixXd::Zero(X.rows(), X.cols());
+  for (const auto& t : weights_) LX.row(t.row()) += t.value() * (X.row(t.row()) - X.row(t.col()));
+  return LX;
 }
 
 namespace {
@@ -95,7 +105,7 @@ Eigen::MatrixXd solve_tutte(const TriMesh& mesh, const std::vector<int>& loop, T
     const double angle = 2 * std::numbers::pi * arc[i] / arc.back();
     UV.row(loop[i]) << radius * std::cos(angle), radius * std::sin(angle);
   }
-  *ok = solve_interior_laplacian(mesh, loop, weights, solver, {}, &UV);
+  *ok = InteriorLaplacian(mesh, loop, weights, solver).solve({}, &UV);
   return UV;
 }
 

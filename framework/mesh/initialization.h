@@ -2,8 +2,10 @@
 // Initial maps for parameterization (Algorithm 1, first two lines): the Tutte
 // embedding and the flap optimization of §5.4.
 #include <Eigen/Core>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,13 +34,31 @@ std::vector<Eigen::Triplet<double>> laplacian_edge_weights(const TriMesh& mesh, 
 // inside, pi less the boundary's turning on the boundary.
 Eigen::VectorXd vertex_angle_sums(const TriMesh& mesh);
 
-// Solves L_II X_I = S_I - L_IB X_B for the vertices off `loop` (L of
-// laplacian_edge_weights; S = `source`, #V rows, or empty for 0), the
-// loop's rows of *X given; writes the other rows of *X. By `solver`, else
-// (or where it fails) Eigen's L D L^T; false when the system is singular or
-// the result is not finite.
-bool solve_interior_laplacian(const TriMesh& mesh, const std::vector<int>& loop, TutteWeights weights,
-                              const SpdSolver& solver, const Eigen::MatrixXd& source, Eigen::MatrixXd* X);
+// The system L_II X_I = S_I - L_IB X_B for the vertices off a boundary
+// loop (L of laplacian_edge_weights), assembled once for solves with
+// several right-hand sides. By `solver` (which factors at each solve), else
+// (or where it declines) Eigen's L D L^T, factored at the first solve and
+// kept.
+class InteriorLaplacian {
+ public:
+  InteriorLaplacian(const TriMesh& mesh, const std::vector<int>& loop, TutteWeights weights, SpdSolver solver);
+
+  // Writes the rows of *X off the loop, its loop rows given (S = `source`,
+  // #V rows, or empty for 0); false when the system is singular or the
+  // result is not finite.
+  bool solve(const Eigen::MatrixXd& source, Eigen::MatrixXd* X);
+
+  // (L X)_i = sum_j w_ij (X_i - X_j) at every vertex.
+  Eigen::MatrixXd apply(const Eigen::MatrixXd& X) const;
+
+ private:
+  std::vector<Eigen::Triplet<double>> weights_;
+  std::vector<int> interior_index_;  // -1 on the loop
+  std::vector<int> interior_vertex_;
+  Eigen::SparseMatrix<double> interior_;  // L_II
+  SpdSolver solver_;
+  std::unique_ptr<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> ldlt_;
+};
 
 // Tutte embedding: the boundary loop on a circle of the mesh's area, spaced by
 // 3D arc length, and each interior vertex at the weighted average of its

@@ -18,10 +18,9 @@ Eigen::MatrixXd boundary_first_map(const TriMesh& mesh, const std::vector<int>& 
 
   // 1. u: L_II u_I = -K_I (K = 2 pi - the angle sum), u_B = 0.
   Eigen::MatrixXd u = Eigen::MatrixXd::Zero(n, 1), defect = (angle_sum.array() - 2 * pi).matrix();
-  if (!solve_interior_laplacian(mesh, boundary_loop, TutteWeights::kCotangent, solver, defect, &u)) return {};
-  Eigen::VectorXd Lu = Eigen::VectorXd::Zero(n);
-  for (const auto& t : laplacian_edge_weights(mesh, TutteWeights::kCotangent))
-    Lu[t.row()] += t.value() * (u(t.row(), 0) - u(t.col(), 0));
+  InteriorLaplacian laplacian(mesh, boundary_loop, TutteWeights::kCotangent, solver);
+  if (!laplacian.solve(defect, &u)) return {};
+  const Eigen::VectorXd Lu = laplacian.apply(u).col(0);
 
   // 2-3. The curve: edge i from loop[i] to loop[i + 1], turning by kappa~ at
   // each vertex after the first.
@@ -49,7 +48,7 @@ Eigen::MatrixXd boundary_first_map(const TriMesh& mesh, const std::vector<int>& 
   }
 
   // 4. The interior: L_II X_I = -L_IB X_B.
-  if (!solve_interior_laplacian(mesh, boundary_loop, TutteWeights::kCotangent, solver, {}, &UV)) return {};
+  if (!laplacian.solve({}, &UV)) return {};
 
   // The faces' orientation: a loop run clockwise round them gives the
   // mirror image.

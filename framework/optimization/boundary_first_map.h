@@ -24,7 +24,7 @@ namespace akvf {
 //  3. the boundary curve of rest edge lengths and those turns, closed by
 //     the least change of lengths in sum (l~ - l)^2 / l (BFF's Sec. 4.1.3);
 //  4. the interior, the harmonic extension of the curve: L_II X_I = -L_IB X_B.
-// Both systems by solve_interior_laplacian with `solver` (the Tutte
+// Both systems by one InteriorLaplacian with `solver` (the Tutte
 // solve's). The loop may run either way round; the map's orientation
 // follows the faces'. Returns UV (#V by 2), or an empty matrix when a
 // system is singular or its solution not finite, or the closed curve
