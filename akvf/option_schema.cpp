@@ -254,6 +254,12 @@ const std::vector<OptionField<ParameterizeOptions>>& parameterize_option_fields(
                                      "held (interior vertices only with --injectivity global; 0 = off); auto: 4 for "
                                      "akvf-newton on an energy with a barrier at collapse (not arap), 0 for the others",
                                      &O::local_sweep, ">= 0", [](double x) { return x >= 0; }));
+    f.push_back(auto_number_field<O>("akvf_compression", "akvf-compression", "X",
+                                     "plain AKVF (--precond akvf): each face along whose compression K curves more "
+                                     "than X times the energy takes the energy's Hessian, negative eigenvalues "
+                                     "mirrored, instead of K (0 = off: K everywhere, as in the paper); auto: 1 on an "
+                                     "energy without a barrier at collapse (arap), 0 for the others",
+                                     &O::akvf_compression, ">= 0", [](double x) { return x >= 0; }));
     f.push_back(recomputes_start(choice_field<O>(
         "init", "init", "initialization",
         "initial map: auto (of Tutte's, the conformal and the boundary-first map, the lowest in energy after "

@@ -56,6 +56,11 @@ ParamConfig param_config(const ParameterizeOptions& o) {
   const bool sweeps_by_default = preconditioners_2d().has_tag(o.preconditioner, kSweepsByDefault) &&
                                  energies_2d().has_tag(o.energy, kCollapseBarrier);
   c.local_sweep = o.local_sweep.value_or(sweeps_by_default ? 4 : 0);
+  // --akvf-compression auto: on where K stiffens under compression faster
+  // than the energy (akvf_preconditioner_2d.h); 1, the point where K starts
+  // to curve more than the energy along the face's compression.
+  const double compression = o.akvf_compression.value_or(energies_2d().has_tag(o.energy, kCollapseBarrier) ? 0 : 1);
+  if (compression > 0) c.preconditioner_settings.akvf.compression_stiffness = compression;
   set_eigen_filters(o.eigen_filter, &c.preconditioner_settings);
   c.init_from_file = o.init == InitialMap::kFile;
   c.init = o.init == InitialMap::kCotan ? TutteWeights::kCotangent : TutteWeights::kUniform;

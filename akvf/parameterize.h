@@ -42,6 +42,10 @@ struct ParameterizeOptions {
                                                    // vertices whose |g_v|^2 passes it times the mean); 0 = off;
                                                    // none ("auto"): 4 for akvf-newton on an energy
                                                    // tagged kCollapseBarrier (not arap), off for the others
+  std::optional<double> akvf_compression;          // plain AKVF: faces whose K curves more than this many times
+                                                   // the energy along their compression take the energy's
+                                                   // mirrored Hessian; 0 = off (K as in §4); none ("auto"): 1
+                                                   // on an energy not tagged kCollapseBarrier (arap), else off
   InitialMap init = InitialMap::kAuto;             // kFile is the command line's (the API takes
                                                    // Parameterizer::solve(uv0))
   Cut cut = Cut::kNone;                            // kAuto: cut closed / multi-boundary / higher-genus /

@@ -28,6 +28,23 @@
 // current: s^2) exceeds sliver_stretch^2 adds projected Newton's block
 // w_f G_f^T [H_f]_+ G_f to its part of K, so that the direction sees the
 // curvature that holds it.
+//
+// Compression (AkvfOptions2D::compression_stiffness, plain AKVF on an
+// energy without a barrier at collapse: ARAP): the other way round, a face
+// the map compresses to singular value sigma_min has K curving as
+// 1 / sigma_min^2 along that compression, while ARAP's density curves as 2
+// there whatever sigma_min. K^-1 g then hardly moves the vertices of the
+// faces the map squeezes (camelhead's flattened rest slivers: 98 % of the
+// gradient on ten vertices after 300 iterations,
+// docs/notes/2026-12-03-akvf-arap-compressed-slivers.md), and AKVF ends at
+// the iteration limit. A face along whose compression mode dJ = u_min
+// v_min^T K's quadratic form exceeds compression_stiffness times the
+// energy's (both in K's units) takes the energy's own block
+// w_f G_f^T |H_f| G_f instead of K's, its negative eigenvalues mirrored:
+// clamped, ARAP's twist mode of a compressed face (eigenvalue
+// 2 - 4 / (sigma_1 + sigma_2)) would leave a motion no term stiffens. The
+// energies with a barrier at collapse curve at least as 1 / sigma^4 there,
+// above K, so for them the rule changes nothing where it matters.
 #include <optional>
 #include <vector>
 
@@ -53,6 +70,10 @@ struct AkvfOptions2D {
   // Faces whose thinnest height the map stretched more than this many times
   // carry the energy's own curvature too (above); unset: K alone.
   std::optional<double> sliver_stretch;
+  // Faces along whose compression K curves more than this many times the
+  // energy carry the energy's Hessian, negative eigenvalues mirrored,
+  // instead of K (above); unset: K everywhere, as in §4.
+  std::optional<double> compression_stiffness;
 };
 
 class AkvfPreconditioner2D final : public FactoredPreconditioner2D {
@@ -71,7 +92,9 @@ class AkvfPreconditioner2D final : public FactoredPreconditioner2D {
   AkvfOptions2D options_;
   double divergence_weight_;  // beta
   double energy_scale_;       // c, or 1 without energy_scaling
+  double energy_to_k_;        // the energy's curvature in the factored matrix's units: energy_scale_ / c
   std::vector<char> sliver_;  // per face: it carried the energy's curvature in some assembly (sliver_stretch)
+  std::vector<char> stiff_;   // per face: the energy's curvature replaced K in some assembly (compression_stiffness)
 };
 
 }  // namespace akvf

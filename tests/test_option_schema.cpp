@@ -108,3 +108,18 @@ TEST_CASE("docs/options.md is the reference `akvf list --options` prints") {
   CHECK(r.code == 0);
   CHECK(akvf::test::read_text(std::string(AKVF_SOURCE_DIR) + "/docs/options.md") == r.out);
 }
+
+TEST_CASE("akvf_compression auto: on for an energy without a barrier at collapse, off for the others") {
+  akvf::ParameterizeOptions options;
+  options.energy = "arap";
+  CHECK(akvf::param_config(options).preconditioner_settings.akvf.compression_stiffness == 1.0);
+  options.akvf_compression = 0;
+  CHECK(!akvf::param_config(options).preconditioner_settings.akvf.compression_stiffness);
+  options.akvf_compression = 2;
+  CHECK(akvf::param_config(options).preconditioner_settings.akvf.compression_stiffness == 2.0);
+  options.akvf_compression.reset();
+  for (const char* barrier : {"symmetric-dirichlet", "mips", "amips", "exp-symmetric-dirichlet"}) {
+    options.energy = barrier;
+    CHECK(!akvf::param_config(options).preconditioner_settings.akvf.compression_stiffness);
+  }
+}

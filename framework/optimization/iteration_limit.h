@@ -4,7 +4,7 @@
 // iterations that rate would need to reach the tolerance, and what held the
 // last tenth's steps. A method
 // whose model is far from the energy's curvature converges linearly and
-// slowly (AKVF on ARAP: docs/energies.md); one that is stuck does not
+// slowly (the paper's K on ARAP: docs/energies.md); one that is stuck does not
 // lower the gradient at all.
 #include <string>
 #include <vector>
@@ -27,7 +27,7 @@ std::string iteration_limit_message(const std::vector<IterationSummary>& trace, 
 // - the search took less than alpha_0 (backtracking, or the parabola's
 //   minimizer after an overshoot): the preconditioner's model, whose
 //   minimizer along the direction is its own step 1, is softer than the
-//   energy there (SLIM on the exponential energy, AKVF on ARAP);
+//   energy there (SLIM on the exponential energy, the paper's K on ARAP);
 // - alpha_0 was the flip-free bound's share and was taken: an element
 //   close to collapse limits every step (an energy whose infimum presses
 //   elements onto a collapse);
