@@ -43,8 +43,10 @@
 // w_f G_f^T |H_f| G_f instead of K's, its negative eigenvalues mirrored:
 // clamped, ARAP's twist mode of a compressed face (eigenvalue
 // 2 - 4 / (sigma_1 + sigma_2)) would leave a motion no term stiffens. The
-// energies with a barrier at collapse curve at least as 1 / sigma^4 there,
-// above K, so for them the rule changes nothing where it matters.
+// energies with a barrier at collapse curve at least as 1 / sigma^4 under
+// compression, above K, so their option stays unset (akvf/options.cpp);
+// it would still take faces stretched both ways there (symmetric
+// Dirichlet's 2 + 6 / sigma^4 falls below K's 8 / sigma^2 for sigma > 1).
 #include <optional>
 #include <vector>
 
