@@ -33,7 +33,7 @@ std::optional<SwitchReason> SwitchingPreconditioner::leave_first(const Optimizat
       state.previous_backtracked && step >= std::sqrt(rule_.backtracking_factor) * rule_.isometric_step;
   // More than Newton's step lowers the logarithm of an exponential energy (module comment).
   const bool beyond_newton = state.energy * std::exp(1.0) < previous_energy_;
-  limited_steps_ = curvature_limited && !newton_like && !beyond_newton ? limited_steps_ + 1 : 0;
+  const bool curvature_set = curvature_limited && !newton_like && !beyond_newton;
   // The bound set the step, far short of the model's (a step t along d
   // gains 2 t c - (t c)^2 of the decrease of the quadratic model c K, less
   // than half of it below t c = 1 - 1/sqrt(2)), and E - E_lb kept more than
@@ -41,11 +41,11 @@ std::optional<SwitchReason> SwitchingPreconditioner::leave_first(const Optimizat
   const bool barrier_limited = step < (1 - std::sqrt(0.5)) * rule_.isometric_step;
   const double gap_ratio = (state.energy - rule_.energy_lower_bound) / (previous_energy_ - rule_.energy_lower_bound);
   const bool stalled = step > 0 && !curvature_limited && barrier_limited && gap_ratio > rule_.stall_ratio;
-  stalled_steps_ = stalled ? stalled_steps_ + 1 : 0;
+  // Either kind of step is behind Newton's pace, so a run of them in any mix counts.
+  limited_steps_ = curvature_set || stalled ? limited_steps_ + 1 : 0;
   // The first trial, short of the model's minimizer, accepted at once.
   const bool bound_set = step > 0 && step < rule_.isometric_step && !state.previous_backtracked && !curvature_limited;
-  if (limited_steps_ >= patience_) return SwitchReason::kCurvatureSet;
-  if (stalled_steps_ >= patience_) return SwitchReason::kStalled;
+  if (limited_steps_ >= patience_) return stalled ? SwitchReason::kStalled : SwitchReason::kCurvatureSet;
   if (bound_set && constraints_far(state)) return SwitchReason::kConstraintsFar;
   return std::nullopt;
 }
@@ -82,7 +82,6 @@ void SwitchingPreconditioner::switch_to(const Factory& make, SwitchReason why, i
   current_ = std::move(next);
   switches_.push_back(iteration);
   limited_steps_ = 0;
-  stalled_steps_ = 0;
 }
 
 void SwitchingPreconditioner::update(const OptimizationState& state) {

@@ -662,8 +662,17 @@ TEST_CASE(
   // and 0.99 of E - 4, but the bound (0.26, 0.24) let them reach more than
   // half the model's decrease (t / (1/c) above 1 - 1/sqrt(2)): not stalled.
   CHECK(switches_after(4.1289, {bound(4.0928, 0.26), bound(4.0906, 0.24), bound(4.0899, 0.18)}).empty());
-  // A curvature-set step is the other rule's, however little it gains.
-  CHECK(switches_after(144, {{140, 1e-3, 1, true}, bound(139, 1e-5), {138, 1e-3, 1, true}}).empty());
+  // A curvature-set step and a stalled one count together; the last names the reason.
+  CHECK(switches_after(144, {{140, 1e-3, 1, true}, bound(139, 1e-5), {138, 1e-3, 1, true}}) == std::vector<int>{3});
+  // ARAP on jittered horse_b (E_lb = 0, AKVF's isometric step 1): unit steps
+  // the curvature set, each followed by one the bound set keeping 0.99 of E.
+  rule.isometric_step = 1;
+  rule.energy_lower_bound = 0;
+  CHECK(switches_after(0.05134, {{0.05130, 1, 2.5, false}, bound(0.05097, 0.2995)}) == std::vector<int>{3});
+  // A step the bound set that gains more than 0.15 of the gap breaks the run.
+  CHECK(switches_after(0.05134, {{0.05130, 1, 2.5, false}, bound(0.04, 0.2995), {0.0399, 1, 2.5, false}}).empty());
+  rule.isometric_step = 0.25;
+  rule.energy_lower_bound = 4;
   // Without a known infimum no step stalls.
   rule.energy_lower_bound = -std::numeric_limits<double>::infinity();
   CHECK(switches_after(144, {bound(143, 1e-5), bound(142, 1e-5), bound(141, 1e-5)}).empty());
