@@ -58,10 +58,10 @@
 // AKVF's quadratic model c K (t c < 1 - 1/sqrt(2)): near the minimum E_lb
 // lies below E* and every method's ratio tends to 1. `patience` such steps
 // in a row switch too, and the two kinds count together: a phase that
-// alternates them is as far behind Newton's pace as a run of either (ARAP
-// on jittered horse_b: AKVF's unit steps set by the curvature, each
-// followed by a bound-set step keeping 0.99 of E, for 650 iterations when
-// each kind reset the other's count; 455 iterations in all, not 787).
+// alternates them is as far behind Newton's pace as a run of either, and
+// counted apart it would never switch (ARAP on jittered horse_b alternates
+// AKVF's unit steps, set by the curvature, with bound-set steps keeping
+// 0.99 of E; docs/notes/2026-12-04-switch-count-and-arap-tails.md).
 //
 // Constraints still far, the bound in the way: in deformation (§6.2) the
 // energy adds soft constraints w sum |x_i - p_i|^2 to the distortion, and

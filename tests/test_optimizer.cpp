@@ -672,7 +672,6 @@ TEST_CASE(
   // A step the bound set that gains more than 0.15 of the gap breaks the run.
   CHECK(switches_after(0.05134, {{0.05130, 1, 2.5, false}, bound(0.04, 0.2995), {0.0399, 1, 2.5, false}}).empty());
   rule.isometric_step = 0.25;
-  rule.energy_lower_bound = 4;
   // Without a known infimum no step stalls.
   rule.energy_lower_bound = -std::numeric_limits<double>::infinity();
   CHECK(switches_after(144, {bound(143, 1e-5), bound(142, 1e-5), bound(141, 1e-5)}).empty());
