@@ -53,6 +53,10 @@ class DistortionDensity {
   // barrier's Hessian to any elasticity proxy: without it they see none of
   // the barrier's curvature and their steps shrink towards the collapse.
   virtual bool collapse_barrier_hessian(const Matrix& /*J*/, Hessian* /*H*/) const { return false; }
+  // g_hat of that barrier: it acts only below det J = g_hat, and above it no
+  // Hessian sees it (projected Newton adds a log-area damping of this weight:
+  // preconditioners/newton_preconditioner.h); 0 for a density without one.
+  virtual double collapse_barrier_onset() const { return 0; }
 
  protected:
   // H's eigen-decomposition with every eigenvalue lambda replaced by f(lambda).

@@ -33,6 +33,7 @@ class Arap2D final : public InvariantDensity2D {
   // full collapse.
   static constexpr double collapse_area_ratio() { return 1e-3; }
   bool collapse_barrier_hessian(const Matrix& J, Hessian* H) const override;
+  double collapse_barrier_onset() const override { return collapse_area_ratio(); }
 
  protected:
   InvariantDerivatives2D derivatives(double s, double g) const override;
@@ -50,6 +51,7 @@ class Arap3D final : public DistortionDensity3D, public SingularValueDerivative<
   // (as Arap2D's area ratio).
   static constexpr double collapse_volume_ratio() { return 1e-3; }
   bool collapse_barrier_hessian(const Matrix& J, Hessian* H) const override;
+  double collapse_barrier_onset() const override { return collapse_volume_ratio(); }
   double value(const Matrix& J) const override;
   double value_and_gradient(const Matrix& J, Matrix* dD_dJ) const override;
   Hessian hessian(const Matrix& J) const override;

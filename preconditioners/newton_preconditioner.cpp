@@ -3,11 +3,20 @@
 #include <algorithm>
 #include <cmath>
 
+#include "energies/invariant_density_2d.h"
+#include "energies/invariant_density_3d.h"
 #include "framework/optimization/element_derivatives.h"
 
 namespace akvf {
 
 namespace {
+
+// d det J / dvec(J), the cofactor, in vec(J)'s column-major order.
+Eigen::Vector4d determinant_gradient(const Eigen::Matrix2d& J) { return cofactor_2d(J); }
+Eigen::Matrix<double, 9, 1> determinant_gradient(const Eigen::Matrix3d& J) {
+  const Eigen::Matrix3d C = cofactor_3d(J);
+  return Eigen::Map<const Eigen::Matrix<double, 9, 1>>(C.data());
+}
 
 // The exact Hessian's curvature along the rotation of the vertices
 // `vertices` of a 2D map (one chart), r^T H r / |r|^2 with
@@ -39,7 +48,8 @@ NewtonPreconditioner<D>::NewtonPreconditioner(const MeshObjective<D>& objective,
     : FactoredPreconditioner<D>(objective, std::move(options)),
       objective_(objective),
       projection_(projection),
-      filter_(filter) {}
+      filter_(filter),
+      area_damping_(objective.density().collapse_barrier_onset()) {}
 
 template <int D>
 NewtonPreconditioner<D>::NewtonPreconditioner(const MeshObjective<D>& objective,
@@ -55,7 +65,8 @@ NewtonPreconditioner<D>::NewtonPreconditioner(const MeshObjective<D>& objective,
     : FactoredPreconditioner<D>(objective, std::move(options), std::move(matrix)),
       objective_(objective),
       projection_(projection),
-      filter_(filter) {}
+      filter_(filter),
+      area_damping_(objective.density().collapse_barrier_onset()) {}
 
 template <int D>
 double NewtonPreconditioner<D>::exact_curvature(const Eigen::VectorXd& x, const Eigen::VectorXd& s) const {
@@ -186,6 +197,11 @@ void NewtonPreconditioner<D>::assemble_filtered(const Eigen::VectorXd& x, Eigenv
           negative_share * objective_.density().projected_hessian(J);
     else
       H = objective_.density().projected_hessian(J);
+    if (area_damping_ > 0) {  // the log-area damping (module comment)
+      const auto c = determinant_gradient(J);
+      const double g = J.determinant();
+      H += (area_damping_ / (g * g)) * c * c.transpose();
+    }
     *local = objective_.weights()[e] * G.transpose() * H * G;
   });
 }
@@ -197,6 +213,8 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
   // Each filtered eigenvalue: the exact one, |lambda|, or a negative one
   // times 1 - share (share 1: the clamp), as assemble_filtered's matrices;
   // a NaN (overflow at a nearly collapsed element) dropped, as the clamp does.
+  // The log-area damping (module comment) is one more term of the sum, along
+  // the cofactor c = d det J / dJ with mu = g_hat / det(J)^2.
   const double negative_scale = filter == EigenvalueFilter::kExact ? 1 : 1 - negative_share;
   const auto filtered = [&](double lambda) {
     if (lambda > 0) return lambda;
@@ -217,21 +235,29 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
       const auto grad = hat_gradients<D>(objective_.rest().Dm_inv[elements[b]]);
       const auto& pairs = batch[b];
       const double weight = objective_.weights()[elements[b]];
-      double u[D * D][kSize], scaled[D * D][kSize];
-      for (int i = 0; i < D * D; ++i) {
-        const double mu = weight * filtered(pairs.values[i]);
+      constexpr int kTerms = D * D + 1;
+      const int terms = area_damping_ > 0 ? kTerms : D * D;
+      double u[kTerms][kSize], scaled[kTerms][kSize];
+      const auto add_term = [&](int i, const Eigen::Matrix<double, D, D>& M, double mu) {
         for (int k = 0; k < kCorners; ++k)
           for (int r = 0; r < D; ++r) {
             double sum = 0;
-            for (int c = 0; c < D; ++c) sum += pairs.modes[i](r, c) * grad[k][c];
+            for (int c = 0; c < D; ++c) sum += M(r, c) * grad[k][c];
             u[i][D * k + r] = sum;
             scaled[i][D * k + r] = mu * sum;
           }
+      };
+      for (int i = 0; i < D * D; ++i) add_term(i, pairs.modes[i], weight * filtered(pairs.values[i]));
+      if (area_damping_ > 0) {
+        const auto J = objective_.jacobian(x, elements[b]);
+        const auto c = determinant_gradient(J);
+        const double g = J.determinant();
+        add_term(D * D, Eigen::Map<const Eigen::Matrix<double, D, D>>(c.data()), weight * area_damping_ / (g * g));
       }
       for (int j = 0; j < kSize; ++j)
         for (int r = 0; r <= j; ++r) {
           double sum = 0;
-          for (int i = 0; i < D * D; ++i) sum += scaled[i][r] * u[i][j];
+          for (int i = 0; i < terms; ++i) sum += scaled[i][r] * u[i][j];
           locals[b](r, j) = sum;
         }
     }

@@ -98,7 +98,7 @@ void check_eigensystem(const HessianEigensystem<Dim>& eigensystem, const Distort
 // eigensystem (HessianEigensystem): projected Newton then assembles
 // G^T H G from the filtered element Hessians, the path to compare with.
 template <int Dim, class Density>
-class HessiansOnly final : public DistortionDensity<Dim> {
+class HessiansOnly : public DistortionDensity<Dim> {
  public:
   using typename DistortionDensity<Dim>::Matrix;
   using typename DistortionDensity<Dim>::Hessian;
@@ -111,9 +111,18 @@ class HessiansOnly final : public DistortionDensity<Dim> {
   Hessian hessian(const Matrix& J) const override { return density_.hessian(J); }
   Hessian projected_hessian(const Matrix& J) const override { return density_.projected_hessian(J); }
   Hessian absolute_hessian(const Matrix& J) const override { return density_.absolute_hessian(J); }
+  double collapse_barrier_onset() const override { return density_.collapse_barrier_onset(); }
 
  private:
   Density density_;
+};
+
+// The same, claiming no collapse barrier onset: projected Newton then adds
+// no log-area damping (newton_preconditioner.h).
+template <int Dim, class Density>
+class HessiansOnlyWithoutOnset final : public HessiansOnly<Dim, Density> {
+ public:
+  double collapse_barrier_onset() const override { return 0; }
 };
 
 // The density's collapse barrier Hessian at J against the barrier alone

@@ -12,6 +12,7 @@
 #include "energies/amips.h"
 #include "energies/arap.h"
 #include "energies/exp_symmetric_dirichlet.h"
+#include "energies/invariant_density_2d.h"
 #include "energies/mips.h"
 #include "energies/symmetric_dirichlet.h"
 #include "framework/optimization/distortion_objective.h"
@@ -483,15 +484,17 @@ TEST_CASE("Newton, Laplacian and SLIM matrices are symmetric PSD with the expect
   }
 }
 
-TEST_CASE("Newton assembled from the density's eigensystem is the filtered element Hessians' sum, for every filter") {
+TEST_CASE_TEMPLATE(
+    "Newton assembled from the density's eigensystem is the filtered element Hessians' sum, for every "
+    "filter",
+    Density, akvf::SymmetricDirichlet2D, akvf::Arap2D) {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
   akvf::normalize_to_unit_area(&normalized);
   const akvf::DistortionObjective2D with_modes(normalized.F, akvf::rest_triangles(normalized),
-                                               std::make_shared<akvf::SymmetricDirichlet2D>(),
-                                               normalized.num_vertices());
-  const akvf::DistortionObjective2D hessians_only(
-      normalized.F, akvf::rest_triangles(normalized),
-      std::make_shared<akvf::test::HessiansOnly<2, akvf::SymmetricDirichlet2D>>(), normalized.num_vertices());
+                                               std::make_shared<Density>(), normalized.num_vertices());
+  const akvf::DistortionObjective2D hessians_only(normalized.F, akvf::rest_triangles(normalized),
+                                                  std::make_shared<akvf::test::HessiansOnly<2, Density>>(),
+                                                  normalized.num_vertices());
   // Shrunk and jittered: many elements have a negative eigenvalue.
   const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.6);
   Eigen::VectorXd g;
@@ -507,6 +510,42 @@ TEST_CASE("Newton assembled from the density's eigensystem is the filtered eleme
     const Eigen::SparseMatrix<double>& expected = from_hessians.matrix().upper();
     CHECK((from_modes.matrix().upper() - expected).norm() <= 1e-12 * expected.norm());
   }
+}
+
+TEST_CASE("Newton's model of ARAP adds the log-area damping g_hat (d det J / det J)^2 of each element") {
+  akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
+  akvf::normalize_to_unit_area(&normalized);
+  const akvf::DistortionObjective2D damped(normalized.F, akvf::rest_triangles(normalized),
+                                           std::make_shared<akvf::test::HessiansOnly<2, akvf::Arap2D>>(),
+                                           normalized.num_vertices());
+  const akvf::DistortionObjective2D undamped(normalized.F, akvf::rest_triangles(normalized),
+                                             std::make_shared<akvf::test::HessiansOnlyWithoutOnset<2, akvf::Arap2D>>(),
+                                             normalized.num_vertices());
+  const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.6);
+  Eigen::VectorXd g;
+  const double energy = damped.value_and_gradient(x, &g);
+  akvf::NewtonPreconditioner2D with(damped), without(undamped);
+  Eigen::MatrixXd P[2];
+  int i = 0;
+  for (akvf::NewtonPreconditioner2D* p : {&with, &without}) {
+    p->update({x, g, energy, 1});
+    P[i] = Eigen::MatrixXd(p->matrix().full());
+    P[i].diagonal().array() -= kShift * P[i].diagonal().mean() / (1 + kShift);  // the Tikhonov shift
+    ++i;
+  }
+  std::mt19937 random(3);
+  std::normal_distribution<double> normal;
+  const Eigen::VectorXd v = Eigen::VectorXd::NullaryExpr(x.size(), [&] { return normal(random); });
+  // J is linear in the positions: jacobian(v, e) is J's change along v.
+  double expected = 0;
+  for (int e = 0; e < damped.weights().size(); ++e) {
+    const double det = damped.jacobian(x, e).determinant();
+    const Eigen::Matrix2d dJ = damped.jacobian(v, e);
+    const double along = akvf::cofactor_2d(damped.jacobian(x, e)).dot(Eigen::Map<const Eigen::Vector4d>(dJ.data()));
+    expected += damped.weights()[e] * akvf::Arap2D::collapse_area_ratio() * along * along / (det * det);
+  }
+  CHECK(expected > 0);
+  CHECK(v.dot((P[0] - P[1]) * v) == doctest::Approx(expected).epsilon(1e-9));
 }
 
 TEST_CASE("Newton on AKVF's shared assembly pattern assembles and solves bitwise as Newton on its own") {
@@ -663,7 +702,14 @@ TEST_CASE(
       const akvf::DistortionObjective2D objective(mesh.F, akvf::rest_triangles(mesh), density, mesh.num_vertices());
       Eigen::VectorXd g;
       objective.value_and_gradient(x, &g);
-      akvf::NewtonPreconditioner2D newton(objective);
+      // The Hessian: projected Newton's matrix (PSD at an isometry), without
+      // the log-area damping its model adds for ARAP (newton_preconditioner.h).
+      std::shared_ptr<akvf::DistortionDensity2D> undamped = density;
+      if (density->name() == "arap")
+        undamped = std::make_shared<akvf::test::HessiansOnlyWithoutOnset<2, akvf::Arap2D>>();
+      const akvf::DistortionObjective2D hessian_objective(mesh.F, akvf::rest_triangles(mesh), undamped,
+                                                          mesh.num_vertices());
+      akvf::NewtonPreconditioner2D newton(hessian_objective);
       akvf::AkvfOptions2D options;
       options.divergence_weight = beta;
       akvf::AkvfPreconditioner2D akvf_k(objective, options);
