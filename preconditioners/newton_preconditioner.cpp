@@ -11,6 +11,14 @@ namespace akvf {
 
 namespace {
 
+// The log-area damping's weight g_hat / det(J)^2 (newton_preconditioner.h),
+// 0 where it overflows (an element collapsed to rounding), as the filters
+// drop a NaN eigenvalue.
+double log_area_damping(double onset, double det) {
+  const double mu = onset / (det * det);
+  return std::isfinite(mu) ? mu : 0.0;
+}
+
 // d det J / dvec(J), the cofactor, in vec(J)'s column-major order.
 Eigen::Vector4d determinant_gradient(const Eigen::Matrix2d& J) { return cofactor_2d(J); }
 Eigen::Matrix<double, 9, 1> determinant_gradient(const Eigen::Matrix3d& J) {
@@ -199,8 +207,7 @@ void NewtonPreconditioner<D>::assemble_filtered(const Eigen::VectorXd& x, Eigenv
       H = objective_.density().projected_hessian(J);
     if (area_damping_ > 0) {  // the log-area damping (module comment)
       const auto c = determinant_gradient(J);
-      const double g = J.determinant();
-      H += (area_damping_ / (g * g)) * c * c.transpose();
+      H += log_area_damping(area_damping_, J.determinant()) * c * c.transpose();
     }
     *local = objective_.weights()[e] * G.transpose() * H * G;
   });
@@ -251,8 +258,8 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
       if (area_damping_ > 0) {
         const auto J = objective_.jacobian(x, elements[b]);
         const auto c = determinant_gradient(J);
-        const double g = J.determinant();
-        add_term(D * D, Eigen::Map<const Eigen::Matrix<double, D, D>>(c.data()), weight * area_damping_ / (g * g));
+        add_term(D * D, Eigen::Map<const Eigen::Matrix<double, D, D>>(c.data()),
+                 weight * log_area_damping(area_damping_, J.determinant()));
       }
       for (int j = 0; j < kSize; ++j)
         for (int r = 0; r <= j; ++r) {
