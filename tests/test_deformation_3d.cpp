@@ -15,6 +15,7 @@
 #include "energies/amips.h"
 #include "energies/arap.h"
 #include "energies/exp_symmetric_dirichlet.h"
+#include "energies/invariant_density_3d.h"
 #include "energies/mips.h"
 #include "energies/symmetric_dirichlet.h"
 #include "framework/optimization/distortion_objective.h"
@@ -100,6 +101,38 @@ TEST_CASE_TEMPLATE("3D Newton assembled from the density's eigensystem is the fi
     const Eigen::SparseMatrix<double>& expected = from_hessians.matrix().upper();
     CHECK((from_modes.matrix().upper() - expected).norm() <= 1e-12 * expected.norm());
   }
+}
+
+TEST_CASE("3D Newton's model of ARAP adds the log-area damping g_hat (d det J / det J)^2 of each tet") {
+  const akvf::TetMesh mesh = akvf::test::tet_grid(2);
+  const akvf::DistortionObjective3D damped =
+      grid_objective(mesh, std::make_shared<akvf::test::HessiansOnly<3, akvf::Arap3D>>());
+  const akvf::DistortionObjective3D undamped =
+      grid_objective(mesh, std::make_shared<akvf::test::HessiansOnlyWithoutOnset<3, akvf::Arap3D>>());
+  const Eigen::VectorXd x = akvf::test::distorted_tet_positions(mesh, 3);
+  Eigen::VectorXd g;
+  const double energy = damped.value_and_gradient(x, &g);
+  akvf::NewtonPreconditioner3D with(damped), without(undamped);
+  Eigen::MatrixXd P[2];
+  int i = 0;
+  for (akvf::NewtonPreconditioner3D* p : {&with, &without}) {
+    p->update({x, g, energy, 1});
+    P[i] = Eigen::MatrixXd(p->matrix().full());
+    P[i].diagonal().array() -= kShift * P[i].diagonal().mean() / (1 + kShift);  // the Tikhonov shift
+    ++i;
+  }
+  std::mt19937 random(5);
+  std::normal_distribution<double> normal;
+  const Eigen::VectorXd v = Eigen::VectorXd::NullaryExpr(x.size(), [&] { return normal(random); });
+  double expected = 0;  // J is linear in the positions: jacobian(v, e) is J's change along v
+  for (int e = 0; e < damped.weights().size(); ++e) {
+    const Eigen::Matrix3d J = damped.jacobian(x, e);
+    const double along = (akvf::cofactor_3d(J).array() * damped.jacobian(v, e).array()).sum();
+    expected += damped.weights()[e] * akvf::Arap3D::collapse_volume_ratio() * along * along /
+                (J.determinant() * J.determinant());
+  }
+  CHECK(expected > 0);
+  CHECK(v.dot((P[0] - P[1]) * v) == doctest::Approx(expected).epsilon(1e-9));
 }
 
 TEST_CASE("the 3D SLIM proxy's gradient equals the energy's gradient for the isometric energies") {
