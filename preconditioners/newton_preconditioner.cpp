@@ -11,11 +11,11 @@ namespace akvf {
 
 namespace {
 
-// The log-area damping's weight g_hat / det(J)^2 (newton_preconditioner.h),
+// The log-area damping's weight, (w) g_hat / det(J)^2 (newton_preconditioner.h),
 // 0 where it overflows (an element collapsed to rounding), as the filters
 // drop a NaN eigenvalue.
-double log_area_damping(double onset, double det) {
-  const double mu = onset / (det * det);
+double log_area_damping(double weighted_onset, double det) {
+  const double mu = weighted_onset / (det * det);
   return std::isfinite(mu) ? mu : 0.0;
 }
 
@@ -259,7 +259,7 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
         const auto J = objective_.jacobian(x, elements[b]);
         const auto c = determinant_gradient(J);
         add_term(D * D, Eigen::Map<const Eigen::Matrix<double, D, D>>(c.data()),
-                 weight * log_area_damping(area_damping_, J.determinant()));
+                 log_area_damping(weight * area_damping_, J.determinant()));
       }
       for (int j = 0; j < kSize; ++j)
         for (int r = 0; r <= j; ++r) {
