@@ -237,7 +237,11 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
   // (docs/notes/2026-12-02-assembly-batches-and-contact-pattern.md).
   matrix->assemble_batches([&](const int* elements, int count, typename Matrix::Local* locals) {
     typename HessianEigensystem<D>::Eigenpairs batch[Matrix::kBatch];
-    for (int b = 0; b < count; ++b) batch[b] = eigensystem.hessian_eigensystem(objective_.jacobian(x, elements[b]));
+    Eigen::Matrix<double, D, D> jacobians[Matrix::kBatch];
+    for (int b = 0; b < count; ++b) {
+      jacobians[b] = objective_.jacobian(x, elements[b]);
+      batch[b] = eigensystem.hessian_eigensystem(jacobians[b]);
+    }
     for (int b = 0; b < count; ++b) {
       const auto grad = hat_gradients<D>(objective_.rest().Dm_inv[elements[b]]);
       const auto& pairs = batch[b];
@@ -256,7 +260,7 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
       };
       for (int i = 0; i < D * D; ++i) add_term(i, pairs.modes[i], weight * filtered(pairs.values[i]));
       if (area_damping_ > 0) {
-        const auto J = objective_.jacobian(x, elements[b]);
+        const Eigen::Matrix<double, D, D>& J = jacobians[b];
         const auto c = determinant_gradient(J);
         add_term(D * D, Eigen::Map<const Eigen::Matrix<double, D, D>>(c.data()),
                  log_area_damping(weight * area_damping_, J.determinant()));

@@ -106,10 +106,9 @@
 // by about det J / g_hat times itself: the triangles slow down as they near
 // the barrier's range, and the others hardly notice (at a third of its rest
 // area, 0.3 % of ARAP's own curvature along the area). It changes the
-// direction, not the energy. Measured: jittered camelhead 894 -> 331
-// iterations, camelhead 365 -> 196, horse_b 191 -> 69; the jittered
-// hilbert_b strips take 2-4 times more, as the default's Newton phase no
-// longer closes in on a collapse, which sent it back to AKVF
+// direction, not the energy. Where it costs: on the jittered hilbert_b
+// strips the default's Newton phase no longer closes in on one collapse,
+// the signal that sends it back to AKVF, whose far phase is faster there
 // (docs/notes/2026-12-04-log-area-damping.md).
 #include <limits>
 #include <string>

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "akvf/distortion_density.h"
+#include "preconditioners/newton_preconditioner.h"
 
 namespace akvf::test {
 
@@ -124,6 +125,30 @@ class HessiansOnlyWithoutOnset final : public HessiansOnly<Dim, Density> {
  public:
   double collapse_barrier_onset() const override { return 0; }
 };
+
+// v^T (P_a - P_b) v for projected Newton's matrices on the objectives a and
+// b at x (the clamp, one update each), each without its Tikhonov shift, v a
+// seeded Gaussian vector.
+template <int Dim>
+double newton_matrix_difference(const MeshObjective<Dim>& a, const MeshObjective<Dim>& b, const Eigen::VectorXd& x,
+                                unsigned seed, Eigen::VectorXd* v) {
+  const double shift = FactorOptions{}.tikhonov;
+  std::mt19937 random(seed);
+  std::normal_distribution<double> normal;
+  *v = Eigen::VectorXd::NullaryExpr(x.size(), [&] { return normal(random); });
+  double form[2];
+  int i = 0;
+  for (const MeshObjective<Dim>* objective : {&a, &b}) {
+    Eigen::VectorXd g;
+    const double energy = objective->value_and_gradient(x, &g);
+    NewtonPreconditioner<Dim> newton(*objective);
+    newton.update({x, g, energy, 1});
+    Eigen::MatrixXd P(newton.matrix().full());
+    P.diagonal().array() -= shift * P.diagonal().mean() / (1 + shift);
+    form[i++] = v->dot(P * *v);
+  }
+  return form[0] - form[1];
+}
 
 // The density's collapse barrier Hessian at J against the barrier alone
 // (its value less sum (sigma_i - 1)^2, ARAP's own density) by central

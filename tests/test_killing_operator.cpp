@@ -522,30 +522,17 @@ TEST_CASE("Newton's model of ARAP adds the log-area damping g_hat (d det J / det
                                              std::make_shared<akvf::test::HessiansOnlyWithoutOnset<2, akvf::Arap2D>>(),
                                              normalized.num_vertices());
   const Eigen::VectorXd x = akvf::stack_uv(akvf::test::jittered_uv(normalized, 0.2, 8) * 0.6);
-  Eigen::VectorXd g;
-  const double energy = damped.value_and_gradient(x, &g);
-  akvf::NewtonPreconditioner2D with(damped), without(undamped);
-  Eigen::MatrixXd P[2];
-  int i = 0;
-  for (akvf::NewtonPreconditioner2D* p : {&with, &without}) {
-    p->update({x, g, energy, 1});
-    P[i] = Eigen::MatrixXd(p->matrix().full());
-    P[i].diagonal().array() -= kShift * P[i].diagonal().mean() / (1 + kShift);  // the Tikhonov shift
-    ++i;
-  }
-  std::mt19937 random(3);
-  std::normal_distribution<double> normal;
-  const Eigen::VectorXd v = Eigen::VectorXd::NullaryExpr(x.size(), [&] { return normal(random); });
-  // J is linear in the positions: jacobian(v, e) is J's change along v.
-  double expected = 0;
+  Eigen::VectorXd v;
+  const double difference = akvf::test::newton_matrix_difference<2>(damped, undamped, x, 3, &v);
+  double expected = 0;  // J is linear in the positions: jacobian(v, e) is J's change along v
   for (int e = 0; e < damped.weights().size(); ++e) {
-    const double det = damped.jacobian(x, e).determinant();
-    const Eigen::Matrix2d dJ = damped.jacobian(v, e);
-    const double along = akvf::cofactor_2d(damped.jacobian(x, e)).dot(Eigen::Map<const Eigen::Vector4d>(dJ.data()));
-    expected += damped.weights()[e] * akvf::Arap2D::collapse_area_ratio() * along * along / (det * det);
+    const Eigen::Matrix2d J = damped.jacobian(x, e), dJ = damped.jacobian(v, e);
+    const double along = akvf::cofactor_2d(J).dot(Eigen::Map<const Eigen::Vector4d>(dJ.data()));
+    expected +=
+        damped.weights()[e] * akvf::Arap2D::collapse_area_ratio() * along * along / (J.determinant() * J.determinant());
   }
   CHECK(expected > 0);
-  CHECK(v.dot((P[0] - P[1]) * v) == doctest::Approx(expected).epsilon(1e-9));
+  CHECK(difference == doctest::Approx(expected).epsilon(1e-9));
 }
 
 TEST_CASE("Newton on AKVF's shared assembly pattern assembles and solves bitwise as Newton on its own") {
@@ -705,7 +692,7 @@ TEST_CASE(
       // The Hessian: projected Newton's matrix (PSD at an isometry), without
       // the log-area damping its model adds for ARAP (newton_preconditioner.h).
       std::shared_ptr<akvf::DistortionDensity2D> undamped = density;
-      if (density->name() == "arap")
+      if (density->collapse_barrier_onset() > 0)  // ARAP's, the one density with an onset
         undamped = std::make_shared<akvf::test::HessiansOnlyWithoutOnset<2, akvf::Arap2D>>();
       const akvf::DistortionObjective2D hessian_objective(mesh.F, akvf::rest_triangles(mesh), undamped,
                                                           mesh.num_vertices());
