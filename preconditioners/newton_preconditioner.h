@@ -106,10 +106,10 @@
 // by about det J / g_hat times itself: the triangles slow down as they near
 // the barrier's range, and the others hardly notice (at a third of its rest
 // area, 0.3 % of ARAP's own curvature along the area). It changes the
-// direction, not the energy. Where it costs: on the jittered hilbert_b
-// strips the default's Newton phase no longer closes in on one collapse,
-// the signal that sends it back to AKVF, whose far phase is faster there
-// (docs/notes/2026-12-04-log-area-damping.md).
+// direction, not the energy. On the jittered hilbert_b strips the
+// default's Newton phase then no longer closes in on one collapse; it is
+// held by the bound behind AKVF's pace instead, which sends it back there
+// as well (switching_preconditioner.h).
 #include <limits>
 #include <string>
 

@@ -1,5 +1,6 @@
 #include "preconditioners/switching_preconditioner.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace akvf {
@@ -45,6 +46,7 @@ std::optional<SwitchReason> SwitchingPreconditioner::leave_first(const Optimizat
   limited_steps_ = curvature_set || stalled ? limited_steps_ + 1 : 0;
   // The first trial, short of the model's minimizer, accepted at once.
   const bool bound_set = step > 0 && step < rule_.isometric_step && !state.previous_backtracked && !curvature_limited;
+  if (bound_set) first_phase_pace_ = gap_ratio;
   if (limited_steps_ >= patience_) return stalled ? SwitchReason::kStalled : SwitchReason::kCurvatureSet;
   if (bound_set && constraints_far(state)) return SwitchReason::kConstraintsFar;
   return std::nullopt;
@@ -66,7 +68,14 @@ bool SwitchingPreconditioner::leave_second(const OptimizationState& state) {
   const bool bound_limited = step > 0 && step < 1 && !state.previous_backtracked;
   const bool closing_in = state.previous_max_step < rule_.closing_ratio * previous_max_step_;
   const bool model_far = state.previous_max_step < rule_.far_share;
-  limited_steps_ = bound_limited && (closing_in || model_far) ? limited_steps_ + 1 : 0;
+  // Behind the first's pace: E - E_lb kept more than stall_ratio of itself
+  // and more than the first phase's last bound-set step kept, where the
+  // model promised more than 1 - stall_ratio of it (module comment).
+  const double gap_before = previous_energy_ - rule_.energy_lower_bound;
+  const bool behind_first =
+      state.energy - rule_.energy_lower_bound > std::max(rule_.stall_ratio, first_phase_pace_) * gap_before &&
+      promised_decrease_ > (1 - rule_.stall_ratio) * gap_before;
+  limited_steps_ = bound_limited && (closing_in || model_far || behind_first) ? limited_steps_ + 1 : 0;
   return limited_steps_ >= rule_.patience;
 }
 
@@ -99,6 +108,7 @@ void SwitchingPreconditioner::update(const OptimizationState& state) {
 
 void SwitchingPreconditioner::apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) {
   current_->apply(gradient, result);
+  promised_decrease_ = 0.5 * gradient.dot(*result);
 }
 
 std::string SwitchingPreconditioner::report() const {

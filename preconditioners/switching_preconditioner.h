@@ -113,6 +113,19 @@
 // and Newton's direction is long along those nearly singular modes). A
 // share of 0.1 would cut into ARAP's Newton phases, which gain under the
 // bound (docs/notes/2026-11-29-newton-held-far-short.md).
+// A bound-set Newton step counts too when it is behind the first's pace: it
+// kept more than stall_ratio of E - E_lb, as AKVF's stalled steps do, and
+// more than the first phase's last bound-set step kept, while Newton's model
+// promised a decrease g^T P^-1 g / 2 above 1 - stall_ratio of E - E_lb. Near a
+// minimum E* above E_lb every step keeps nearly all of E - E_lb, and the
+// promise, which estimates E - E*, is small there; a large promise held off
+// by the bound means the model's minimizer is far and the bound lets through
+// a sliver of it (2t - t^2 of the promise at step t). Where AKVF's own
+// bound-set steps were slower (the last one kept more), Newton stays. On the
+// jittered hilbert_b strips ARAP's Newton phase under the log-area damping
+// (newton_preconditioner.h) promised 0.3-0.65 of E and gained 1-5 % per step;
+// jittered camelhead's promised at most 0.14 of E, then below 1e-5
+// (docs/notes/2026-12-04-newton-behind-first.md).
 // Each return doubles the patience of the next switch to the second, so a
 // run whose Newton phases keep meeting the barrier spends ever less of its
 // iterations there.
@@ -159,8 +172,8 @@ struct SwitchRule {
 
 // Why the run left the phase in use (module comment): AKVF's steps set by
 // the curvature, AKVF stalling under the bound, the constraints still far;
-// Newton's steps held by the bound, closing in on a collapse or far short
-// of the model's minimizer.
+// Newton's steps held by the bound, closing in on a collapse, far short
+// of the model's minimizer or behind the first's pace.
 enum class SwitchReason { kCurvatureSet, kStalled, kConstraintsFar, kClosingIn };
 
 class SwitchingPreconditioner final : public Preconditioner {
@@ -207,6 +220,11 @@ class SwitchingPreconditioner final : public Preconditioner {
   int limited_steps_ = 0;  // consecutive steps that count toward leaving the phase in use
   double previous_energy_ = std::numeric_limits<double>::quiet_NaN();  // at the last update
   double previous_max_step_ = 0;                                       // alpha_max of the step before the last
+  // The share of E - E_lb the first phase's last bound-set step kept (1 before any).
+  double first_phase_pace_ = 1;
+  // g^T d / 2 at the last apply, d the direction: the decrease the model
+  // promises at the unit step (the quadratic model's, d = P^-1 g).
+  double promised_decrease_ = 0;
 };
 
 }  // namespace akvf

@@ -686,6 +686,56 @@ TEST_CASE(
         std::vector<int>{3, 6});
 }
 
+// switching_preconditioner.h: bound-set Newton steps that keep more than
+// stall_ratio of E - E_lb, and more than AKVF's last bound-set step kept,
+// while the model promised (g^T P^-1 g / 2; P = I here) more than
+// 1 - stall_ratio of it, send the run back to AKVF after `patience` of them.
+TEST_CASE("akvf-newton returns to AKVF after two Newton steps held by the bound behind AKVF's pace") {
+  akvf::SwitchRule rule;
+  rule.isometric_step = 1;      // 2D AKVF's scaled K
+  rule.energy_lower_bound = 0;  // ARAP
+  struct Step {
+    double energy, step, max_step;
+  };
+  // AKVF's bound-set step to `akvf_energy` from 1 (at 0.8 of the model's
+  // minimizer: not stalled, whatever it keeps), two unit steps the
+  // curvature set (the switch at 4), then Newton's steps with the gradient
+  // g = gradient_scale (1, 1, 1, 1), whose promise is 2 gradient_scale^2.
+  auto switches_after = [&](double akvf_energy, double gradient_scale, const std::vector<Step>& newton) {
+    const auto any_reason = [](akvf::Preconditioner&, akvf::SwitchReason) {
+      return std::make_unique<akvf::IdentityPreconditioner>();
+    };
+    akvf::SwitchingPreconditioner p("test", std::make_unique<akvf::IdentityPreconditioner>(), any_reason, rule,
+                                    any_reason);
+    const Eigen::VectorXd x = Eigen::VectorXd::Zero(4);
+    Eigen::VectorXd g = Eigen::VectorXd::Ones(4), d;
+    std::vector<Step> steps{{akvf_energy, 0.4, 0.5}, {0.95 * akvf_energy, 1, 2.5}, {0.9 * akvf_energy, 1, 2.5}};
+    steps.insert(steps.end(), newton.begin(), newton.end());
+    p.update({x, g, 1.0, 1});
+    p.apply(g, &d);
+    int k = 2;
+    for (const Step& s : steps) {
+      p.update({x, g, s.energy, k++, s.step, s.max_step, false});
+      g = Eigen::VectorXd::Constant(4, gradient_scale);
+      p.apply(g, &d);
+    }
+    return p.switches();
+  };
+  // Bounds that neither close in nor fall below far_share; each step keeps
+  // 0.97 of E (jittered hilbert_b's strips: 0.95-0.99).
+  const std::vector<Step> slow{{0.97 * 0.54, 0.24, 0.3}, {0.97 * 0.97 * 0.54, 0.2, 0.25}};
+  // AKVF's bound-set step kept 0.6 and Newton's model promises 2 * 0.25 = 0.5
+  // against E = 0.54: back at the second Newton step.
+  CHECK(switches_after(0.6, 0.5, slow) == std::vector<int>{4, 6});
+  // The model promises 2e-4, 4e-4 of E: near a minimum above E_lb, Newton stays.
+  CHECK(switches_after(0.6, 0.01, slow) == std::vector<int>{4});
+  // AKVF's own bound-set step kept 0.99: Newton's 0.97 is ahead of it.
+  CHECK(switches_after(0.99, 0.5, {{0.97 * 0.8910, 0.24, 0.3}, {0.97 * 0.97 * 0.8910, 0.2, 0.25}}) ==
+        std::vector<int>{4});
+  // Steps that keep 0.8 and 0.64 of E, below stall_ratio: Newton stays.
+  CHECK(switches_after(0.6, 0.5, {{0.8 * 0.54, 0.24, 0.3}, {0.64 * 0.54, 0.2, 0.25}}) == std::vector<int>{4});
+}
+
 // switching_preconditioner.h: with soft constraints, a bound-set step after
 // which the constraints still carry more than half of E - E_lb switches at
 // once; once they are met, or when the curvature set the step, it does not.
