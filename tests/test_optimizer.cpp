@@ -727,12 +727,12 @@ TEST_CASE("akvf-newton returns to AKVF after two Newton steps held by the bound 
   // AKVF's bound-set step kept 0.6 and Newton's model promises 2 * 0.25 = 0.5
   // against E = 0.54: back at the second Newton step.
   CHECK(switches_after(0.6, 0.5, slow) == std::vector<int>{4, 6});
-  // The model promises 2e-4, 4e-4 of E: near a minimum above E_lb, Newton stays.
+  // The model promises 2e-4 (4e-4 of E): near a minimum above E_lb, Newton stays.
   CHECK(switches_after(0.6, 0.01, slow) == std::vector<int>{4});
   // AKVF's own bound-set step kept 0.99: Newton's 0.97 is ahead of it.
   CHECK(switches_after(0.99, 0.5, {{0.97 * 0.8910, 0.24, 0.3}, {0.97 * 0.97 * 0.8910, 0.2, 0.25}}) ==
         std::vector<int>{4});
-  // Steps that keep 0.8 and 0.64 of E, below stall_ratio: Newton stays.
+  // Steps that each keep 0.8 of E, below stall_ratio: Newton stays.
   CHECK(switches_after(0.6, 0.5, {{0.8 * 0.54, 0.24, 0.3}, {0.64 * 0.54, 0.2, 0.25}}) == std::vector<int>{4});
 }
 
