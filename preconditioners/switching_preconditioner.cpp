@@ -40,7 +40,7 @@ std::optional<SwitchReason> SwitchingPreconditioner::leave_first(const Optimizat
   // than half of it below t c = 1 - 1/sqrt(2)), and E - E_lb kept more than
   // stall_ratio of itself (NaN, so false, where E_lb is unknown).
   const bool barrier_limited = step < (1 - std::sqrt(0.5)) * rule_.isometric_step;
-  const double gap_ratio = (state.energy - rule_.energy_lower_bound) / (previous_energy_ - rule_.energy_lower_bound);
+  const double gap_ratio = gap_kept(state);
   const bool stalled = step > 0 && !curvature_limited && barrier_limited && gap_ratio > rule_.stall_ratio;
   // Either kind of step is behind Newton's pace, so a run of them in any mix counts.
   limited_steps_ = curvature_set || stalled ? limited_steps_ + 1 : 0;
@@ -50,6 +50,10 @@ std::optional<SwitchReason> SwitchingPreconditioner::leave_first(const Optimizat
   if (limited_steps_ >= patience_) return stalled ? SwitchReason::kStalled : SwitchReason::kCurvatureSet;
   if (bound_set && constraints_far(state)) return SwitchReason::kConstraintsFar;
   return std::nullopt;
+}
+
+double SwitchingPreconditioner::gap_kept(const OptimizationState& state) const {
+  return (state.energy - rule_.energy_lower_bound) / (previous_energy_ - rule_.energy_lower_bound);
 }
 
 bool SwitchingPreconditioner::constraints_far(const OptimizationState& state) const {
@@ -71,10 +75,9 @@ bool SwitchingPreconditioner::leave_second(const OptimizationState& state) {
   // Behind the first's pace: E - E_lb kept more than stall_ratio of itself
   // and more than the first phase's last bound-set step kept, where the
   // model promised more than 1 - stall_ratio of it (module comment).
-  const double gap_before = previous_energy_ - rule_.energy_lower_bound;
   const bool behind_first =
-      state.energy - rule_.energy_lower_bound > std::max(rule_.stall_ratio, first_phase_pace_) * gap_before &&
-      promised_decrease_ > (1 - rule_.stall_ratio) * gap_before;
+      gap_kept(state) > std::max(rule_.stall_ratio, first_phase_pace_) &&
+      promised_decrease_ > (1 - rule_.stall_ratio) * (previous_energy_ - rule_.energy_lower_bound);
   limited_steps_ = bound_limited && (closing_in || model_far || behind_first) ? limited_steps_ + 1 : 0;
   return limited_steps_ >= rule_.patience;
 }
@@ -108,7 +111,7 @@ void SwitchingPreconditioner::update(const OptimizationState& state) {
 
 void SwitchingPreconditioner::apply(const Eigen::VectorXd& gradient, Eigen::VectorXd* result) {
   current_->apply(gradient, result);
-  promised_decrease_ = 0.5 * gradient.dot(*result);
+  if (in_second()) promised_decrease_ = 0.5 * gradient.dot(*result);
 }
 
 std::string SwitchingPreconditioner::report() const {

@@ -203,6 +203,9 @@ class SwitchingPreconditioner final : public Preconditioner {
   // Counts the last step toward leaving the phase in use; the reason to
   // leave, or none.
   std::optional<SwitchReason> leave_first(const OptimizationState& state);
+  // The share of E - E_lb the last step kept (NaN where E_lb is unknown
+  // or there is no earlier energy).
+  double gap_kept(const OptimizationState& state) const;
   // The problem's added terms (soft constraints) carry most of E - E_lb.
   bool constraints_far(const OptimizationState& state) const;
   bool leave_second(const OptimizationState& state);
@@ -222,8 +225,8 @@ class SwitchingPreconditioner final : public Preconditioner {
   double previous_max_step_ = 0;                                       // alpha_max of the step before the last
   // The share of E - E_lb the first phase's last bound-set step kept (1 before any).
   double first_phase_pace_ = 1;
-  // g^T d / 2 at the last apply, d the direction: the decrease the model
-  // promises at the unit step (the quadratic model's, d = P^-1 g).
+  // g^T d / 2 at the second's last apply, d the direction: the decrease
+  // its model promises at the unit step (the quadratic model's, d = P^-1 g).
   double promised_decrease_ = 0;
 };
 
