@@ -196,10 +196,12 @@ void NewtonPreconditioner<D>::assemble_filtered(const Eigen::VectorXd& x, Eigenv
     const auto J = objective_.jacobian(x, e);
     using ElementHessian = decltype(objective_.density().hessian(J));
     ElementHessian H;
-    if (filter == EigenvalueFilter::kExact)
-      H = objective_.density().hessian(J);
-    else if (filter == EigenvalueFilter::kAbsolute)
+    if (filter == EigenvalueFilter::kAbsolute)
       H = objective_.density().absolute_hessian(J);
+    else if (in_collapse_range(J.determinant()))  // clamped in every exact-based assembly (module comment)
+      H = objective_.density().projected_hessian(J);
+    else if (filter == EigenvalueFilter::kExact)
+      H = objective_.density().hessian(J);
     else if (negative_share < 1)  // H + share N, N = clamped - exact: negative eigenvalues times 1 - share
       H = (1 - negative_share) * objective_.density().hessian(J) +
           negative_share * objective_.density().projected_hessian(J);
@@ -218,15 +220,18 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
                                                   EigenvalueFilter filter, Matrix* matrix,
                                                   double negative_share) const {
   // Each filtered eigenvalue: the exact one, |lambda|, or a negative one
-  // times 1 - share (share 1: the clamp), as assemble_filtered's matrices;
-  // a NaN (overflow at a nearly collapsed element) dropped, as the clamp does.
+  // times 1 - share (share 1: the clamp), as assemble_filtered's matrices,
+  // and clamped in an element within the collapse barrier's range (module
+  // comment); a NaN (overflow at a nearly collapsed element) dropped, as the
+  // clamp does.
   // The log-area damping (module comment) is one more term of the sum, along
   // the cofactor c = d det J / dJ with mu = g_hat / det(J)^2.
   const double negative_scale = filter == EigenvalueFilter::kExact ? 1 : 1 - negative_share;
-  const auto filtered = [&](double lambda) {
+  const auto filtered = [&](double lambda, bool in_range) {
     if (lambda > 0) return lambda;
     if (!(lambda < 0)) return 0.0;
-    return filter == EigenvalueFilter::kAbsolute ? -lambda : negative_scale * lambda;
+    if (filter == EigenvalueFilter::kAbsolute) return -lambda;
+    return in_range ? 0.0 : negative_scale * lambda;
   };
   constexpr int kCorners = D + 1, kSize = D * kCorners;
   // G^T H G = sum_i mu_i u_i u_i^T with u_i = G^T vec(M_i): corner k's part
@@ -258,7 +263,8 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
             scaled[i][D * k + r] = mu * sum;
           }
       };
-      for (int i = 0; i < D * D; ++i) add_term(i, pairs.modes[i], weight * filtered(pairs.values[i]));
+      const bool in_range = in_collapse_range(jacobians[b].determinant());
+      for (int i = 0; i < D * D; ++i) add_term(i, pairs.modes[i], weight * filtered(pairs.values[i], in_range));
       if (area_damping_ > 0) {
         const Eigen::Matrix<double, D, D>& J = jacobians[b];
         const auto c = determinant_gradient(J);

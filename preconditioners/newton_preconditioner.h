@@ -110,6 +110,20 @@
 // default's Newton phase then no longer closes in on one collapse; it is
 // held by the bound behind AKVF's pace instead, which sends it back there
 // as well (switching_preconditioner.h).
+//
+// Within the barrier's range (det J < g_hat) an element's negative
+// eigenvalues are clamped in every assembly, the exact tries and the partly
+// filtered fallback included. There the barrier's slope b_g < 0 (about
+// -1 / det J deep in the range) adds to the element's twist eigenvalue, in 2D
+// 2 - 4 / (sigma_1 + sigma_2) + b_g, which its neighbours, whose ARAP
+// curvature is at most 2 per unit, balance only where the element rests at
+// the range's edge (b_g near 0, as at a minimum). Anywhere else the exact
+// Hessian, and the fallback with a small share, are indefinite, and each try
+// costs a factorization that fails. ARAP's default runs under local
+// injectivity: on horse_b 17 failed beside 42 that served in the last Newton
+// phase, and the exact Hessian factored at 0 of 5 tries; with the clamp 3
+// beside 49, and at 34 of 35 tries. On camelhead 42 beside 198, then 9
+// beside 221 (docs/notes/2026-12-04-barrier-range-clamp.md).
 #include <limits>
 #include <string>
 
@@ -198,6 +212,9 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   // more than half of E - E_lb, where the model held near the minimum
   // (module comment).
   bool model_held_near_minimum(const OptimizationState& state) const;
+  // det J below the density's collapse barrier onset g_hat: the element's
+  // negative eigenvalues are clamped in every assembly (module comment).
+  bool in_collapse_range(double det) const { return area_damping_ > 0 && det < area_damping_; }
   // s^T H(x) s with the unfiltered Hessian, the constraints' term included.
   double exact_curvature(const Eigen::VectorXd& x, const Eigen::VectorXd& s) const;
 

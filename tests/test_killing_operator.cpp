@@ -535,6 +535,45 @@ TEST_CASE("Newton's model of ARAP adds the log-area damping g_hat (d det J / det
   CHECK(difference == doctest::Approx(expected).epsilon(1e-9));
 }
 
+TEST_CASE("Newton's exact model of ARAP clamps the elements within the collapse barrier's range") {
+  akvf::TriMesh grid = akvf::test::grid_disk(7, 6, 0.2, 3);
+  akvf::normalize_to_unit_area(&grid);
+  const akvf::DistortionObjective2D objective(grid.F, akvf::rest_triangles(grid), std::make_shared<akvf::Arap2D>(),
+                                              grid.num_vertices());
+  // Compressed planar (det J 0.98, a negative twist eigenvalue in every
+  // triangle; the exact Hessian factors), and flattened as well to a
+  // ten-thousandth of its height (det J below 1e-3 everywhere).
+  const Eigen::MatrixXd compressed = grid.V.leftCols<2>() * 0.99;
+  const Eigen::MatrixXd flattened = compressed * Eigen::Vector2d(1, 1e-4).asDiagonal();
+  for (const Eigen::MatrixXd* map : {&compressed, &flattened}) {
+    const bool in_range = map == &flattened;
+    CAPTURE(in_range);
+    const Eigen::VectorXd x = akvf::stack_uv(*map);
+    for (int e = 0; e < objective.weights().size(); ++e) {
+      const double det = objective.jacobian(x, e).determinant();
+      CHECK(det > 0);
+      CHECK((det < akvf::Arap2D::collapse_area_ratio()) == in_range);
+    }
+    Eigen::VectorXd g;
+    const double energy = objective.value_and_gradient(x, &g);
+    akvf::NewtonPreconditioner2D exact(objective, {}, akvf::default_newton_projection(2),
+                                       akvf::EigenvalueFilter::kExact);
+    akvf::NewtonPreconditioner2D clamped(objective, {}, akvf::default_newton_projection(2),
+                                         akvf::EigenvalueFilter::kClamp);
+    // The exact Hessian is tried after a unit step accepted at once.
+    for (akvf::NewtonPreconditioner2D* p : {&exact, &clamped}) p->update({x, g, energy, 1, 1.0, 1.25});
+    REQUIRE(exact.last_filter() == akvf::EigenvalueFilter::kExact);
+    // Off the diagonal (where the rotation shift and the Tikhonov shift
+    // land) the two differ by the negative eigenvalues the clamp drops.
+    Eigen::SparseMatrix<double> difference = exact.matrix().upper() - clamped.matrix().upper();
+    difference.prune([](Eigen::Index row, Eigen::Index column, double) { return row != column; });
+    if (in_range)
+      CHECK(difference.norm() == 0);
+    else
+      CHECK(difference.norm() > 1e-3 * clamped.matrix().upper().norm());
+  }
+}
+
 TEST_CASE("Newton on AKVF's shared assembly pattern assembles and solves bitwise as Newton on its own") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
   const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
