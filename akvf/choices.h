@@ -64,7 +64,9 @@ enum class EigenFilter {
   kClamp,     // set to 0
   kAbsolute,  // mirrored
   kAdaptive,  // clamp while the last step matched its model to 1 %, else mirror (Chen et al. 2024)
-  kExact,     // unfiltered while the Hessian is positive definite, else the least filtering that factors
+  // unfiltered (but in ARAP's collapse barrier's range) while the Hessian is
+  // positive definite, else the least filtering that factors
+  kExact,
 };
 
 template <class Choice>

@@ -196,16 +196,16 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
                                     "multigrid), auto (cholmod unless its factor would take more than half the "
                                     "memory, then amg)",
                                     &O::linear_solver));
-  fields->push_back(
-      choice_field<O>("eigen_filter", "eigen-filter", "eigenvalue filter",
-                      "projected Newton (newton, akvf-newton): the element Hessians' negative "
-                      "eigenvalues clamped to 0, mirrored (abs), adaptive (Chen et al. 2024: clamp "
-                      "while the last step's decrease matched the quadratic model to 1 %, else mirror), "
-                      "or exact (not filtered while the Hessian is positive definite, else only partly: each element's "
-                      "negative eigenvalues scaled by 15/16, 3/4 or 0: the least filtering that factors, more after a step "
-                      "the flip-free bound set); "
-                      "auto: clamp for newton, exact for akvf-newton's Newton phase",
-                      &O::eigen_filter));
+  fields->push_back(choice_field<O>(
+      "eigen_filter", "eigen-filter", "eigenvalue filter",
+      "projected Newton (newton, akvf-newton): the element Hessians' negative "
+      "eigenvalues clamped to 0, mirrored (abs), adaptive (Chen et al. 2024: clamp "
+      "while the last step's decrease matched the quadratic model to 1 %, else mirror), "
+      "or exact (not filtered while the Hessian is positive definite, else only partly: each element's "
+      "negative eigenvalues scaled by 15/16, 3/4 or 0: the least filtering that factors, more after a step "
+      "the flip-free bound set; ARAP's elements within its collapse barrier's range always clamped); "
+      "auto: clamp for newton, exact for akvf-newton's Newton phase",
+      &O::eigen_filter));
   fields->push_back(integer_field<O>("threads", "threads", "N", "worker threads (0 = all cores)", &O::threads,
                                      ">= 0 (0 = all cores)", [](int n) { return n >= 0; }));
 }
