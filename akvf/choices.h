@@ -64,8 +64,8 @@ enum class EigenFilter {
   kClamp,     // set to 0
   kAbsolute,  // mirrored
   kAdaptive,  // clamp while the last step matched its model to 1 %, else mirror (Chen et al. 2024)
-  // unfiltered (but in ARAP's collapse barrier's range) while the Hessian is
-  // positive definite, else the least filtering that factors
+  // unfiltered while the Hessian is positive definite, else the least
+  // filtering that factors; clamped within ARAP's collapse barrier's range
   kExact,
 };
 
