@@ -113,13 +113,14 @@
 //
 // Within the barrier's range (det J < g_hat) an element's negative
 // eigenvalues are clamped in every assembly, the exact tries and the partly
-// filtered fallback included. There the barrier's slope b_g < 0 (about
-// -1 / det J deep in the range) adds to the element's twist eigenvalue, in 2D
-// 2 - 4 / (sigma_1 + sigma_2) + b_g, which its neighbours, whose ARAP
-// curvature is at most 2 per unit, balance only where the element rests at
-// the range's edge (b_g near 0, as at a minimum). Anywhere else the exact
-// Hessian, and the fallback with a small share, are indefinite, and each try
-// costs a factorization that fails. ARAP's default runs under local
+// filtered fallback included. There the barrier's slope b_g < 0 adds to the
+// element's twist eigenvalue, in 2D 2 - 4 / (sigma_1 + sigma_2) + b_g
+// (ARAP's own curvature is at most 2), and b_g moves fast with det J: about
+// -32 at r = det J / g_hat = 0.9, where a change of det J by 1 % of g_hat
+// moves it by 6, and about -1 / det J deeper in. So the exact Hessian is
+// positive definite only very near a minimum where such elements rest;
+// anywhere else a try costs a factorization that fails, and so does the
+// fallback with a small share. ARAP's default runs under local
 // injectivity: on horse_b 17 failed beside 42 that served in the last Newton
 // phase, and the exact Hessian factored at 0 of 5 tries; with the clamp 3
 // beside 49, and at 34 of 35 tries. On camelhead 42 beside 198, then 9
