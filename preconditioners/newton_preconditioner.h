@@ -120,11 +120,8 @@
 // moves it by 6, and about -1 / det J deeper in. So the exact Hessian is
 // positive definite only very near a minimum where such elements rest;
 // anywhere else a try costs a factorization that fails, and so does the
-// fallback with a small share. ARAP's default runs under local
-// injectivity: on horse_b 17 failed beside 42 that served in the last Newton
-// phase, and the exact Hessian factored at 0 of 5 tries; with the clamp 3
-// beside 49, and at 34 of 35 tries. On camelhead 42 beside 198, then 9
-// beside 221 (docs/notes/2026-12-04-barrier-range-clamp.md).
+// fallback with a small share (docs/notes/2026-12-04-barrier-range-clamp.md
+// counts them).
 #include <limits>
 #include <string>
 
