@@ -120,6 +120,7 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
   } else if (filter_ == EigenvalueFilter::kExact) {
     // The last exact Hessian served (no fallback since): try it at once next time.
     if (last_filter_ == EigenvalueFilter::kExact) exact_backoff_ = 1;
+    if (last_filter_ == EigenvalueFilter::kExact && range_exact_) range_backoff_ = 1;
     // Only a factorization tells whether the exact Hessian is positive
     // definite; it is tried where Newton's model held, never before the
     // first step, which uses the clamp (module comment).
@@ -147,6 +148,13 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
              this->solves_by_factorization();
   partial_failed_ = false;
   if (last_filter_ == EigenvalueFilter::kExact) ++exact_assemblies_;
+  // The collapse barrier's range kept exact where it has settled (module comment).
+  range_exact_ = false;
+  if (last_filter_ == EigenvalueFilter::kExact && range_wait_ > 0)
+    --range_wait_;
+  else if (last_filter_ == EigenvalueFilter::kExact)
+    range_exact_ = collapse_range_settled(state.x);
+  range_exact_tries_ += range_exact_;
   if (filter_ == EigenvalueFilter::kExact) {  // kept for a fallback at the same x
     assembled_x_ = state.x;
     assembled_gradient_ = state.gradient;
@@ -198,7 +206,7 @@ void NewtonPreconditioner<D>::assemble_filtered(const Eigen::VectorXd& x, Eigenv
     ElementHessian H;
     if (filter == EigenvalueFilter::kAbsolute)
       H = objective_.density().absolute_hessian(J);
-    else if (in_collapse_range(J.determinant()))  // clamped in every exact-based assembly (module comment)
+    else if (clamped_in_range(J.determinant(), filter))  // clamped in exact-based assemblies (module comment)
       H = objective_.density().projected_hessian(J);
     else if (filter == EigenvalueFilter::kExact)
       H = objective_.density().hessian(J);
@@ -221,8 +229,8 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
                                                   double negative_share) const {
   // Each filtered eigenvalue: the exact one, |lambda|, or a negative one
   // times 1 - share (share 1: the clamp), as assemble_filtered's matrices,
-  // and clamped in an element within the collapse barrier's range (module
-  // comment); a NaN (overflow at a nearly collapsed element) dropped, as the
+  // and clamped in an element within the collapse barrier's range unless
+  // it has settled (module comment); a NaN (overflow at a nearly collapsed element) dropped, as the
   // clamp does.
   // The log-area damping (module comment) is one more term of the sum, along
   // the cofactor c = d det J / dJ with mu = g_hat / det(J)^2.
@@ -263,7 +271,7 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
             scaled[i][D * k + r] = mu * sum;
           }
       };
-      const bool in_range = in_collapse_range(jacobians[b].determinant());
+      const bool in_range = clamped_in_range(jacobians[b].determinant(), filter);
       for (int i = 0; i < D * D; ++i) add_term(i, pairs.modes[i], weight * filtered(pairs.values[i], in_range));
       if (area_damping_ > 0) {
         const Eigen::Matrix<double, D, D>& J = jacobians[b];
@@ -282,7 +290,29 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
 }
 
 template <int D>
+bool NewtonPreconditioner<D>::collapse_range_settled(const Eigen::VectorXd& x) const {
+  if (!(area_damping_ > 0) || assembled_x_.size() != x.size()) return false;
+  bool any = false;
+  for (int e = 0; e < objective_.weights().size(); ++e) {
+    const double det = objective_.jacobian(x, e).determinant();
+    if (!in_collapse_range(det)) continue;
+    const double before = objective_.jacobian(assembled_x_, e).determinant();
+    if (!(std::abs(det - before) < kSettledShare * area_damping_)) return false;
+    any = true;
+  }
+  return any;
+}
+
+template <int D>
 bool NewtonPreconditioner<D>::reassemble_semidefinite(Matrix* matrix) {
+  if (last_filter_ == EigenvalueFilter::kExact && range_exact_) {  // the same try, the range clamped
+    ++range_exact_fallbacks_;
+    range_exact_ = false;
+    range_wait_ = range_backoff_;
+    range_backoff_ *= 2;
+    assemble_current(assembled_x_, assembled_gradient_, matrix);
+    return true;
+  }
   if (last_filter_ == EigenvalueFilter::kExact) {
     ++exact_fallbacks_;
     exact_wait_ = exact_backoff_;
@@ -306,6 +336,9 @@ std::string NewtonPreconditioner<D>::report() const {
   if (exact_assemblies_ > 0)
     line += "; exact Hessian at " + std::to_string(exact_assemblies_ - exact_fallbacks_) + " of " +
             std::to_string(exact_assemblies_) + " tries";
+  if (range_exact_tries_ > 0)
+    line += " (the collapse barrier's range exact at " + std::to_string(range_exact_tries_ - range_exact_fallbacks_) +
+            " of " + std::to_string(range_exact_tries_) + ")";
   if (partial_fallbacks_ > 0)
     line += ", its partly filtered fallback not positive definite at " + std::to_string(partial_fallbacks_);
   return line;

@@ -121,7 +121,15 @@
 // positive definite only very near a minimum where such elements rest;
 // anywhere else a try costs a factorization that fails, and so does the
 // fallback with a small share (docs/notes/2026-12-04-barrier-range-clamp.md
-// counts them).
+// counts them). Near such a minimum the clamp leaves their twist out of the
+// model and the tail is linear, so an exact try keeps them exact where every
+// element in the range has settled: det J moved by less than
+// kSettledShare = 1 % of g_hat since the last assembly. Over such a move the
+// barrier's curvature b'' changes by 4-11 % (|b''' / b''| is 4-11 for
+// r <= 0.9), so its quadratic model holds. If that try does not factor, it is
+// made again at the same x with the range clamped, and the range waits
+// 1, 2, 4, ... exact tries before it is kept exact again (a success resets
+// the wait).
 #include <limits>
 #include <string>
 
@@ -178,8 +186,14 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   void start_on_fallback() { exact_wait_ = 1; }
   std::string report() const override;
 
+  // kExact: tries that kept the elements within the collapse barrier's
+  // range exact, and how many of them did not factor (module comment).
+  int range_exact_tries() const { return range_exact_tries_; }
+  int range_exact_fallbacks() const { return range_exact_fallbacks_; }
+
   static constexpr double adaptive_tolerance = 0.01;
   static constexpr double kLeastNegativeShare = 1.0 / 16;
+  static constexpr double kSettledShare = 0.01;
 
  private:
   // The barrier's terms as the elements: each term's whole Hessian, projected.
@@ -213,6 +227,13 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   // det J below the density's collapse barrier onset g_hat: the element's
   // negative eigenvalues are clamped in every assembly (module comment).
   bool in_collapse_range(double det) const { return area_damping_ > 0 && det < area_damping_; }
+  // Some element of x is within the range, and each such element's det J
+  // differs from its det J at assembled_x_ by less than kSettledShare g_hat.
+  bool collapse_range_settled(const Eigen::VectorXd& x) const;
+  // The element's negative eigenvalues are clamped in an assembly by `filter`.
+  bool clamped_in_range(double det, EigenvalueFilter filter) const {
+    return in_collapse_range(det) && !(filter == EigenvalueFilter::kExact && range_exact_);
+  }
   // s^T H(x) s with the unfiltered Hessian, the constraints' term included.
   double exact_curvature(const Eigen::VectorXd& x, const Eigen::VectorXd& s) const;
 
@@ -224,6 +245,11 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   int mirrored_assemblies_ = 0;
   int exact_assemblies_ = 0, exact_fallbacks_ = 0;
   int exact_wait_ = 0, exact_backoff_ = 1;            // kExact: iterations on the fallback before trying again
+  // kExact: whether the last exact try kept the collapse barrier's range
+  // exact, and the exact tries that clamp it before it is kept again.
+  bool range_exact_ = false;
+  int range_wait_ = 0, range_backoff_ = 1;
+  int range_exact_tries_ = 0, range_exact_fallbacks_ = 0;
   Eigen::VectorXd assembled_x_, assembled_gradient_;  // kExact: where P was last assembled
   // kExact's fallback (module comment): whether the last assembly was it,
   // whether it failed since, and the share of the negative part it keeps.

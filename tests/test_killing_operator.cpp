@@ -574,6 +574,42 @@ TEST_CASE("Newton's exact model of ARAP clamps the elements within the collapse 
   }
 }
 
+TEST_CASE("an exact try keeps a settled collapse range exact, and clamps it again where that does not factor") {
+  akvf::TriMesh grid = akvf::test::grid_disk(7, 6, 0.2, 3);
+  akvf::normalize_to_unit_area(&grid);
+  const akvf::DistortionObjective2D objective(grid.F, akvf::rest_triangles(grid), std::make_shared<akvf::Arap2D>(),
+                                              grid.num_vertices());
+  // Flattened to a ten-thousandth of its height: every triangle within the
+  // range, where the exact Hessian does not factor (the test above).
+  const Eigen::MatrixXd flattened = grid.V.leftCols<2>() * Eigen::Vector2d(0.99, 0.99e-4).asDiagonal();
+  const Eigen::VectorXd x = akvf::stack_uv(flattened);
+  Eigen::VectorXd g;
+  const double energy = objective.value_and_gradient(x, &g);
+  akvf::NewtonPreconditioner2D exact(objective, {}, akvf::default_newton_projection(2), akvf::EigenvalueFilter::kExact);
+  akvf::NewtonPreconditioner2D clamped(objective, {}, akvf::default_newton_projection(2),
+                                       akvf::EigenvalueFilter::kClamp);
+  clamped.update({x, g, energy, 1, 1.0, 1.25});
+  const auto off_diagonal_difference = [&] {
+    Eigen::SparseMatrix<double> difference = exact.matrix().upper() - clamped.matrix().upper();
+    difference.prune([](Eigen::Index row, Eigen::Index column, double) { return row != column; });
+    return difference.norm();
+  };
+  // Each update after a unit step accepted at once, at the same x: the
+  // range has not moved since the last assembly from the second on. The
+  // first keeps the range clamped (nothing to compare with); the second
+  // keeps it exact, fails to factor, and is made again with it clamped; the
+  // third waits; the fourth tries again.
+  const int expected_tries[] = {0, 1, 1, 2};
+  for (int k = 1; k <= 4; ++k) {
+    CAPTURE(k);
+    exact.update({x, g, energy, k, 1.0, 1.25});
+    REQUIRE(exact.last_filter() == akvf::EigenvalueFilter::kExact);
+    CHECK(exact.range_exact_tries() == expected_tries[k - 1]);
+    CHECK(exact.range_exact_fallbacks() == exact.range_exact_tries());
+    CHECK(off_diagonal_difference() == 0);
+  }
+}
+
 TEST_CASE("Newton on AKVF's shared assembly pattern assembles and solves bitwise as Newton on its own") {
   akvf::TriMesh normalized = akvf::test::bumpy_disk(7, 7);
   const akvf::DistortionObjective2D objective = unit_area_objective(&normalized);
