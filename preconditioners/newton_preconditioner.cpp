@@ -230,8 +230,8 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
   // Each filtered eigenvalue: the exact one, |lambda|, or a negative one
   // times 1 - share (share 1: the clamp), as assemble_filtered's matrices,
   // and clamped in an element within the collapse barrier's range unless
-  // it has settled (module comment); a NaN (overflow at a nearly collapsed element) dropped, as the
-  // clamp does.
+  // the range has settled (module comment); a NaN (overflow at a nearly
+  // collapsed element) dropped, as the clamp does.
   // The log-area damping (module comment) is one more term of the sum, along
   // the cofactor c = d det J / dJ with mu = g_hat / det(J)^2.
   const double negative_scale = filter == EigenvalueFilter::kExact ? 1 : 1 - negative_share;

@@ -225,7 +225,8 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   // (module comment).
   bool model_held_near_minimum(const OptimizationState& state) const;
   // det J below the density's collapse barrier onset g_hat: the element's
-  // negative eigenvalues are clamped in every assembly (module comment).
+  // negative eigenvalues are clamped unless the range has settled (module
+  // comment).
   bool in_collapse_range(double det) const { return area_damping_ > 0 && det < area_damping_; }
   // Some element of x is within the range, and each such element's det J
   // differs from its det J at assembled_x_ by less than kSettledShare g_hat.
