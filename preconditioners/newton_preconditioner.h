@@ -125,11 +125,11 @@
 // model and the tail is linear, so an exact try keeps them exact where every
 // element in the range has settled: det J moved by less than
 // kSettledShare = 1 % of g_hat since the last assembly. Over such a move the
-// barrier's curvature b'' changes by 4-11 % (|b''' / b''| is 4-11 for
-// r <= 0.9), so its quadratic model holds. If that try does not factor, it is
-// made again at the same x with the range clamped, and the range waits
-// 1, 2, 4, ... exact tries before it is kept exact again (a success resets
-// the wait).
+// barrier's curvature b'' changes by 4-11 % where 0.2 <= r <= 0.9
+// (|b''' / b''| is 4-11 there, about 2 / r deeper in), so its quadratic
+// model holds. If that try does not factor, it is made again at the same x
+// with the range clamped, and the range waits 1, 2, 4, ... exact tries
+// before it is kept exact again (a success resets the wait).
 #include <limits>
 #include <string>
 
