@@ -66,7 +66,7 @@ enum class EigenFilter {
   kAdaptive,  // clamp while the last step matched its model to 1 %, else mirror (Chen et al. 2024)
   // unfiltered while the Hessian is positive definite, else the least
   // filtering that factors; clamped within ARAP's collapse barrier's range
-  // until it settles
+  // and in the boundary barrier's terms until they settle
   kExact,
 };
 

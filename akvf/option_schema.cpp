@@ -203,7 +203,8 @@ void add_common_fields(std::vector<OptionField<O>>* fields) {
       "while the last step's decrease matched the quadratic model to 1 %, else mirror), "
       "or exact (not filtered while the Hessian is positive definite, else only partly: each element's "
       "negative eigenvalues scaled by 15/16, 3/4 or 0: the least filtering that factors, more after a step "
-      "the flip-free bound set; ARAP's elements within its collapse barrier's range clamped until they settle); "
+      "the flip-free bound set; ARAP's elements within its collapse barrier's range and the boundary barrier's "
+      "terms clamped until they settle); "
       "auto: clamp for newton, exact for akvf-newton's Newton phase",
       &O::eigen_filter));
   fields->push_back(integer_field<O>("threads", "threads", "N", "worker threads (0 = all cores)", &O::threads,

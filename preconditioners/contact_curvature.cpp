@@ -60,10 +60,11 @@ const Eigen::SparseMatrix<double>& ContactCurvature::at(const Eigen::VectorXd& x
   // terms' order.
   double* values = matrix_.valuePtr();
   std::fill(values, values + matrix_.nonZeros(), 0.0);
-  const bool whole = model == ContactModel::kProjectedHessian;
+  const bool whole = model != ContactModel::kGaussNewton;
   for (const BoundaryContact::ActiveTerm& term : terms) {
-    const Eigen::Matrix<double, 6, 6> hessian =
-        whole ? projected(BoundaryContact::hessian(term, x)) : Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 6> hessian = Eigen::Matrix<double, 6, 6>::Zero();
+    if (whole) hessian = BoundaryContact::hessian(term, x);
+    if (model == ContactModel::kProjectedHessian) hessian = projected(hessian);
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
         const int i = term.vertex[a], j = term.vertex[b];

@@ -5,7 +5,8 @@
 // over the barrier's active terms k (BoundaryContact::ActiveTerm), each
 // coupling three vertices as a triangle does; or, for a preconditioner that
 // models the energy's curvature (projected Newton), each term's whole
-// Hessian projected to be positive semi-definite (ContactModel). Factored
+// Hessian projected to be positive semi-definite, or unprojected where
+// Newton's model is exact (ContactModel). Factored
 // with P, C costs one factorization however many terms are active, where
 // ContactPreconditioner's low-rank update costs a solve per term (and a
 // term left out of P stalls the descent: its vertices run into the barrier
@@ -46,8 +47,9 @@ namespace akvf {
 // Each active term's part of C: its Gauss-Newton curvature b'' (dq/dx)(dq/dx)^T,
 // or its whole Hessian, b'' (dq/dx)(dq/dx)^T + b' d^2q/dx^2
 // (BoundaryContact::hessian), with its negative eigenvalues clamped to 0 as
-// projected Newton does for each element.
-enum class ContactModel { kGaussNewton, kProjectedHessian };
+// projected Newton does for each element, or as it is (C then may be
+// indefinite: Newton's exact tries, newton_preconditioner.h).
+enum class ContactModel { kGaussNewton, kProjectedHessian, kHessian };
 
 class ContactCurvature {
  public:
@@ -62,6 +64,8 @@ class ContactCurvature {
   const Eigen::SparseMatrix<double>& at(const Eigen::VectorXd& x, ContactModel model = ContactModel::kGaussNewton);
   // Grows by one each time the pattern changes.
   int pattern_version() const { return version_; }
+  // The barrier whose terms C holds.
+  const BoundaryContact& contact() const { return *contact_; }
 
  private:
   // matrix_ on sorted_pairs_, values zero.

@@ -166,8 +166,7 @@ void FactoredPreconditioner<D>::update(const OptimizationState& state) {
   // otherwise apply() decides whether the previous factor still serves.
   if (options_.reuse_tolerance <= 0 || !factored_ || !reuse_may_pay()) {
     factorize_current();
-  } else if (skip_reuse_ > 0) {
-    --skip_reuse_;
+  } else if (reuse_backoff_.skip()) {
     factorize_current();
   }
 }
@@ -286,11 +285,10 @@ void FactoredPreconditioner<D>::apply(const Eigen::VectorXd& gradient, Eigen::Ve
   if (!factor_is_current_) {
     if (solve_with_previous_factor(gradient, result)) {
       ++statistics_.reused_solves;
-      failure_backoff_ = 1;
+      reuse_backoff_.succeeded();
       return;
     }
-    skip_reuse_ = failure_backoff_;
-    failure_backoff_ *= 2;
+    reuse_backoff_.failed();
     factorize_current();
   }
   cholesky_.solve(gradient, result);

@@ -95,6 +95,7 @@
 #include "akvf/motion_bases.h"
 #include "akvf/preconditioner.h"
 #include "framework/optimization/element_matrix.h"
+#include "preconditioners/backoff.h"
 #include "preconditioners/contact_curvature.h"
 #include "solvers/algebraic_multigrid.h"
 #include "solvers/sparse_cholesky.h"
@@ -205,6 +206,15 @@ class FactoredPreconditioner : public Preconditioner {
   const std::vector<std::vector<int>>* component_vertices() const { return component_vertices_.get(); }
   // How the barrier's terms enter C (FactorOptions::contact_curvature).
   virtual ContactModel contact_model() const { return ContactModel::kGaussNewton; }
+  // The barrier's curvature added to P, or null (FactorOptions::contact_curvature).
+  const ContactCurvature* contact_curvature() const { return options_.contact_curvature.get(); }
+  // C(x) again, by contact_model(): for a subclass whose model changed
+  // after update() computed C (in assemble() or reassemble_semidefinite()).
+  void refresh_contact(const Eigen::VectorXd& x) {
+    if (!options_.contact_curvature) return;
+    contact_ = options_.contact_curvature->at(x, contact_model());
+    system_current_ = false;
+  }
   // P's extra diagonal (FactorOptions::extra_diagonal as used).
   const Eigen::VectorXd& extra_diagonal() const { return options_.extra_diagonal; }
 
@@ -278,8 +288,7 @@ class FactoredPreconditioner : public Preconditioner {
   ComponentMotions factored_null_basis_;  // at the last factorization
   bool factored_ = false;                 // a factor exists (from any earlier update)
   bool factor_is_current_ = false;
-  int skip_reuse_ = 0;
-  int failure_backoff_ = 1;
+  Backoff reuse_backoff_;    // the updates that factor without trying a reuse
   double relative_shift_;    // eps / mean(diag P): tikhonov, raised by retries
   int shift_increases_ = 0;  // factorizations retried with a larger shift
   FactorStatistics statistics_;

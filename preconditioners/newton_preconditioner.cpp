@@ -115,20 +115,21 @@ bool NewtonPreconditioner<D>::model_held_near_minimum(const OptimizationState& s
 
 template <int D>
 void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* matrix) {
+  const ContactModel contact_used = contact_model();  // update()'s C(x), before this assembly's choices
   if (filter_ == EigenvalueFilter::kAdaptive) {
     last_filter_ = adaptive_choice(state);
   } else if (filter_ == EigenvalueFilter::kExact) {
     // The last exact Hessian served (no fallback since): try it at once next time.
-    if (last_filter_ == EigenvalueFilter::kExact) exact_backoff_ = 1;
-    if (last_filter_ == EigenvalueFilter::kExact && range_exact_) range_backoff_ = 1;
+    if (last_filter_ == EigenvalueFilter::kExact) exact_backoff_.succeeded();
+    if (last_filter_ == EigenvalueFilter::kExact && range_exact_) range_backoff_.succeeded();
     // Only a factorization tells whether the exact Hessian is positive
     // definite; it is tried where Newton's model held, never before the
     // first step, which uses the clamp (module comment).
     const bool model_held = model_held_near_minimum(state);
     if (state.previous_step == 0) start_fallback_at_clamp();
-    last_filter_ = exact_wait_ > 0 || !model_held || !this->solves_by_factorization() ? EigenvalueFilter::kClamp
-                                                                                      : EigenvalueFilter::kExact;
-    if (exact_wait_ > 0) --exact_wait_;
+    const bool waiting = exact_backoff_.skip();
+    last_filter_ = waiting || !model_held || !this->solves_by_factorization() ? EigenvalueFilter::kClamp
+                                                                              : EigenvalueFilter::kExact;
   } else {
     last_filter_ = filter_;
   }
@@ -148,13 +149,12 @@ void NewtonPreconditioner<D>::assemble(const OptimizationState& state, Matrix* m
              this->solves_by_factorization();
   partial_failed_ = false;
   if (last_filter_ == EigenvalueFilter::kExact) ++exact_assemblies_;
-  // The collapse barrier's range kept exact where it has settled (module comment).
+  // The barriers' ranges kept exact where they have settled (module comment).
   range_exact_ = false;
-  if (last_filter_ == EigenvalueFilter::kExact && range_wait_ > 0)
-    --range_wait_;
-  else if (last_filter_ == EigenvalueFilter::kExact)
-    range_exact_ = collapse_range_settled(state.x);
+  if (last_filter_ == EigenvalueFilter::kExact && !range_backoff_.skip())
+    range_exact_ = barrier_ranges_settled(state.x);
   range_exact_tries_ += range_exact_;
+  if (contact_model() != contact_used) this->refresh_contact(state.x);
   if (filter_ == EigenvalueFilter::kExact) {  // kept for a fallback at the same x
     assembled_x_ = state.x;
     assembled_gradient_ = state.gradient;
@@ -290,9 +290,17 @@ void NewtonPreconditioner<D>::assemble_from_modes(const Eigen::VectorXd& x, cons
 }
 
 template <int D>
-bool NewtonPreconditioner<D>::collapse_range_settled(const Eigen::VectorXd& x) const {
-  if (!(area_damping_ > 0) || assembled_x_.size() != x.size()) return false;
+bool NewtonPreconditioner<D>::barrier_ranges_settled(const Eigen::VectorXd& x) const {
+  if (assembled_x_.size() != x.size()) return false;
   bool any = false;
+  if (const ContactCurvature* contact = this->contact_curvature()) {
+    for (const BoundaryContact::ActiveTerm& term : contact->contact().active_terms(x)) {
+      const double before = BoundaryContact::argument_at(term, assembled_x_);
+      if (!(std::abs(term.argument - before) < kSettledShare * term.reach)) return false;
+      any = true;
+    }
+  }
+  if (!(area_damping_ > 0)) return any;
   for (int e = 0; e < objective_.weights().size(); ++e) {
     const double det = objective_.jacobian(x, e).determinant();
     if (!in_collapse_range(det)) continue;
@@ -308,15 +316,14 @@ bool NewtonPreconditioner<D>::reassemble_semidefinite(Matrix* matrix) {
   if (last_filter_ == EigenvalueFilter::kExact && range_exact_) {  // the same try, the range clamped
     ++range_exact_fallbacks_;
     range_exact_ = false;
-    range_wait_ = range_backoff_;
-    range_backoff_ *= 2;
+    range_backoff_.failed();
+    this->refresh_contact(assembled_x_);  // C(x) projected again
     assemble_current(assembled_x_, assembled_gradient_, matrix);
     return true;
   }
   if (last_filter_ == EigenvalueFilter::kExact) {
     ++exact_fallbacks_;
-    exact_wait_ = exact_backoff_;
-    exact_backoff_ *= 2;
+    exact_backoff_.failed();
     last_filter_ = EigenvalueFilter::kClamp;
     partial_ = true;
   } else if (partial_ && negative_share_ < 1) {
@@ -337,8 +344,8 @@ std::string NewtonPreconditioner<D>::report() const {
     line += "; exact Hessian at " + std::to_string(exact_assemblies_ - exact_fallbacks_) + " of " +
             std::to_string(exact_assemblies_) + " tries";
   if (range_exact_tries_ > 0)
-    line += " (the collapse barrier's range exact at " + std::to_string(range_exact_tries_ - range_exact_fallbacks_) +
-            " of " + std::to_string(range_exact_tries_) + ")";
+    line += " (the barriers' ranges exact at " + std::to_string(range_exact_tries_ - range_exact_fallbacks_) + " of " +
+            std::to_string(range_exact_tries_) + ")";
   if (partial_fallbacks_ > 0)
     line += ", its partly filtered fallback not positive definite at " + std::to_string(partial_fallbacks_);
   return line;

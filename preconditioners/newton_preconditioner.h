@@ -127,9 +127,25 @@
 // kSettledShare = 1 % of g_hat since the last assembly. Over such a move the
 // barrier's curvature b'' changes by 4-11 % where 0.2 <= r <= 0.9
 // (|b''' / b''| is 4-11 there, about 2 / r deeper in), so its quadratic
-// model holds. If that try does not factor, it is made again at the same x
-// with the range clamped, and the range waits 1, 2, 4, ... exact tries
-// before it is kept exact again (a success resets the wait).
+// model holds.
+//
+// The boundary barrier of global injectivity (boundary_contact.h) enters P
+// through its active terms, each term's Hessian b'' (dq/dx)(dq/dx)^T +
+// b' d^2q/dx^2 projected to be positive semi-definite (contact_curvature.h):
+// the negative part of b' d^2q/dx^2 (b' < 0) is left out, and near a
+// minimum the barrier holds, the tail is linear (ARAP on horse_b to a
+// gradient of 1e-7 stalled at 2.1e-7 after 170 iterations, a linear rate of
+// 0.96 per iteration). So the same exact tries keep the terms' Hessians
+// whole where every active term has settled: its argument q moved by less
+// than kSettledShare of its reach eps since the last assembly. With
+// b = w (eps / q - 1)^2, |b''' / b''| eps is 6-9 for 0.5 <= q / eps <= 1 and
+// 14 at 0.3, so over such a move b'' changes by 6-14 % there.
+//
+// The collapse barrier's range and the boundary barrier's terms (the
+// barriers' ranges) are kept exact together, where both have settled. If
+// that try does not factor, it is made again at the same x with both
+// clamped, and they wait 1, 2, 4, ... exact tries before they are kept
+// exact again (a success resets the wait).
 #include <limits>
 #include <string>
 
@@ -183,11 +199,12 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   // kExact: the first assembly is the fallback, the exact Hessian is tried
   // from the second on; where the last step was another method's
   // (akvf-newton's switch), so nothing has tested Newton's model yet.
-  void start_on_fallback() { exact_wait_ = 1; }
+  void start_on_fallback() { exact_backoff_.skip_next(1); }
   std::string report() const override;
 
-  // kExact: tries that kept the elements within the collapse barrier's
-  // range exact, and how many of them did not factor (module comment).
+  // kExact: tries that kept the barriers' ranges exact (the elements within
+  // the collapse barrier's range, the boundary barrier's active terms), and
+  // how many of them did not factor (module comment).
   int range_exact_tries() const { return range_exact_tries_; }
   int range_exact_fallbacks() const { return range_exact_fallbacks_; }
 
@@ -196,8 +213,12 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   static constexpr double kSettledShare = 0.01;
 
  private:
-  // The barrier's terms as the elements: each term's whole Hessian, projected.
-  ContactModel contact_model() const override { return ContactModel::kProjectedHessian; }
+  // The barrier's terms as the elements: each term's whole Hessian,
+  // projected unless the barriers' ranges are kept exact (module comment).
+  ContactModel contact_model() const override {
+    return range_exact_ && last_filter_ == EigenvalueFilter::kExact ? ContactModel::kHessian
+                                                                    : ContactModel::kProjectedHessian;
+  }
   using Matrix = typename FactoredPreconditioner<D>::Matrix;
   void assemble(const OptimizationState& state, Matrix* matrix) override;
   Eigen::MatrixXd null_space(const Eigen::VectorXd& x) const override { return motion_basis(D, projection_, x); }
@@ -228,9 +249,10 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   // negative eigenvalues are clamped unless the range has settled (module
   // comment).
   bool in_collapse_range(double det) const { return area_damping_ > 0 && det < area_damping_; }
-  // Some element of x is within the range, and each such element's det J
-  // differs from its det J at assembled_x_ by less than kSettledShare g_hat.
-  bool collapse_range_settled(const Eigen::VectorXd& x) const;
+  // Some element of x is within the collapse range or some boundary barrier
+  // term is active, and each such element's det J (term's q) differs from
+  // its value at assembled_x_ by less than kSettledShare g_hat (its reach).
+  bool barrier_ranges_settled(const Eigen::VectorXd& x) const;
   // The element's negative eigenvalues are clamped in an assembly by `filter`.
   bool clamped_in_range(double det, EigenvalueFilter filter) const {
     return in_collapse_range(det) && !(filter == EigenvalueFilter::kExact && range_exact_);
@@ -245,11 +267,11 @@ class NewtonPreconditioner final : public FactoredPreconditioner<D> {
   EigenvalueFilter last_filter_ = EigenvalueFilter::kClamp;
   int mirrored_assemblies_ = 0;
   int exact_assemblies_ = 0, exact_fallbacks_ = 0;
-  int exact_wait_ = 0, exact_backoff_ = 1;            // kExact: iterations on the fallback before trying again
-  // kExact: whether the last exact try kept the collapse barrier's range
-  // exact, and the exact tries that clamp it before it is kept again.
+  Backoff exact_backoff_;  // kExact: the iterations on the fallback before the exact Hessian is tried again
+  // kExact: whether the last exact try kept the barriers' ranges exact, and
+  // the exact tries that clamp them before they are kept again.
   bool range_exact_ = false;
-  int range_wait_ = 0, range_backoff_ = 1;
+  Backoff range_backoff_;
   int range_exact_tries_ = 0, range_exact_fallbacks_ = 0;
   Eigen::VectorXd assembled_x_, assembled_gradient_;  // kExact: where P was last assembled
   // kExact's fallback (module comment): whether the last assembly was it,

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <random>
 
 #include "akvf/akvf.h"
@@ -207,6 +208,8 @@ TEST_CASE("each barrier term's Hessian: their sum matches finite differences of 
       const bool clamped = term.gradient[1].norm() == 0 || term.gradient[2].norm() == 0;
       if (!term.angle) (clamped ? end : inner) = true;
       const Eigen::Matrix<double, 6, 6> H = BoundaryContact::hessian(term, x);
+      CHECK(BoundaryContact::argument_at(term, x) == doctest::Approx(term.argument).epsilon(1e-14));
+      CHECK(term.argument < term.reach);
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b)
           sum.block<2, 2>(2 * term.vertex[a], 2 * term.vertex[b]) += H.block<2, 2>(2 * a, 2 * b);
@@ -223,6 +226,16 @@ TEST_CASE("each barrier term's Hessian: their sum matches finite differences of 
       differences.col(i) = (g_plus - g_minus) / (2 * h);
     }
     CHECK((sum - differences).norm() <= 1e-5 * sum.norm());
+    // A term's argument with its vertices moved is the one found there.
+    Eigen::VectorXd moved = x;
+    moved.segment<2>(8) += Eigen::Vector2d(0.01, 0.005);
+    const std::vector<BoundaryContact::ActiveTerm> here = loop.active_terms(x), there = loop.active_terms(moved);
+    REQUIRE(here.size() == there.size());
+    for (std::size_t k = 0; k < here.size(); ++k) {
+      REQUIRE(std::equal(here[k].vertex, here[k].vertex + 3, there[k].vertex));
+      CHECK(BoundaryContact::argument_at(here[k], moved) == doctest::Approx(there[k].argument).epsilon(1e-14));
+      CHECK(BoundaryContact::argument_at(here[k], moved) != doctest::Approx(here[k].argument));
+    }
   }
 }
 
@@ -388,22 +401,36 @@ TEST_CASE(
   CHECK(curvature.pattern_version() == at_start);
 
   // Projected Newton's C: each term's whole Hessian with its negative
-  // eigenvalues clamped, positive semi-definite.
-  Eigen::MatrixXd projected = Eigen::MatrixXd::Zero(n, n);
-  for (const BoundaryContact::ActiveTerm& term : terms) {
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(BoundaryContact::hessian(term, x));
-    const Eigen::Matrix<double, 6, 6> H =
-        eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        projected.block<2, 2>(2 * term.vertex[a], 2 * term.vertex[b]) += H.block<2, 2>(2 * a, 2 * b);
-  }
-  const Eigen::MatrixXd whole_upper = Eigen::MatrixXd(curvature.at(x, ContactModel::kProjectedHessian));
-  const Eigen::MatrixXd whole =
-      whole_upper + whole_upper.transpose() - Eigen::MatrixXd(whole_upper.diagonal().asDiagonal());
+  // eigenvalues clamped, positive semi-definite; in Newton's exact tries
+  // each term's whole Hessian as it is (some of them indefinite).
+  using Matrix6 = Eigen::Matrix<double, 6, 6>;
+  const auto sum_of_terms = [&](const std::function<Matrix6(const Matrix6&)>& filter) {
+    Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(n, n);
+    for (const BoundaryContact::ActiveTerm& term : terms) {
+      const Matrix6 H = filter(BoundaryContact::hessian(term, x));
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          sum.block<2, 2>(2 * term.vertex[a], 2 * term.vertex[b]) += H.block<2, 2>(2 * a, 2 * b);
+    }
+    return sum;
+  };
+  const auto symmetric = [](const Eigen::SparseMatrix<double>& upper_part) {
+    const Eigen::MatrixXd dense(upper_part);
+    return Eigen::MatrixXd(dense + dense.transpose() - Eigen::MatrixXd(dense.diagonal().asDiagonal()));
+  };
+  const Eigen::MatrixXd projected = sum_of_terms([](const Matrix6& H) {
+    const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(H);
+    return Matrix6(eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() *
+                   eigen.eigenvectors().transpose());
+  });
+  const Eigen::MatrixXd whole = symmetric(curvature.at(x, ContactModel::kProjectedHessian));
   CHECK((whole - projected).norm() <= 1e-12 * projected.norm());
   CHECK(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(whole).eigenvalues().minCoeff() >= -1e-9 * projected.norm());
   CHECK((whole - full).norm() > 1e-6 * full.norm());  // the curvature of q counts
+  const Eigen::MatrixXd exact_sum = sum_of_terms([](const Matrix6& H) { return H; });
+  const Eigen::MatrixXd exact = symmetric(curvature.at(x, ContactModel::kHessian));
+  CHECK((exact - exact_sum).norm() <= 1e-12 * exact_sum.norm());
+  CHECK((exact - whole).norm() > 1e-6 * whole.norm());
 
   // AKVF with C in its factor gives the direction of AKVF with C added by
   // the Woodbury identity over every term.

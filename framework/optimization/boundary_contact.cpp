@@ -250,6 +250,8 @@ std::vector<BoundaryContact::ActiveTerm> BoundaryContact::active_terms(const Eig
     ActiveTerm active = term.derivative;
     active.curvature = 2 * term.weight * term.reach / q3 * (3 * term.reach / term.q - 2);
     active.slope = -2 * term.weight * (term.reach / term.q - 1) * term.reach / (term.q * term.q);
+    active.argument = term.q;
+    active.reach = term.reach;
     terms.push_back(active);
   });
   return terms;
@@ -348,6 +350,18 @@ Eigen::Matrix<double, 6, 6> BoundaryContact::hessian(const ActiveTerm& term, con
   for (int k = 0; k < 3; ++k) dq.segment<2>(2 * k) = term.gradient[k];
   const Matrix6 d2q = term.angle ? angle_hessian(p0, p1, p2) : distance_hessian(p0, p1, p2);
   return term.curvature * dq * dq.transpose() + term.slope * d2q;
+}
+
+double BoundaryContact::argument_at(const ActiveTerm& term, const Eigen::VectorXd& x) {
+  const Vec2 p0 = point(x, term.vertex[0]), p1 = point(x, term.vertex[1]), p2 = point(x, term.vertex[2]);
+  if (term.angle) {
+    const Vec2 u = p0 - p2, v = p1 - p2;
+    double theta = std::atan2(cross(u, v), u.dot(v));
+    if (theta < 0) theta += 2 * M_PI;
+    return 2 * M_PI - theta;
+  }
+  const double s = closest_parameter(p0, p1, p2);
+  return (p0 - (p1 + s * (p2 - p1))).norm();
 }
 
 std::vector<std::array<int, 4>> BoundaryContact::crossings(const Eigen::VectorXd& x) const {

@@ -76,6 +76,8 @@ class BoundaryContact {
     double curvature;
     double slope;
     bool angle;  // an angle term (vertex: next, previous, the corner), else vertex-edge (the vertex, a, b)
+    double argument = 0;  // q at x
+    double reach = 0;     // eps: the term is zero where q >= eps
   };
   // The terms of barrier() that are not zero, in its order.
   std::vector<ActiveTerm> active_terms(const Eigen::VectorXd& x) const;
@@ -85,6 +87,10 @@ class BoundaryContact {
   // The term's whole Hessian at x, on the coordinates of its three vertices
   // in their order (2 each).
   static Eigen::Matrix<double, 6, 6> hessian(const ActiveTerm& term, const Eigen::VectorXd& x);
+  // The term's argument q with its vertices at x (another map than the one
+  // it was found at): the angle's gap to 2 pi, or the vertex's distance
+  // from the edge.
+  static double argument_at(const ActiveTerm& term, const Eigen::VectorXd& x);
 
   // The pairs of edges of one loop, neither following the other, that meet:
   // their vertices (a, b, c, d) for edges a -> b and c -> d.
