@@ -61,6 +61,20 @@ double closest_parameter(const Vec& p, const Vec& a, const Vec& b) {
   return length2 > 0 ? std::clamp((p - a).dot(edge) / length2, 0.0, 1.0) : 0.0;
 }
 
+// p minus its closest point on the segment a b, and that point's parameter s.
+Vec2 offset_from_segment(const Vec2& p, const Vec2& a, const Vec2& b, double* s) {
+  *s = closest_parameter(p, a, b);
+  return p - (a + *s * (b - a));
+}
+
+// 2 pi - theta, theta the angle from u counter-clockwise to v in [0, 2 pi):
+// an angle term's q for u = next - corner, v = previous - corner.
+double angle_gap(const Vec2& u, const Vec2& v) {
+  double theta = std::atan2(cross(u, v), u.dot(v));
+  if (theta < 0) theta += 2 * M_PI;
+  return 2 * M_PI - theta;
+}
+
 bool segments_meet(const Vec2& a1, const Vec2& b1, const Vec2& a2, const Vec2& b2) {
   const double o1 = cross(b1 - a1, a2 - a1), o2 = cross(b1 - a1, b2 - a1);
   const double o3 = cross(b2 - a2, a1 - a2), o4 = cross(b2 - a2, b1 - a2);
@@ -187,8 +201,8 @@ void BoundaryContact::for_each_term(const Eigen::VectorXd& x, double reach_facto
     if (std::binary_search(joined.begin(), joined.end(), e.a) || std::binary_search(joined.begin(), joined.end(), e.b))
       return;
     const Vec2 p = point(x, c.vertex), a = point(x, e.a), b = point(x, e.b);
-    const double s = closest_parameter(p, a, b);
-    const Vec2 r = p - (a + s * (b - a));
+    double s;
+    const Vec2 r = offset_from_segment(p, a, b, &s);
     const double distance = r.norm();
     if (!(distance < 0.5 * reach_factor * e.rest_length)) return;
     // Half the rest distance, where the isometric map would put them; a
@@ -207,9 +221,7 @@ void BoundaryContact::for_each_term(const Eigen::VectorXd& x, double reach_facto
   // v^perp / |v|^2 (perp: turned by +90 degrees) and c takes minus their sum.
   for (const Corner& c : corners_) {
     const Vec2 u = point(x, c.next) - point(x, c.vertex), v = point(x, c.previous) - point(x, c.vertex);
-    double theta = std::atan2(cross(u, v), u.dot(v));
-    if (theta < 0) theta += 2 * M_PI;
-    const double gap = 2 * M_PI - theta;
+    const double gap = angle_gap(u, v);
     if (!(gap < reach_factor * c.reach)) continue;
     const double uu = u.squaredNorm(), vv = v.squaredNorm();
     if (!(uu > 0 && vv > 0)) continue;
@@ -354,14 +366,9 @@ Eigen::Matrix<double, 6, 6> BoundaryContact::hessian(const ActiveTerm& term, con
 
 double BoundaryContact::argument_at(const ActiveTerm& term, const Eigen::VectorXd& x) {
   const Vec2 p0 = point(x, term.vertex[0]), p1 = point(x, term.vertex[1]), p2 = point(x, term.vertex[2]);
-  if (term.angle) {
-    const Vec2 u = p0 - p2, v = p1 - p2;
-    double theta = std::atan2(cross(u, v), u.dot(v));
-    if (theta < 0) theta += 2 * M_PI;
-    return 2 * M_PI - theta;
-  }
-  const double s = closest_parameter(p0, p1, p2);
-  return (p0 - (p1 + s * (p2 - p1))).norm();
+  if (term.angle) return angle_gap(p0 - p2, p1 - p2);
+  double s;
+  return offset_from_segment(p0, p1, p2, &s).norm();
 }
 
 std::vector<std::array<int, 4>> BoundaryContact::crossings(const Eigen::VectorXd& x) const {
