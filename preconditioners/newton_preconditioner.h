@@ -133,10 +133,10 @@
 // through its active terms, each term's Hessian b'' (dq/dx)(dq/dx)^T +
 // b' d^2q/dx^2 projected to be positive semi-definite (contact_curvature.h):
 // the negative part of b' d^2q/dx^2 (b' < 0) is left out, and near a
-// minimum the barrier holds, the tail is linear (ARAP on horse_b to a
-// gradient of 1e-7 stalled at 2.1e-7 after 170 iterations, a linear rate of
-// 0.96 per iteration). So the same exact tries keep the terms' Hessians
-// whole where every active term has settled: its argument q moved by less
+// minimum the barrier holds, the tail is linear
+// (docs/notes/2026-12-05-settled-contact-exact.md). So the same exact
+// tries keep the terms' Hessians whole where every active term has
+// settled: its argument q moved by less
 // than kSettledShare of its reach eps since the last assembly. With
 // b = w (eps / q - 1)^2, |b''' / b''| eps is 6-9 for 0.5 <= q / eps <= 1 and
 // 14 at 0.3, so over such a move b'' changes by 6-14 % there.
